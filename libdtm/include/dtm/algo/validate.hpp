@@ -1,0 +1,36 @@
+// SPDX-License-Identifier: MIT
+/// @file
+/// @brief Invariant checkers for a Tin, used by tests and `dtm tin --check`.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "dtm/core/terrain.hpp"
+#include "dtm/core/tin.hpp"
+
+namespace dtm {
+
+/// What a check found. ok() when problems is empty; at most a few problems are listed.
+struct CheckReport {
+    std::vector<std::string> problems;
+    [[nodiscard]] bool ok() const noexcept { return problems.empty(); }
+    [[nodiscard]] std::string text() const;
+};
+
+/// Manifold, counter-clockwise, non-degenerate triangles, symmetric neighbour links, valid indices,
+/// constrained edges are TIN edges.
+[[nodiscard]] CheckReport verify_topology(const Tin& tin);
+
+/// Exact constrained Delaunay property: for every edge shared by two triangles that is not
+/// constrained, the opposite vertex is not strictly inside the other triangle's circumcircle.
+[[nodiscard]] CheckReport verify_constrained_delaunay(const Tin& tin);
+
+/// Every segment of every polyline of @p input (breaklines, soft breaklines, boundaries, holes) is
+/// present as a chain of constrained TIN edges along it.
+[[nodiscard]] CheckReport verify_constraints(const Tin& tin, const TerrainInput& input);
+
+/// Sum of triangle areas in xy (compensated summation).
+[[nodiscard]] double tin_area(const Tin& tin);
+
+}  // namespace dtm

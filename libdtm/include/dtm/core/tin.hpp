@@ -1,0 +1,60 @@
+// SPDX-License-Identifier: MIT
+/// @file
+/// @brief Triangulated irregular network: a plain value type with index-based topology.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include "dtm/core/point.hpp"
+
+namespace dtm {
+
+/// Index of a vertex in Tin::vertices.
+using VertexIndex = std::uint32_t;
+/// Index of a triangle in Tin::triangles.
+using TriangleIndex = std::uint32_t;
+inline constexpr TriangleIndex no_triangle = std::numeric_limits<TriangleIndex>::max();
+inline constexpr VertexIndex no_vertex = std::numeric_limits<VertexIndex>::max();
+
+/// One TIN face. Vertices are counter-clockwise in the xy plane.
+///
+///            v[2]
+///            /  \
+///     n[1]  /    \  n[0]        n[i] is the neighbour across the edge
+///          /      \             opposite v[i]; no_triangle on the border
+///       v[0] ----- v[1]         of the TIN (hull, outer boundary, hole).
+///             n[2]
+struct Triangle {
+    std::array<VertexIndex, 3> v{no_vertex, no_vertex, no_vertex};
+    std::array<TriangleIndex, 3> n{no_triangle, no_triangle, no_triangle};
+};
+
+/// What a constrained edge came from.
+enum class ConstraintKind : std::uint8_t { breakline = 0, soft_breakline = 1, boundary = 2, hole = 3 };
+
+/// An edge of the TIN that must stay an edge (a piece of a breakline, boundary or hole).
+/// Stored with a < b.
+struct ConstrainedEdge {
+    VertexIndex a = no_vertex;
+    VertexIndex b = no_vertex;
+    ConstraintKind kind = ConstraintKind::breakline;
+    friend bool operator==(const ConstrainedEdge&, const ConstrainedEdge&) = default;
+};
+
+/// A triangulated irregular network.
+/// Invariants (checked by verify_topology): every triangle is counter-clockwise with three distinct
+/// vertices; neighbour links are symmetric; every constrained edge is an edge of some triangle.
+/// Canonical order (what libdtm returns): triangles are rotated so v[0] is their smallest index and
+/// sorted by (v[0], v[1], v[2]); constraints sorted by (a, b).
+struct Tin {
+    std::vector<Point3> vertices;  ///< x, y in CRS units; z = elevation
+    std::vector<Triangle> triangles;
+    std::vector<ConstrainedEdge> constraints;
+
+    [[nodiscard]] const Point3& vertex(VertexIndex i) const { return vertices[i]; }
+};
+
+}  // namespace dtm

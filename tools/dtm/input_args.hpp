@@ -1,0 +1,31 @@
+// SPDX-License-Identifier: MIT
+/// @file
+/// @brief Input options shared by every subcommand that reads terrain (tin, info, grid, contour,
+/// build), so all of them take every input kind the same way.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+#include <vector>
+
+#include "dtm/io/inputs.hpp"
+
+namespace dtm::cli {
+
+struct InputArgs {
+    std::vector<std::string> inputs;  ///< positional INPUTS...
+    std::vector<std::string> breaklines;
+    std::vector<std::string> soft_breaklines;
+    std::vector<std::string> boundaries;
+    std::vector<std::string> holes;
+    io::LoadOptions load;  ///< everything else the readers take
+};
+
+/// Declares the positional INPUTS and the reader options on @p app.
+void add_input_options(CLI::App& app, InputArgs& args);
+
+/// The LoadOptions for io::load_inputs.
+[[nodiscard]] io::LoadOptions to_load_options(const InputArgs& args);
+
+}  // namespace dtm::cli

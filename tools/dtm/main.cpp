@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: MIT
+// dtm: one binary, thin subcommands. This file is the only place exceptions become exit codes:
+//   0 ok, 1 any other failure (dtm::Error, std::exception), 2 bad usage or bad input
+//   (dtm::UsageError, dtm::InputError, CLI11 parse errors), 130 cancelled.
+#include <exception>
+#include <iostream>
+#include <vector>
+
+#include "command.hpp"
+#include "dtm/core/error.hpp"
+
+int main(int argc, char** argv)
+{
+    using namespace dtm::cli;
+    CLI::App app{"dtm: survey points and breaklines to a constrained Delaunay TIN, DEMs, contours "
+                 "and 3-D surfaces"};
+    app.set_version_flag("--version", std::string("dtm ") + DTM_VERSION);
+    app.require_subcommand(1);
+
+    const std::vector<Command> commands{tin_command(), info_command(), grid_command(),
+                                        contour_command(), build_command()};
+    std::function<int()> run;
+    for (const Command& command : commands) {
+        CLI::App* sub = app.add_subcommand(std::string(command.name), std::string(command.summary));
+        auto runner = command.setup(*sub);
+        sub->callback([&run, runner] { run = runner; });
+    }
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e) == 0 ? 0 : 2;
+    }
+    try {
+        return run ? run() : 0;
+    } catch (const dtm::Cancelled&) {
+        std::cerr << "dtm: cancelled\n";
+        return 130;
+    } catch (const dtm::UsageError& e) {
+        std::cerr << "dtm: " << e.what() << '\n';
+        return 2;
+    } catch (const dtm::InputError& e) {
+        std::cerr << "dtm: " << e.what() << '\n';
+        return 2;
+    } catch (const std::bad_alloc&) {
+        std::cerr << "dtm: out of memory\n";
+        return 1;
+    } catch (const std::exception& e) {
+        std::cerr << "dtm: " << e.what() << '\n';
+        return 1;
+    }
+}

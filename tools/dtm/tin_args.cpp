@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: MIT
+#include "tin_args.hpp"
+
+#include <map>
+#include <string>
+
+namespace dtm::cli {
+
+void add_tin_options(CLI::App& app, TriangulateOptions& options)
+{
+    const std::map<std::string, DuplicateRule> rules{{"first", DuplicateRule::first},
+                                                     {"mean", DuplicateRule::mean},
+                                                     {"min", DuplicateRule::min},
+                                                     {"max", DuplicateRule::max}};
+    app.add_option("--snap", options.snap_distance,
+                   "Merge points closer than D in xy (default 0: exact duplicates only)")
+        ->check(CLI::NonNegativeNumber);
+    app.add_option("--duplicates", options.duplicates,
+                   "z of merged duplicates: first|mean|min|max (default first)")
+        ->transform(CLI::CheckedTransformer(rules, CLI::ignore_case));
+    app.add_option("--max-edge", options.max_edge,
+                   "Trim border triangles with an outward edge longer than L (default 0: off)")
+        ->check(CLI::NonNegativeNumber);
+    app.add_option("--z-tolerance", options.z_tolerance,
+                   "Height difference at a breakline crossing reported as a conflict (default "
+                   "0.001)")
+        ->check(CLI::NonNegativeNumber);
+    app.add_option("--threads", options.threads, "Worker threads (default 0: all cores)");
+    app.add_option("--tiles", options.tiles,
+                   "Tiles for the parallel triangulation (default 0: auto); never changes the result");
+}
+
+}  // namespace dtm::cli
