@@ -14,6 +14,7 @@
 #include "dtm/core/progress.hpp"
 #include "dtm/core/terrain.hpp"
 #include "dtm/core/tin.hpp"
+#include "dtm/io/formats/hpgl_options.hpp"
 
 namespace dtm::io {
 
@@ -31,6 +32,7 @@ struct LoadOptions {
     std::string crs;         ///< --crs: CRS of inputs that carry none (EPSG:xxxx, WKT, PROJ)
     std::string target_crs;  ///< --target-crs: reproject everything into this CRS
     bool skip_bad_lines = false;
+    HpglOptions hpgl;  ///< options of the HPGL plan reader
 };
 
 /// What one input file held (the fields of `dtm info`).
