@@ -1,0 +1,93 @@
+// SPDX-License-Identifier: MIT
+// Surface measures of a TIN.
+//
+// For a triangle with vertices p0, p1, p2 and edge vectors u = p1 - p0, v = p2 - p0:
+//   planimetric area = |u.x v.y - u.y v.x| / 2          (the z component of u x v)
+//   3-D area         = |u x v| / 2
+// so the 3-D area is never smaller than the planimetric one, and their ratio on a plane tilted by
+// angle a is 1 / cos(a). Coordinates are taken relative to the first vertex before subtracting, so
+// that the differences of large projected coordinates (about -750 000 / -1 050 000 in S-JTSK) are
+// exact in double precision for survey-sized triangles. The sums use Neumaier's compensated
+// summation (Neumaier 1974, "Rundungsfehleranalyse einiger Verfahren zur Summation endlicher
+// Summen"), so the result does not depend on the triangle count in any visible digit.
+#include "dtm/algo/surface_stats.hpp"
+
+#include <cmath>
+#include <vector>
+
+namespace dtm {
+namespace {
+
+/// Neumaier's compensated sum.
+class CompensatedSum {
+public:
+    void add(double value) noexcept
+    {
+        const double t = sum_ + value;
+        if (std::fabs(sum_) >= std::fabs(value)) {
+            compensation_ += (sum_ - t) + value;
+        } else {
+            compensation_ += (value - t) + sum_;
+        }
+        sum_ = t;
+    }
+    [[nodiscard]] double value() const noexcept { return sum_ + compensation_; }
+
+private:
+    double sum_ = 0.0;
+    double compensation_ = 0.0;
+};
+
+}  // namespace
+
+SurfaceStats surface_stats(const Tin& tin)
+{
+    SurfaceStats stats;
+    stats.vertex_count = tin.vertices.size();
+    stats.triangle_count = tin.triangles.size();
+    stats.constraint_count = tin.constraints.size();
+    if (tin.triangles.empty()) {
+        return stats;
+    }
+
+    const Point3 origin = tin.vertices[tin.triangles.front().v[0]];
+    std::vector<bool> used(tin.vertices.size(), false);
+    CompensatedSum planimetric;
+    CompensatedSum surface;
+    for (const Triangle& t : tin.triangles) {
+        const Point3& p0 = tin.vertices[t.v[0]];
+        const Point3& p1 = tin.vertices[t.v[1]];
+        const Point3& p2 = tin.vertices[t.v[2]];
+        const double ux = (p1.x - origin.x) - (p0.x - origin.x);
+        const double uy = (p1.y - origin.y) - (p0.y - origin.y);
+        const double uz = p1.z - p0.z;
+        const double vx = (p2.x - origin.x) - (p0.x - origin.x);
+        const double vy = (p2.y - origin.y) - (p0.y - origin.y);
+        const double vz = p2.z - p0.z;
+        const double cx = uy * vz - uz * vy;
+        const double cy = uz * vx - ux * vz;
+        const double cz = ux * vy - uy * vx;
+        planimetric.add(0.5 * std::fabs(cz));
+        surface.add(0.5 * std::sqrt(cx * cx + cy * cy + cz * cz));
+        for (const VertexIndex v : t.v) {
+            used[v] = true;
+        }
+    }
+    stats.planimetric_area = planimetric.value();
+    stats.surface_area = surface.value();
+
+    bool first = true;
+    for (std::size_t i = 0; i < tin.vertices.size(); ++i) {
+        if (!used[i]) {
+            continue;
+        }
+        const Point3& p = tin.vertices[i];
+        stats.extent.add(p);
+        stats.z_min = first ? p.z : std::min(stats.z_min, p.z);
+        stats.z_max = first ? p.z : std::max(stats.z_max, p.z);
+        first = false;
+    }
+    return stats;
+}
+
+}  // namespace dtm

@@ -1,0 +1,75 @@
+// SPDX-License-Identifier: MIT
+#include "dtm/io/formats/mesh_2dm.hpp"
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include "dtm/core/error.hpp"
+#include "support/test_support.hpp"
+#include "tin_fixture.hpp"
+
+namespace {
+
+TEST(Mesh2dm, RoundTripKeepsCountsCoordinatesAndConnectivity)
+{
+    const dtm::Tin tin = dtm::test::grid_tin(6);
+    dtm::test::ScratchDir dir;
+    dtm::io::write_2dm(tin, dir / "tin.2dm", {});
+    const dtm::Tin back = dtm::io::read_2dm(dir / "tin.2dm");
+    ASSERT_EQ(back.vertices.size(), tin.vertices.size());
+    ASSERT_EQ(back.triangles.size(), tin.triangles.size());
+    for (std::size_t i = 0; i < tin.vertices.size(); ++i) {
+        EXPECT_EQ(back.vertices[i], tin.vertices[i]) << "vertex " << i;  // bit-exact
+    }
+    for (std::size_t i = 0; i < tin.triangles.size(); ++i) {
+        EXPECT_EQ(back.triangles[i].v, tin.triangles[i].v) << "triangle " << i;
+    }
+}
+
+TEST(Mesh2dm, WritesMesh2dHeaderAndOneBasedIds)
+{
+    const dtm::Tin tin = dtm::test::grid_tin(2);
+    dtm::test::ScratchDir dir;
+    dtm::io::write_2dm(tin, dir / "tin.2dm", {});
+    std::istringstream text(dtm::test::read_file(dir / "tin.2dm"));
+    std::string line;
+    std::getline(text, line);
+    EXPECT_EQ(line, "MESH2D");
+    std::size_t nodes = 0;
+    std::size_t elements = 0;
+    while (std::getline(text, line)) {
+        if (line.rfind("ND ", 0) == 0) {
+            ++nodes;
+            const std::string prefix = "ND " + std::to_string(nodes) + " ";
+            EXPECT_EQ(line.substr(0, prefix.size()), prefix);
+        } else if (line.rfind("E3T ", 0) == 0) {
+            ++elements;
+            EXPECT_EQ(line, elements == 1 ? "E3T 1 1 2 4 1" : "E3T 2 1 4 3 1");
+        }
+    }
+    EXPECT_EQ(nodes, 4u);
+    EXPECT_EQ(elements, 2u);
+}
+
+TEST(Mesh2dm, ReadRejectsElementWithUnknownNodeNamingTheLine)
+{
+    dtm::test::ScratchDir dir;
+    dtm::test::write_file(dir / "bad.2dm", "MESH2D\nND 1 0 0 0\nND 2 1 0 0\nE3T 1 1 2 9 1\n");
+    try {
+        (void)dtm::io::read_2dm(dir / "bad.2dm");
+        FAIL() << "expected InputError";
+    } catch (const dtm::InputError& e) {
+        EXPECT_EQ(e.line(), 4u);
+        EXPECT_NE(std::string(e.what()).find("unknown node 9"), std::string::npos) << e.what();
+    }
+}
+
+TEST(Mesh2dm, ReadRejectsFileWithoutMesh2dHeader)
+{
+    dtm::test::ScratchDir dir;
+    dtm::test::write_file(dir / "bad.2dm", "ND 1 0 0 0\n");
+    EXPECT_THROW((void)dtm::io::read_2dm(dir / "bad.2dm"), dtm::InputError);
+}
+
+}  // namespace
