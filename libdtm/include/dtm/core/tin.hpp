@@ -22,7 +22,7 @@ inline constexpr VertexIndex no_vertex = std::numeric_limits<VertexIndex>::max()
 /// One TIN face. Vertices are counter-clockwise in the xy plane.
 ///
 ///            v[2]
-///            /  \
+///            /  \   (ccw)
 ///     n[1]  /    \  n[0]        n[i] is the neighbour across the edge
 ///          /      \             opposite v[i]; no_triangle on the border
 ///       v[0] ----- v[1]         of the TIN (hull, outer boundary, hole).
