@@ -1,0 +1,53 @@
+// SPDX-License-Identifier: MIT
+/// @file
+/// @brief TIN to DEM: linear interpolation on the triangles, sampled at cell centres, streamed in
+/// row bands to a sink so that a big raster never sits in memory at once.
+#pragma once
+
+#include <cstddef>
+#include <span>
+
+#include "dtm/core/grid.hpp"
+#include "dtm/core/progress.hpp"
+#include "dtm/core/tin.hpp"
+
+namespace dtm {
+
+struct RasterizeOptions {
+    float nodata = -9999.0F;  ///< value of cells whose centre lies outside every triangle
+    /// Rows per band (0: automatic, about one million cells per band). Memory in flight is about
+    /// (2 x threads + 1) bands of Float32.
+    std::size_t band_rows = 0;
+    unsigned threads = 0;  ///< worker threads (0: all cores); never changes the result
+};
+
+/// Receives the raster in consecutive bands of whole rows, north to south, from one thread at a
+/// time. Implemented by raster writers (GDAL), by tests, and by the in-memory collector.
+class GridSink {
+public:
+    virtual ~GridSink() = default;
+    /// @param first_row index of the first row of the band
+    /// @param row_count rows in the band
+    /// @param values    row_count x spec.cols values, row-major
+    virtual void write_rows(std::size_t first_row, std::size_t row_count,
+                            std::span<const float> values) = 0;
+};
+
+/// Samples the TIN surface at every cell centre of @p spec and streams the rows to @p sink.
+/// A centre inside a triangle (or on its edge) gets the linear interpolation of the triangle's
+/// vertex heights; a centre outside every triangle (outside the hull, the boundary, in a hole)
+/// gets options.nodata. Inside tests are exact (orient2d); a centre on an edge shared by two
+/// triangles is assigned to exactly one of them and gets the same value from either.
+/// Bands are computed in parallel and handed to the sink in order.
+/// @throws Cancelled
+void rasterize(const Tin& tin, const GridSpec& spec, const RasterizeOptions& options,
+               GridSink& sink, const Progress& progress = {});
+
+/// Convenience for small rasters: the whole grid in memory.
+[[nodiscard]] Grid rasterize(const Tin& tin, const GridSpec& spec,
+                             const RasterizeOptions& options = {}, const Progress& progress = {});
+
+/// Bounding box of the TIN's triangle vertices in xy (empty if there are no triangles).
+[[nodiscard]] Box2 tin_bounds(const Tin& tin);
+
+}  // namespace dtm

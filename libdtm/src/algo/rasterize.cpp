@@ -1,0 +1,433 @@
+// SPDX-License-Identifier: MIT
+// TIN to DEM by scan conversion.
+//
+// The surface of a TIN is piecewise linear: inside a triangle the height is the barycentric
+// (linear) interpolation of its three vertex heights. A DEM samples it at cell centres
+// (GDAL's "pixel is area" convention; gdal_grid -a linear samples the same points).
+//
+// 1. Bucketing (sequential, O(triangles)). The raster is cut into bands of whole rows. Each
+//    triangle goes into the bucket of every band its y-extent overlaps (a CSR array: counts,
+//    prefix sums, fill), so a band only looks at the triangles that can touch it.
+// 2. Scan conversion (parallel over bands, tbb::parallel_pipeline). For every triangle of the
+//    band and every row whose centre line crosses its y-extent, the x-interval of the triangle
+//    on that line is estimated in floating point and widened by one cell; candidate centres are
+//    then tested exactly with orient2d from both ends inwards. The triangle meets a row in one
+//    segment (convexity), so every centre between the first and the last accepted one is inside
+//    without further tests: the exact predicate is the arbiter, the fill is the fast path.
+// 3. Output (serial, in order): finished bands go to the GridSink north to south while later
+//    bands are still being computed; at most a few bands are alive at once (bounded memory).
+//
+// Ties. A centre on an edge shared by two triangles belongs to exactly one of them by the
+// top-left rule of rasterisers (an edge a->b of a counter-clockwise triangle owns its points if
+// it goes downwards, or is horizontal going west); an edge on the border of the TIN (hull,
+// boundary, hole: no neighbour) always owns its points, so the domain is closed. Values on an
+// edge are interpolated along the edge from its lower-numbered vertex, so either triangle would
+// give the same bits; a centre on a vertex gets the vertex height exactly.
+//
+// References: J. Pineda, "A parallel algorithm for polygon rasterization", SIGGRAPH 1988 (edge
+// functions, top-left rule); J. R. Shewchuk, "Adaptive precision floating-point arithmetic and
+// fast robust geometric predicates", 1997 (orient2d).
+#include <tbb/parallel_pipeline.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "dtm/algo/rasterize.hpp"
+#include "dtm/geom/predicates.hpp"
+
+namespace dtm {
+namespace {
+
+/// Triangles per band, as a CSR array.
+struct Buckets {
+    std::size_t band_rows = 1;
+    std::size_t band_count = 0;
+    std::vector<std::size_t> offsets;  ///< band_count + 1
+    std::vector<TriangleIndex> triangles;
+};
+
+/// Conservative range of rows whose centre line may meet [ylo, yhi]; empty when first > last.
+struct RowRange {
+    std::ptrdiff_t first = 0;
+    std::ptrdiff_t last = -1;
+};
+
+RowRange rows_touching(const GridSpec& spec, double ylo, double yhi)
+{
+    const double lo = std::floor((spec.ymax - yhi) / spec.cell - 0.5);
+    const double hi = std::ceil((spec.ymax - ylo) / spec.cell - 0.5);
+    const double max_row = static_cast<double>(spec.rows) - 1.0;
+    RowRange r;
+    if (!(hi >= 0.0) || !(lo <= max_row)) {
+        return r;
+    }
+    r.first = static_cast<std::ptrdiff_t>(std::max(lo, 0.0));
+    r.last = static_cast<std::ptrdiff_t>(std::min(hi, max_row));
+    return r;
+}
+
+RowRange triangle_rows(const Tin& tin, const Triangle& t, const GridSpec& spec)
+{
+    const Point3& a = tin.vertices[t.v[0]];
+    const Point3& b = tin.vertices[t.v[1]];
+    const Point3& c = tin.vertices[t.v[2]];
+    return rows_touching(spec, std::min({a.y, b.y, c.y}), std::max({a.y, b.y, c.y}));
+}
+
+Buckets make_buckets(const Tin& tin, const GridSpec& spec, std::size_t band_rows)
+{
+    Buckets buckets;
+    buckets.band_rows = band_rows;
+    buckets.band_count = (spec.rows + band_rows - 1) / band_rows;
+    buckets.offsets.assign(buckets.band_count + 1, 0);
+    std::vector<RowRange> ranges(tin.triangles.size());
+    for (std::size_t i = 0; i < tin.triangles.size(); ++i) {
+        ranges[i] = triangle_rows(tin, tin.triangles[i], spec);
+        if (ranges[i].first > ranges[i].last) {
+            continue;
+        }
+        const auto b0 = static_cast<std::size_t>(ranges[i].first) / band_rows;
+        const auto b1 = static_cast<std::size_t>(ranges[i].last) / band_rows;
+        for (std::size_t b = b0; b <= b1; ++b) {
+            ++buckets.offsets[b + 1];
+        }
+    }
+    for (std::size_t b = 0; b < buckets.band_count; ++b) {
+        buckets.offsets[b + 1] += buckets.offsets[b];
+    }
+    buckets.triangles.resize(buckets.offsets.back());
+    std::vector<std::size_t> fill(buckets.offsets.begin(), buckets.offsets.end() - 1);
+    for (std::size_t i = 0; i < tin.triangles.size(); ++i) {
+        if (ranges[i].first > ranges[i].last) {
+            continue;
+        }
+        const auto b0 = static_cast<std::size_t>(ranges[i].first) / band_rows;
+        const auto b1 = static_cast<std::size_t>(ranges[i].last) / band_rows;
+        for (std::size_t b = b0; b <= b1; ++b) {
+            buckets.triangles[fill[b]++] = static_cast<TriangleIndex>(i);
+        }
+    }
+    return buckets;
+}
+
+/// One triangle prepared for scan conversion.
+class ScanTriangle {
+public:
+    ScanTriangle(const Tin& tin, const Triangle& t) : tin_(tin), tri_(t)
+    {
+        for (int i = 0; i < 3; ++i) {
+            p_[i] = &tin.vertices[t.v[static_cast<std::size_t>(i)]];
+        }
+        const Point3& a = *p_[0];
+        const double bx = p_[1]->x - a.x, by = p_[1]->y - a.y, bz = p_[1]->z - a.z;
+        const double cx = p_[2]->x - a.x, cy = p_[2]->y - a.y, cz = p_[2]->z - a.z;
+        const double det = bx * cy - cx * by;
+        dzdx_ = (bz * cy - cz * by) / det;
+        dzdy_ = (bx * cz - cx * bz) / det;
+        for (int e = 0; e < 3; ++e) {
+            owns_[e] = edge_owns_ties(e);
+        }
+    }
+
+    /// x-interval of the triangle on the line y (floating point, approximate); false if the line
+    /// misses the triangle (this test is exact).
+    bool span(double y, double& xl, double& xr) const
+    {
+        bool hit = false;
+        xl = std::numeric_limits<double>::infinity();
+        xr = -xl;
+        for (int e = 0; e < 3; ++e) {
+            const Point3& a = *p_[(e + 1) % 3];
+            const Point3& b = *p_[(e + 2) % 3];
+            if (y < std::min(a.y, b.y) || y > std::max(a.y, b.y)) {
+                continue;
+            }
+            hit = true;
+            if (a.y == b.y) {
+                xl = std::min({xl, a.x, b.x});
+                xr = std::max({xr, a.x, b.x});
+            } else {
+                const double x = a.x + (y - a.y) * (b.x - a.x) / (b.y - a.y);
+                xl = std::min(xl, x);
+                xr = std::max(xr, x);
+            }
+        }
+        return hit;
+    }
+
+    /// Exact: does the triangle own the point (inside, or on an edge it owns)? On success,
+    /// @p z is the interpolated height.
+    bool sample(double x, double y, float& z) const
+    {
+        int on_edge = -1;
+        int zero_count = 0;
+        for (int e = 0; e < 3; ++e) {
+            const Point3& a = *p_[(e + 1) % 3];
+            const Point3& b = *p_[(e + 2) % 3];
+            const int s = geom::orient2d(a.x, a.y, b.x, b.y, x, y);
+            if (s < 0 || (s == 0 && !owns_[e])) {
+                return false;
+            }
+            if (s == 0) {
+                on_edge = e;
+                ++zero_count;
+            }
+        }
+        if (zero_count >= 2) {  // on a vertex
+            z = static_cast<float>(vertex_at(x, y));
+        } else if (on_edge >= 0) {
+            z = static_cast<float>(along_edge(on_edge, x, y));
+        } else {
+            z = static_cast<float>(plane(x, y));
+        }
+        return true;
+    }
+
+    /// Height at a point known to be inside (used for the filled interior of a span).
+    [[nodiscard]] double plane(double x, double y) const
+    {
+        return p_[0]->z + dzdx_ * (x - p_[0]->x) + dzdy_ * (y - p_[0]->y);
+    }
+
+    /// Index of the horizontal edge lying on the line y, or -1.
+    [[nodiscard]] int horizontal_edge_at(double y) const
+    {
+        for (int e = 0; e < 3; ++e) {
+            if (p_[(e + 1) % 3]->y == y && p_[(e + 2) % 3]->y == y) {
+                return e;
+            }
+        }
+        return -1;
+    }
+
+    /// Linear interpolation along edge @p e (opposite vertex e), from its lower-numbered vertex.
+    [[nodiscard]] double along_edge(int e, double x, double y) const
+    {
+        VertexIndex i = tri_.v[static_cast<std::size_t>((e + 1) % 3)];
+        VertexIndex j = tri_.v[static_cast<std::size_t>((e + 2) % 3)];
+        if (j < i) {
+            std::swap(i, j);
+        }
+        const Point3& p = tin_.vertices[i];
+        const Point3& q = tin_.vertices[j];
+        const double dx = q.x - p.x, dy = q.y - p.y;
+        const double t = ((x - p.x) * dx + (y - p.y) * dy) / (dx * dx + dy * dy);
+        return p.z + t * (q.z - p.z);
+    }
+
+private:
+    /// Top-left rule; border edges own their points.
+    [[nodiscard]] bool edge_owns_ties(int e) const
+    {
+        if (tri_.n[static_cast<std::size_t>(e)] == no_triangle) {
+            return true;
+        }
+        const Point3& a = *p_[(e + 1) % 3];
+        const Point3& b = *p_[(e + 2) % 3];
+        return b.y < a.y || (b.y == a.y && b.x < a.x);
+    }
+
+    [[nodiscard]] double vertex_at(double x, double y) const
+    {
+        for (int i = 0; i < 3; ++i) {
+            if (p_[i]->x == x && p_[i]->y == y) {
+                return p_[i]->z;
+            }
+        }
+        return plane(x, y);  // unreachable for a non-degenerate triangle
+    }
+
+    const Tin& tin_;
+    const Triangle& tri_;
+    const Point3* p_[3]{};
+    double dzdx_ = 0.0;
+    double dzdy_ = 0.0;
+    bool owns_[3]{};
+};
+
+/// Scan-converts one triangle over the rows [row0, row0 + row_count) into @p band.
+void scan_triangle(const Tin& tin, const Triangle& t, const GridSpec& spec, std::size_t row0,
+                   std::size_t row_count, std::span<float> band)
+{
+    const RowRange rows = triangle_rows(tin, t, spec);
+    const auto first = std::max<std::ptrdiff_t>(rows.first, static_cast<std::ptrdiff_t>(row0));
+    const auto last =
+        std::min<std::ptrdiff_t>(rows.last, static_cast<std::ptrdiff_t>(row0 + row_count) - 1);
+    if (first > last) {
+        return;
+    }
+    const ScanTriangle tri(tin, t);
+    const double max_col = static_cast<double>(spec.cols) - 1.0;
+    for (auto r = static_cast<std::size_t>(first); r <= static_cast<std::size_t>(last); ++r) {
+        const double y = spec.center_y(r);
+        double xl = 0.0, xr = 0.0;
+        if (!tri.span(y, xl, xr)) {
+            continue;
+        }
+        const double clo = std::max(std::ceil((xl - spec.xmin) / spec.cell - 0.5) - 1.0, 0.0);
+        const double chi = std::min(std::floor((xr - spec.xmin) / spec.cell - 0.5) + 1.0, max_col);
+        if (clo > chi) {
+            continue;
+        }
+        float* out = band.data() + (r - row0) * spec.cols;
+        auto lo = static_cast<std::size_t>(clo);
+        auto hi = static_cast<std::size_t>(chi);
+        float z = 0.0F;
+        while (lo <= hi && !tri.sample(spec.center_x(lo), y, z)) {
+            ++lo;
+        }
+        if (lo > hi) {
+            continue;
+        }
+        out[lo] = z;
+        while (hi > lo && !tri.sample(spec.center_x(hi), y, z)) {
+            --hi;
+        }
+        out[hi] = z;
+        const int flat = tri.horizontal_edge_at(y);
+        for (std::size_t c = lo + 1; c < hi; ++c) {
+            const double x = spec.center_x(c);
+            out[c] = static_cast<float>(flat >= 0 ? tri.along_edge(flat, x, y) : tri.plane(x, y));
+        }
+    }
+}
+
+std::size_t choose_band_rows(const GridSpec& spec, const RasterizeOptions& options)
+{
+    if (options.band_rows > 0) {
+        return options.band_rows;
+    }
+    constexpr std::size_t target_cells = std::size_t{1} << 18;
+    return std::clamp<std::size_t>(target_cells / std::max<std::size_t>(spec.cols, 1), 1,
+                                   std::max<std::size_t>(spec.rows, 1));
+}
+
+struct Band {
+    std::size_t index = 0;
+    std::vector<float> values;
+};
+
+void run_pipeline(const Tin& tin, const GridSpec& spec, const RasterizeOptions& options,
+                  const Buckets& buckets, GridSink& sink, const Progress& progress)
+{
+    std::size_t next = 0;
+    const auto tokens = static_cast<std::size_t>(2 * tbb::this_task_arena::max_concurrency());
+    auto source = [&](tbb::flow_control& fc) -> std::size_t {
+        if (next == buckets.band_count) {
+            fc.stop();
+            return 0;
+        }
+        return next++;
+    };
+    auto compute = [&](std::size_t b) -> Band {
+        progress.check();
+        const std::size_t row0 = b * buckets.band_rows;
+        const std::size_t row_count = std::min(buckets.band_rows, spec.rows - row0);
+        Band band{b, std::vector<float>(row_count * spec.cols, options.nodata)};
+        for (std::size_t k = buckets.offsets[b]; k < buckets.offsets[b + 1]; ++k) {
+            scan_triangle(tin, tin.triangles[buckets.triangles[k]], spec, row0, row_count,
+                          band.values);
+        }
+        return band;
+    };
+    auto emit = [&](Band band) {
+        const std::size_t row0 = band.index * buckets.band_rows;
+        sink.write_rows(row0, band.values.size() / spec.cols, band.values);
+        progress.report(static_cast<double>(band.index + 1) /
+                            static_cast<double>(buckets.band_count),
+                        "rasterize");
+    };
+    tbb::parallel_pipeline(
+        tokens,
+        tbb::make_filter<void, std::size_t>(tbb::filter_mode::serial_in_order, source) &
+            tbb::make_filter<std::size_t, Band>(tbb::filter_mode::parallel, compute) &
+            tbb::make_filter<Band, void>(tbb::filter_mode::serial_in_order, emit));
+}
+
+/// Collects the streamed bands into a Grid.
+class GridCollector final : public GridSink {
+public:
+    explicit GridCollector(Grid& grid) : grid_(grid) {}
+    void write_rows(std::size_t first_row, std::size_t, std::span<const float> values) override
+    {
+        std::copy(values.begin(), values.end(),
+                  grid_.values.begin() + static_cast<std::ptrdiff_t>(first_row * grid_.spec.cols));
+    }
+
+private:
+    Grid& grid_;
+};
+
+}  // namespace
+
+void rasterize(const Tin& tin, const GridSpec& spec, const RasterizeOptions& options,
+               GridSink& sink, const Progress& progress)
+{
+    if (spec.rows == 0 || spec.cols == 0) {
+        return;
+    }
+    const Buckets buckets = make_buckets(tin, spec, choose_band_rows(spec, options));
+    progress.report(0.0, "rasterize");
+    if (options.threads > 0) {
+        tbb::task_arena arena(static_cast<int>(options.threads));
+        arena.execute([&] { run_pipeline(tin, spec, options, buckets, sink, progress); });
+    } else {
+        run_pipeline(tin, spec, options, buckets, sink, progress);
+    }
+}
+
+Grid rasterize(const Tin& tin, const GridSpec& spec, const RasterizeOptions& options,
+               const Progress& progress)
+{
+    Grid grid{spec, options.nodata, std::vector<float>(spec.cell_count(), options.nodata)};
+    GridCollector collector(grid);
+    rasterize(tin, spec, options, collector, progress);
+    return grid;
+}
+
+Box2 tin_bounds(const Tin& tin)
+{
+    Box2 box;
+    for (const Triangle& t : tin.triangles) {
+        for (const VertexIndex v : t.v) {
+            box.add(tin.vertices[v]);
+        }
+    }
+    return box;
+}
+
+GridSpec snapped_grid_spec(const Box2& box, double cell)
+{
+    GridSpec spec;
+    spec.cell = cell;
+    spec.xmin = std::floor(box.xmin / cell) * cell;
+    spec.ymax = std::ceil(box.ymax / cell) * cell;
+    const double xmax = std::ceil(box.xmax / cell) * cell;
+    const double ymin = std::floor(box.ymin / cell) * cell;
+    spec.cols = std::max<std::size_t>(1, static_cast<std::size_t>(std::llround((xmax - spec.xmin) / cell)));
+    spec.rows = std::max<std::size_t>(1, static_cast<std::size_t>(std::llround((spec.ymax - ymin) / cell)));
+    return spec;
+}
+
+GridSpec extent_grid_spec(const Box2& extent, double cell)
+{
+    GridSpec spec;
+    spec.cell = cell;
+    spec.xmin = extent.xmin;
+    spec.ymax = extent.ymax;
+    const auto whole = [cell](double length) {
+        const double n = length / cell;
+        const double r = std::round(n);
+        return static_cast<std::size_t>(std::max(1.0, std::abs(n - r) < 1e-9 * std::max(1.0, n)
+                                                          ? r
+                                                          : std::ceil(n)));
+    };
+    spec.cols = whole(extent.xmax - extent.xmin);
+    spec.rows = whole(extent.ymax - extent.ymin);
+    return spec;
+}
+
+}  // namespace dtm
