@@ -26,6 +26,12 @@ void write_tin(const Tin& tin, const std::filesystem::path& path, const TinWrite
 /// Extensions write_tin() knows, lower case without the dot.
 [[nodiscard]] std::vector<std::string_view> tin_extensions();
 
+/// Writes @p tin as a dtm PLY file to exactly @p path (no temporary; write_tin() adds atomicity).
+/// Binary little endian unless options.ascii. See docs/formats.md for the layout.
+/// @throws Error if the file cannot be written or the TIN refers to missing vertices.
+void write_tin_ply(const Tin& tin, const std::filesystem::path& path,
+                   const TinWriteOptions& options);
+
 struct LoadedTin {
     Tin tin;
     std::string crs_wkt;
