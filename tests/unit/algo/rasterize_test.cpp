@@ -72,6 +72,10 @@ Tin grid_tin(double ox, double oy, int n, double h, double jitter, std::uint32_t
             tin.triangles.push_back(b);
         }
     }
+    for (const Triangle& t : tin.triangles) {  // the fixture must be a valid TIN
+        const Point3 &a = tin.vertices[t.v[0]], &b = tin.vertices[t.v[1]], &c = tin.vertices[t.v[2]];
+        EXPECT_GT(dtm::geom::orient2d(a, b, c), 0) << "fixture triangle is not counter-clockwise";
+    }
     link_neighbours(tin);
     return tin;
 }
@@ -174,7 +178,7 @@ TEST(Rasterize, EveryInteriorCellCentreIsOwnedByExactlyOneTriangle)
 
 TEST(Rasterize, ThreadCountAndBandHeightDoNotChangeTheResult)
 {
-    const Tin tin = grid_tin(1000.0, 2000.0, 30, 1.7, 0.6, 3, {10, 10, 20, 30});
+    const Tin tin = grid_tin(1000.0, 2000.0, 30, 1.7, 0.35, 3, {10, 10, 20, 30});
     const dtm::GridSpec spec = dtm::snapped_grid_spec(dtm::tin_bounds(tin), 0.25);
     const dtm::Grid a = dtm::rasterize(tin, spec, {.band_rows = 1, .threads = 1});
     const dtm::Grid b = dtm::rasterize(tin, spec, {.band_rows = 0, .threads = 0});
