@@ -1,0 +1,75 @@
+// SPDX-License-Identifier: MIT
+/// @file
+/// @brief Internal to the QGIS project writer: a minimal indenting XML builder and the layer
+/// element writers shared by qgis_project.cpp and qgis_project_layers.cpp.
+#pragma once
+
+#include <initializer_list>
+#include <string>
+#include <string_view>
+#include <utility>
+
+#include "dtm/io/formats/qgis_project.hpp"
+
+namespace dtm::io::qgis {
+
+using Attributes = std::initializer_list<std::pair<std::string_view, std::string>>;
+
+/// Builds indented XML text; escapes attribute values and text.
+class XmlWriter {
+public:
+    void open(std::string_view name, Attributes attributes = {});
+    void close(std::string_view name);
+    void leaf(std::string_view name, Attributes attributes = {});
+    void text(std::string_view name, std::string_view value, Attributes attributes = {});
+    /// Appends a QGIS `<Option type="QString" name=... value=.../>` entry.
+    void option(std::string_view name, std::string value);
+    [[nodiscard]] const std::string& str() const noexcept { return out_; }
+    void raw(std::string_view text) { out_ += text; }
+
+private:
+    void start_tag(std::string_view name, Attributes attributes);
+    std::string out_;
+    int depth_ = 0;
+};
+
+[[nodiscard]] std::string escape(std::string_view text);
+[[nodiscard]] std::string number(double value);
+
+/// The CRS as QGIS describes it: written inside `<srs>`, `<projectCrs>` and `<destinationsrs>`.
+struct CrsInfo {
+    std::string wkt;  ///< WKT2, preferred by QGIS when reading
+    std::string proj;
+    std::string authid;  ///< "EPSG:5514" when identifiable
+    std::string srid;
+    std::string description;
+    std::string projection_acronym;
+    std::string ellipsoid_acronym;
+    bool geographic = false;
+};
+
+[[nodiscard]] CrsInfo describe_crs(const std::string& crs_wkt);
+void write_spatialrefsys(XmlWriter& xml, const CrsInfo& crs);
+
+/// Stable ids of the layers.
+inline constexpr std::string_view dem_id = "dtm_dem_layer";
+inline constexpr std::string_view hillshade_id = "dtm_hillshade_layer";
+inline constexpr std::string_view contours_id = "dtm_contours_layer";
+inline constexpr std::string_view mesh_id = "dtm_tin_mesh_layer";
+
+/// The `datasource` of the contour layer ("file|layername=x" for a GeoPackage).
+[[nodiscard]] std::string contours_source(const QgisProject& project);
+
+/// Opens a `maplayer` element (closed by the caller) and writes the children every layer starts
+/// with: extent, id, datasource, layername, srs, provider, flags.
+void open_maplayer(XmlWriter& xml, std::string_view type, std::string_view geometry);
+void write_layer_head(XmlWriter& xml, const QgisProject& project, const CrsInfo& crs,
+                      std::string_view id, const std::string& source, std::string_view name,
+                      std::string_view provider);
+
+void write_dem_layer(XmlWriter& xml, const QgisProject& project, const CrsInfo& crs);
+void write_hillshade_layer(XmlWriter& xml, const QgisProject& project, const CrsInfo& crs);
+void write_contours_layer(XmlWriter& xml, const QgisProject& project, const CrsInfo& crs);
+void write_mesh_layer(XmlWriter& xml, const QgisProject& project, const CrsInfo& crs);
+
+}  // namespace dtm::io::qgis
