@@ -5,7 +5,6 @@
 //   dtm-sample write samples/sjtsk        regenerate every sample file
 //   dtm-sample z -750200 -1050100 ...     true z at S-JTSK (E, N) pairs
 #include <CLI/CLI.hpp>
-
 #include <cstdio>
 #include <exception>
 #include <filesystem>
@@ -18,8 +17,7 @@
 
 namespace {
 
-int write_sample(const std::filesystem::path& dir, double spacing)
-{
+int write_sample(const std::filesystem::path& dir, double spacing) {
     using namespace dtm::sample;
     std::filesystem::create_directories(dir);
     SurveyOptions options;
@@ -32,18 +30,18 @@ int write_sample(const std::filesystem::path& dir, double spacing)
     for (const Line& line : survey.breaklines) {
         vertices += line.vertices.size();
     }
-    std::printf("%zu spot heights (%zu beyond the boundary, %zu re-measured), %zu corrupt CSV "
-                "records, %zu breaklines with %zu vertices, boundary %zu and building %zu ring "
-                "vertices, %zu check points -> %s\n",
-                survey.points.size(), survey.outside_points, survey.repeated_points,
-                survey.bad_lines.size(), survey.breaklines.size(), vertices,
-                survey.boundary.vertices.size(), survey.building.vertices.size(),
-                survey.check_points.size(), dir.string().c_str());
+    std::printf(
+        "%zu spot heights (%zu beyond the boundary, %zu re-measured), %zu corrupt CSV "
+        "records, %zu breaklines with %zu vertices, boundary %zu and building %zu ring "
+        "vertices, %zu check points -> %s\n",
+        survey.points.size(), survey.outside_points, survey.repeated_points,
+        survey.bad_lines.size(), survey.breaklines.size(), vertices,
+        survey.boundary.vertices.size(), survey.building.vertices.size(),
+        survey.check_points.size(), dir.string().c_str());
     return 0;
 }
 
-int print_z(const std::vector<double>& coordinates)
-{
+int print_z(const std::vector<double>& coordinates) {
     if (coordinates.size() % 2 != 0) {
         std::cerr << "dtm-sample z: expected E N pairs\n";
         return 2;
@@ -61,8 +59,7 @@ int print_z(const std::vector<double>& coordinates)
 
 }  // namespace
 
-int main(int argc, char** argv)
-{
+int main(int argc, char** argv) {
     CLI::App app{"dtm-sample: the bundled S-JTSK sample survey and its true terrain"};
     app.require_subcommand(1);
     std::string dir;

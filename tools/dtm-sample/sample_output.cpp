@@ -17,8 +17,7 @@
 namespace dtm::sample {
 namespace {
 
-std::ofstream open_text(const std::filesystem::path& path)
-{
+std::ofstream open_text(const std::filesystem::path& path) {
     std::ofstream file(path, std::ios::binary | std::ios::trunc);
     if (!file) {
         throw std::runtime_error("cannot create " + path.string());
@@ -26,8 +25,7 @@ std::ofstream open_text(const std::filesystem::path& path)
     return file;
 }
 
-std::string format(const char* pattern, double a, double b, double c)
-{
+std::string format(const char* pattern, double a, double b, double c) {
     char text[128];
     std::snprintf(text, sizeof text, pattern, a, b, c);
     return text;
@@ -37,8 +35,7 @@ struct DatasetCloser {
     void operator()(GDALDataset* dataset) const noexcept { GDALClose(dataset); }
 };
 
-void write_layer(const std::filesystem::path& path, const std::vector<Line>& lines, bool polygons)
-{
+void write_layer(const std::filesystem::path& path, const std::vector<Line>& lines, bool polygons) {
     GDALAllRegister();
     GDALDriver* driver = GetGDALDriverManager()->GetDriverByName("ESRI Shapefile");
     if (std::filesystem::exists(path)) {
@@ -59,7 +56,8 @@ void write_layer(const std::filesystem::path& path, const std::vector<Line>& lin
     for (const Line& line : lines) {
         OGRFeature feature(layer->GetLayerDefn());
         feature.SetField("kind", line.kind.c_str());
-        auto curve = polygons ? std::make_unique<OGRLinearRing>() : std::make_unique<OGRLineString>();
+        auto curve =
+            polygons ? std::make_unique<OGRLinearRing>() : std::make_unique<OGRLineString>();
         for (const SurveyPoint& p : line.vertices) {
             curve->addPoint(p.e, p.n, p.z);
         }
@@ -76,20 +74,17 @@ void write_layer(const std::filesystem::path& path, const std::vector<Line>& lin
     }
 }
 
-long plotter(double ground, double origin)
-{
+long plotter(double ground, double origin) {
     return std::lround((ground - origin) / ground_metres_per_plotter_unit);
 }
 
-std::string hpgl_point(const SurveyPoint& p)
-{
+std::string hpgl_point(const SurveyPoint& p) {
     return std::to_string(plotter(p.e, plan_origin_e)) + "," +
            std::to_string(plotter(p.n, plan_origin_n));
 }
 
 /// A spot height: the symbol at the point, then its label 1 mm right and 0.5 mm up.
-void write_spot_height(std::ofstream& out, const SurveyPoint& p)
-{
+void write_spot_height(std::ofstream& out, const SurveyPoint& p) {
     char label[32];
     std::snprintf(label, sizeof label, "%.2f", p.z);
     const long x = plotter(p.e, plan_origin_e);
@@ -98,8 +93,7 @@ void write_spot_height(std::ofstream& out, const SurveyPoint& p)
         << '\x03' << '\n';
 }
 
-void write_polyline(std::ofstream& out, const Line& line)
-{
+void write_polyline(std::ofstream& out, const Line& line) {
     out << "PU" << hpgl_point(line.vertices.front()) << ";PD";
     for (std::size_t i = 1; i < line.vertices.size(); ++i) {
         out << (i > 1 ? "," : "") << hpgl_point(line.vertices[i]);
@@ -112,8 +106,7 @@ void write_polyline(std::ofstream& out, const Line& line)
 
 }  // namespace
 
-void write_csv_files(const Survey& survey, const std::filesystem::path& dir)
-{
+void write_csv_files(const Survey& survey, const std::filesystem::path& dir) {
     std::ofstream points = open_text(dir / "points.csv");
     points << "id,x,y,z\n";
     for (std::size_t i = 0; i < survey.points.size(); ++i) {
@@ -132,15 +125,13 @@ void write_csv_files(const Survey& survey, const std::filesystem::path& dir)
     }
 }
 
-void write_shapefiles(const Survey& survey, const std::filesystem::path& dir)
-{
+void write_shapefiles(const Survey& survey, const std::filesystem::path& dir) {
     write_layer(dir / "breaklines.shp", survey.breaklines, false);
     write_layer(dir / "boundary.shp", {survey.boundary}, true);
     write_layer(dir / "building.shp", {survey.building}, true);
 }
 
-void write_hpgl_plan(const Survey& survey, const std::filesystem::path& dir)
-{
+void write_hpgl_plan(const Survey& survey, const std::filesystem::path& dir) {
     std::ofstream out = open_text(dir / "plan_500.hpgl");
     out << "IN;SP1;SI0.12,0.18;\nPU400,200;LBSAMPLE SITE S-JTSK 1:500\x03\n";
     for (const SurveyPoint& p : survey.points) {

@@ -31,29 +31,25 @@ private:
 
 double round_to(double value, double step) { return std::round(value / step) * step; }
 
-SurveyPoint survey_point(std::string id, double u, double v)
-{
+SurveyPoint survey_point(std::string id, double u, double v) {
     const double e = round_to(origin_e + u, 0.001);
     const double n = round_to(origin_n + v, 0.001);
     return {std::move(id), e, n, round_to(true_z(e, n), 0.001)};
 }
 
-std::string numbered(const char* prefix, std::size_t number)
-{
+std::string numbered(const char* prefix, std::size_t number) {
     char text[32];
     std::snprintf(text, sizeof text, "%s%zu", prefix, number);
     return text;
 }
 
-bool near_road(double u, double v)
-{
+bool near_road(double u, double v) {
     const Road road;
     const double d = road.station_offset(u, v).v;
     return d > corridor_south - 0.8 && d < corridor_north + 0.8;  // the breaklines cover it
 }
 
-void add_spot_heights(Survey& survey, const SurveyOptions& options, Random& random)
-{
+void add_spot_heights(Survey& survey, const SurveyOptions& options, Random& random) {
     const auto boundary = boundary_local();
     const auto building = building_local();
     std::size_t number = 1;
@@ -83,16 +79,14 @@ void add_spot_heights(Survey& survey, const SurveyOptions& options, Random& rand
 }
 
 /// True where a breakline vertex may go: inside the boundary, at least 1 m from it.
-bool well_inside(const Uv& p)
-{
+bool well_inside(const Uv& p) {
     const auto boundary = boundary_local();
     return inside(boundary, p.u, p.v) && distance_to_ring(boundary, p.u, p.v) >= 1.0;
 }
 
 /// The station where the line at offset d leaves the well-inside region, between an inside
 /// station and an outside one (bisection).
-double exit_station(const Road& road, double d, double in, double out)
-{
+double exit_station(const Road& road, double d, double in, double out) {
     for (int i = 0; i < 60; ++i) {
         const double mid = 0.5 * (in + out);
         (well_inside(road.at(mid, d)) ? in : out) = mid;
@@ -100,8 +94,7 @@ double exit_station(const Road& road, double d, double in, double out)
     return in;
 }
 
-void add_breaklines(Survey& survey)
-{
+void add_breaklines(Survey& survey) {
     const Road road;
     std::size_t number = 1;
     for (std::size_t i = 0; i < breakline_offsets.size(); ++i) {
@@ -119,9 +112,8 @@ void add_breaklines(Survey& survey)
         Line line{breakline_names[i], {}};
         const auto steps = static_cast<std::size_t>(std::ceil((last - first) / 4.5));
         for (std::size_t k = 0; k <= steps; ++k) {
-            const Uv p = road.at(first + (last - first) * static_cast<double>(k) /
-                                              static_cast<double>(steps),
-                                 d);
+            const Uv p = road.at(
+                first + (last - first) * static_cast<double>(k) / static_cast<double>(steps), d);
             line.vertices.push_back(survey_point(numbered("B", number++), p.u, p.v));
         }
         survey.breaklines.push_back(std::move(line));
@@ -129,14 +121,14 @@ void add_breaklines(Survey& survey)
 }
 
 /// A closed ring with a surveyed vertex at most every 4 m along its edges.
-Line ring_line(const char* kind, const char* prefix, const std::vector<Uv>& ring)
-{
+Line ring_line(const char* kind, const char* prefix, const std::vector<Uv>& ring) {
     Line line{kind, {}};
     std::size_t number = 1;
     for (std::size_t i = 0; i < ring.size(); ++i) {
         const Uv& a = ring[i];
         const Uv& b = ring[(i + 1) % ring.size()];
-        const auto steps = static_cast<std::size_t>(std::ceil(std::hypot(b.u - a.u, b.v - a.v) / 4.0));
+        const auto steps =
+            static_cast<std::size_t>(std::ceil(std::hypot(b.u - a.u, b.v - a.v) / 4.0));
         for (std::size_t k = 0; k < steps; ++k) {
             const double t = static_cast<double>(k) / static_cast<double>(steps);
             line.vertices.push_back(survey_point(numbered(prefix, number++), a.u + t * (b.u - a.u),
@@ -147,8 +139,7 @@ Line ring_line(const char* kind, const char* prefix, const std::vector<Uv>& ring
     return line;
 }
 
-void add_check_points(Survey& survey, const SurveyOptions& options, Random& random)
-{
+void add_check_points(Survey& survey, const SurveyOptions& options, Random& random) {
     while (survey.check_points.size() < options.check_points) {
         const double u = random.uniform() * 250.0;
         const double v = random.uniform() * 180.0;
@@ -165,8 +156,7 @@ void add_check_points(Survey& survey, const SurveyOptions& options, Random& rand
 
 }  // namespace
 
-Survey make_survey(const SurveyOptions& options)
-{
+Survey make_survey(const SurveyOptions& options) {
     Survey survey;
     Random random(options.seed);
     add_spot_heights(survey, options, random);

@@ -25,10 +25,10 @@ struct Line {
 };
 
 struct Survey {
-    std::vector<SurveyPoint> points;      ///< spot heights, including the extras below
-    std::size_t outside_points = 0;       ///< spot heights measured beyond the boundary
-    std::size_t repeated_points = 0;      ///< spot heights measured twice at the same place
-    std::vector<std::string> bad_lines;   ///< corrupt records added to the CSV
+    std::vector<SurveyPoint> points;     ///< spot heights, including the extras below
+    std::size_t outside_points = 0;      ///< spot heights measured beyond the boundary
+    std::size_t repeated_points = 0;     ///< spot heights measured twice at the same place
+    std::vector<std::string> bad_lines;  ///< corrupt records added to the CSV
     std::vector<Line> breaklines;
     Line boundary;
     Line building;
@@ -36,7 +36,7 @@ struct Survey {
 };
 
 struct SurveyOptions {
-    double spacing = 3.5;          ///< spacing of the jittered grid of spot heights (m)
+    double spacing = 3.5;  ///< spacing of the jittered grid of spot heights (m)
     std::size_t check_points = 200;
     std::uint64_t seed = 5514;
 };

@@ -34,7 +34,7 @@
 
 namespace dtm::sample {
 
-inline constexpr double origin_e = -750300.0;  ///< E of the site's local (0, 0)
+inline constexpr double origin_e = -750300.0;   ///< E of the site's local (0, 0)
 inline constexpr double origin_n = -1050200.0;  ///< N of the site's local (0, 0)
 inline constexpr int epsg = 5514;
 
@@ -43,8 +43,7 @@ struct Uv {
     double v = 0.0;
 };
 
-inline double natural_z(double u, double v)
-{
+inline double natural_z(double u, double v) {
     const double du = u - 175.0;
     const double dv = v - 135.0;
     return 310.0 + 0.03 * u + 0.08 * v + 5.0 * std::exp(-(du * du + dv * dv) / (2.0 * 30.0 * 30.0));
@@ -55,21 +54,18 @@ struct Road {
     Uv start{-10.0, 55.0};
     Uv end{250.0, 82.0};
     [[nodiscard]] double length() const { return std::hypot(end.u - start.u, end.v - start.v); }
-    [[nodiscard]] Uv direction() const
-    {
+    [[nodiscard]] Uv direction() const {
         return {(end.u - start.u) / length(), (end.v - start.v) / length()};
     }
     [[nodiscard]] Uv normal() const { return {-direction().v, direction().u}; }
     /// The point at station s and offset d.
-    [[nodiscard]] Uv at(double s, double d) const
-    {
+    [[nodiscard]] Uv at(double s, double d) const {
         const Uv t = direction();
         const Uv n = normal();
         return {start.u + s * t.u + d * n.u, start.v + s * t.v + d * n.v};
     }
     /// Station and offset of (u, v).
-    [[nodiscard]] Uv station_offset(double u, double v) const
-    {
+    [[nodiscard]] Uv station_offset(double u, double v) const {
         const Uv t = direction();
         const Uv n = normal();
         const double du = u - start.u;
@@ -81,14 +77,13 @@ struct Road {
 /// Offsets of the road breaklines, south to north, and their names.
 inline constexpr std::array<double, 8> breakline_offsets{-7.5, -4.5, -3.5, 0.0, 3.5, 4.5, 5.5, 9.0};
 inline constexpr std::array<const char*, 8> breakline_names{
-    "embankment_toe", "embankment_top", "road_edge_south", "road_crown",
-    "road_edge_north", "ditch_bottom",  "ditch_top",       "cut_top"};
+    "embankment_toe",  "embankment_top", "road_edge_south", "road_crown",
+    "road_edge_north", "ditch_bottom",   "ditch_top",       "cut_top"};
 inline constexpr double corridor_south = -7.5;
 inline constexpr double corridor_north = 9.0;
 
 /// True elevation at local (u, v).
-inline double true_z_local(double u, double v)
-{
+inline double true_z_local(double u, double v) {
     const Road road;
     const Uv so = road.station_offset(u, v);
     const double d = so.v;
@@ -124,14 +119,12 @@ inline double true_z_local(double u, double v)
 inline double true_z(double e, double n) { return true_z_local(e - origin_e, n - origin_n); }
 
 /// Outer boundary of the survey (counter-clockwise, local coordinates, not repeated).
-inline std::vector<Uv> boundary_local()
-{
+inline std::vector<Uv> boundary_local() {
     return {{2, 4}, {120, 0}, {238, 6}, {248, 90}, {232, 176}, {130, 180}, {6, 172}, {0, 95}};
 }
 
 /// The building footprint (a hole): 22 x 12 m rotated by 12 degrees about (70, 135).
-inline std::vector<Uv> building_local()
-{
+inline std::vector<Uv> building_local() {
     const double a = 12.0 * 3.14159265358979323846 / 180.0;
     const double c = std::cos(a);
     const double s = std::sin(a);
@@ -144,8 +137,7 @@ inline std::vector<Uv> building_local()
 }
 
 /// Even-odd point-in-polygon test on a ring (local coordinates).
-inline bool inside(const std::vector<Uv>& ring, double u, double v)
-{
+inline bool inside(const std::vector<Uv>& ring, double u, double v) {
     bool in = false;
     for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
         const Uv& a = ring[i];
@@ -158,23 +150,22 @@ inline bool inside(const std::vector<Uv>& ring, double u, double v)
 }
 
 /// Distance from (u, v) to the ring's edges.
-inline double distance_to_ring(const std::vector<Uv>& ring, double u, double v)
-{
+inline double distance_to_ring(const std::vector<Uv>& ring, double u, double v) {
     double best = INFINITY;
     for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
         const Uv& a = ring[j];
         const Uv& b = ring[i];
         const double eu = b.u - a.u;
         const double ev = b.v - a.v;
-        const double t = std::clamp(((u - a.u) * eu + (v - a.v) * ev) / (eu * eu + ev * ev), 0.0, 1.0);
+        const double t =
+            std::clamp(((u - a.u) * eu + (v - a.v) * ev) / (eu * eu + ev * ev), 0.0, 1.0);
         best = std::min(best, std::hypot(u - (a.u + t * eu), v - (a.v + t * ev)));
     }
     return best;
 }
 
 /// True if (u, v) is on the surveyed surface: inside the boundary and outside the building.
-inline bool on_surface(double u, double v)
-{
+inline bool on_surface(double u, double v) {
     return inside(boundary_local(), u, v) && !inside(building_local(), u, v);
 }
 

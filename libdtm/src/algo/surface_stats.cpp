@@ -21,8 +21,7 @@ namespace {
 /// Neumaier's compensated sum.
 class CompensatedSum {
 public:
-    void add(double value) noexcept
-    {
+    void add(double value) noexcept {
         const double t = sum_ + value;
         if (std::fabs(sum_) >= std::fabs(value)) {
             compensation_ += (sum_ - t) + value;
@@ -40,8 +39,7 @@ private:
 
 }  // namespace
 
-SurfaceStats surface_stats(const Tin& tin)
-{
+SurfaceStats surface_stats(const Tin& tin) {
     SurfaceStats stats;
     stats.vertex_count = tin.vertices.size();
     stats.triangle_count = tin.triangles.size();

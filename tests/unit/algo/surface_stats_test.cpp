@@ -9,10 +9,11 @@ namespace {
 
 /// A square of side a split along its diagonal, at a large S-JTSK offset, on the plane
 /// z = z0 + g x (g = slope).
-dtm::Tin tilted_square(double a, double g, double x0, double y0)
-{
+dtm::Tin tilted_square(double a, double g, double x0, double y0) {
     dtm::Tin tin;
-    tin.vertices = {{x0, y0, 100.0}, {x0 + a, y0, 100.0 + g * a}, {x0 + a, y0 + a, 100.0 + g * a},
+    tin.vertices = {{x0, y0, 100.0},
+                    {x0 + a, y0, 100.0 + g * a},
+                    {x0 + a, y0 + a, 100.0 + g * a},
                     {x0, y0 + a, 100.0}};
     tin.triangles.resize(2);
     tin.triangles[0].v = {0, 1, 2};
@@ -20,23 +21,20 @@ dtm::Tin tilted_square(double a, double g, double x0, double y0)
     return tin;
 }
 
-TEST(SurfaceStats, PlanimetricAreaOfSquareAtLargeOffsetIsExact)
-{
+TEST(SurfaceStats, PlanimetricAreaOfSquareAtLargeOffsetIsExact) {
     const auto stats = dtm::surface_stats(tilted_square(10.0, 0.0, -750000.0, -1050000.0));
     EXPECT_DOUBLE_EQ(stats.planimetric_area, 100.0);
     EXPECT_DOUBLE_EQ(stats.surface_area, 100.0);
 }
 
-TEST(SurfaceStats, SurfaceAreaOfTiltedPlaneIsPlanimetricOverCosine)
-{
+TEST(SurfaceStats, SurfaceAreaOfTiltedPlaneIsPlanimetricOverCosine) {
     const double g = 0.75;  // slope 3:4, so 1 / cos = 1.25
     const auto stats = dtm::surface_stats(tilted_square(8.0, g, -750000.0, -1050000.0));
     EXPECT_NEAR(stats.planimetric_area, 64.0, 1e-9);
     EXPECT_NEAR(stats.surface_area, 64.0 * 1.25, 1e-9);
 }
 
-TEST(SurfaceStats, ExtentAndZRangeIgnoreVerticesNoTriangleUses)
-{
+TEST(SurfaceStats, ExtentAndZRangeIgnoreVerticesNoTriangleUses) {
     dtm::Tin tin = tilted_square(2.0, 1.0, 5.0, 7.0);
     tin.vertices.push_back({1000.0, 1000.0, -50.0});  // isolated, e.g. merged away
     const auto stats = dtm::surface_stats(tin);
@@ -49,8 +47,7 @@ TEST(SurfaceStats, ExtentAndZRangeIgnoreVerticesNoTriangleUses)
     EXPECT_DOUBLE_EQ(stats.z_max, 102.0);
 }
 
-TEST(SurfaceStats, EmptyTinHasZeroAreaAndEmptyExtent)
-{
+TEST(SurfaceStats, EmptyTinHasZeroAreaAndEmptyExtent) {
     const auto stats = dtm::surface_stats(dtm::Tin{});
     EXPECT_EQ(stats.planimetric_area, 0.0);
     EXPECT_TRUE(stats.extent.empty());

@@ -11,8 +11,7 @@
 
 namespace {
 
-TEST(Mesh2dm, RoundTripKeepsCountsCoordinatesAndConnectivity)
-{
+TEST(Mesh2dm, RoundTripKeepsCountsCoordinatesAndConnectivity) {
     const dtm::Tin tin = dtm::test::grid_tin(6);
     dtm::test::ScratchDir dir;
     dtm::io::write_2dm(tin, dir / "tin.2dm", {});
@@ -27,8 +26,7 @@ TEST(Mesh2dm, RoundTripKeepsCountsCoordinatesAndConnectivity)
     }
 }
 
-TEST(Mesh2dm, WritesMesh2dHeaderAndOneBasedIds)
-{
+TEST(Mesh2dm, WritesMesh2dHeaderAndOneBasedIds) {
     const dtm::Tin tin = dtm::test::grid_tin(2);
     dtm::test::ScratchDir dir;
     dtm::io::write_2dm(tin, dir / "tin.2dm", {});
@@ -52,8 +50,7 @@ TEST(Mesh2dm, WritesMesh2dHeaderAndOneBasedIds)
     EXPECT_EQ(elements, 2u);
 }
 
-TEST(Mesh2dm, ReadRejectsElementWithUnknownNodeNamingTheLine)
-{
+TEST(Mesh2dm, ReadRejectsElementWithUnknownNodeNamingTheLine) {
     dtm::test::ScratchDir dir;
     dtm::test::write_file(dir / "bad.2dm", "MESH2D\nND 1 0 0 0\nND 2 1 0 0\nE3T 1 1 2 9 1\n");
     try {
@@ -65,8 +62,7 @@ TEST(Mesh2dm, ReadRejectsElementWithUnknownNodeNamingTheLine)
     }
 }
 
-TEST(Mesh2dm, ReadRejectsFileWithoutMesh2dHeader)
-{
+TEST(Mesh2dm, ReadRejectsFileWithoutMesh2dHeader) {
     dtm::test::ScratchDir dir;
     dtm::test::write_file(dir / "bad.2dm", "ND 1 0 0 0\n");
     EXPECT_THROW((void)dtm::io::read_2dm(dir / "bad.2dm"), dtm::InputError);

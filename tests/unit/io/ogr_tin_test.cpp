@@ -18,8 +18,7 @@ struct Closer {
     void operator()(GDALDataset* d) const { GDALClose(d); }
 };
 
-std::string epsg_5514_wkt()
-{
+std::string epsg_5514_wkt() {
     OGRSpatialReference srs;
     srs.importFromEPSG(5514);
     char* wkt = nullptr;
@@ -29,8 +28,7 @@ std::string epsg_5514_wkt()
     return text;
 }
 
-void expect_triangles_with_crs(const std::filesystem::path& path, const dtm::Tin& tin)
-{
+void expect_triangles_with_crs(const std::filesystem::path& path, const dtm::Tin& tin) {
     std::unique_ptr<GDALDataset, Closer> ds(
         GDALDataset::Open(path.string().c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY));
     ASSERT_TRUE(ds) << path;
@@ -56,14 +54,13 @@ void expect_triangles_with_crs(const std::filesystem::path& path, const dtm::Tin
     EXPECT_EQ(ring->getX(0), first.x);
     EXPECT_EQ(ring->getY(0), first.y);
     EXPECT_EQ(ring->getZ(0), first.z);
-    EXPECT_DOUBLE_EQ(feature->GetFieldAsDouble("z_max"),
-                     std::max({tin.vertices[tin.triangles[0].v[0]].z,
-                               tin.vertices[tin.triangles[0].v[1]].z,
-                               tin.vertices[tin.triangles[0].v[2]].z}));
+    EXPECT_DOUBLE_EQ(
+        feature->GetFieldAsDouble("z_max"),
+        std::max({tin.vertices[tin.triangles[0].v[0]].z, tin.vertices[tin.triangles[0].v[1]].z,
+                  tin.vertices[tin.triangles[0].v[2]].z}));
 }
 
-TEST(OgrTin, GeoPackageHoldsOnePolygonZPerTriangleWithCrs)
-{
+TEST(OgrTin, GeoPackageHoldsOnePolygonZPerTriangleWithCrs) {
     GDALAllRegister();
     const dtm::Tin tin = dtm::test::grid_tin(6);
     dtm::test::ScratchDir dir;
@@ -73,8 +70,7 @@ TEST(OgrTin, GeoPackageHoldsOnePolygonZPerTriangleWithCrs)
     expect_triangles_with_crs(dir / "tin.gpkg", tin);
 }
 
-TEST(OgrTin, ShapefileHoldsOnePolygonZPerTriangleWithPrj)
-{
+TEST(OgrTin, ShapefileHoldsOnePolygonZPerTriangleWithPrj) {
     GDALAllRegister();
     const dtm::Tin tin = dtm::test::grid_tin(4);
     dtm::test::ScratchDir dir;
@@ -85,8 +81,7 @@ TEST(OgrTin, ShapefileHoldsOnePolygonZPerTriangleWithPrj)
     expect_triangles_with_crs(dir / "tin.shp", tin);
 }
 
-TEST(OgrTin, RewritingReplacesTheOldFile)
-{
+TEST(OgrTin, RewritingReplacesTheOldFile) {
     GDALAllRegister();
     dtm::test::ScratchDir dir;
     dtm::io::TinWriteOptions options;
@@ -97,8 +92,7 @@ TEST(OgrTin, RewritingReplacesTheOldFile)
     expect_triangles_with_crs(dir / "tin.gpkg", small);
 }
 
-TEST(OgrTin, UnknownExtensionIsUsageError)
-{
+TEST(OgrTin, UnknownExtensionIsUsageError) {
     dtm::test::ScratchDir dir;
     EXPECT_THROW(dtm::io::write_ogr_tin(dtm::test::grid_tin(3), dir / "tin.kml", {}),
                  dtm::UsageError);

@@ -21,16 +21,15 @@ struct XmlFree {
 };
 using Xml = std::unique_ptr<CPLXMLNode, XmlFree>;
 
-std::string value_of(const CPLXMLNode* node, const char* path)
-{
+std::string value_of(const CPLXMLNode* node, const char* path) {
     const char* value = CPLGetXMLValue(const_cast<CPLXMLNode*>(node), path, nullptr);
     return value != nullptr ? value : "";
 }
 
-std::vector<const CPLXMLNode*> children(const CPLXMLNode* node, std::string_view name)
-{
+std::vector<const CPLXMLNode*> children(const CPLXMLNode* node, std::string_view name) {
     std::vector<const CPLXMLNode*> out;
-    for (const CPLXMLNode* c = node != nullptr ? node->psChild : nullptr; c != nullptr; c = c->psNext) {
+    for (const CPLXMLNode* c = node != nullptr ? node->psChild : nullptr; c != nullptr;
+         c = c->psNext) {
         if (c->eType == CXT_Element && name == c->pszValue) {
             out.push_back(c);
         }
@@ -38,8 +37,7 @@ std::vector<const CPLXMLNode*> children(const CPLXMLNode* node, std::string_view
     return out;
 }
 
-std::string epsg_wkt(int code)
-{
+std::string epsg_wkt(int code) {
     OGRSpatialReference srs;
     srs.importFromEPSG(code);
     char* wkt = nullptr;
@@ -49,8 +47,7 @@ std::string epsg_wkt(int code)
     return text;
 }
 
-dtm::io::QgisProject sample_project()
-{
+dtm::io::QgisProject sample_project() {
     dtm::io::QgisProject project;
     project.title = "Site <A> & B";
     project.crs_wkt = epsg_wkt(5514);
@@ -69,14 +66,14 @@ dtm::io::QgisProject sample_project()
 
 class QgisProjectXml : public ::testing::Test {
 protected:
-    void SetUp() override
-    {
+    void SetUp() override {
         text_ = dtm::io::qgis_project_xml(sample_project());
         doc_.reset(CPLParseXMLString(text_.c_str()));
         ASSERT_TRUE(doc_) << "not well-formed XML";
         root_ = CPLGetXMLNode(doc_.get(), "=qgis");
         ASSERT_NE(root_, nullptr);
-        for (const CPLXMLNode* layer : children(CPLGetXMLNode(root_, "projectlayers"), "maplayer")) {
+        for (const CPLXMLNode* layer :
+             children(CPLGetXMLNode(root_, "projectlayers"), "maplayer")) {
             layers_[value_of(layer, "id")] = layer;
         }
     }
@@ -86,8 +83,7 @@ protected:
     std::map<std::string, const CPLXMLNode*> layers_;
 };
 
-TEST_F(QgisProjectXml, ProjectCrsIsEpsg5514WithParsableWkt)
-{
+TEST_F(QgisProjectXml, ProjectCrsIsEpsg5514WithParsableWkt) {
     EXPECT_EQ(value_of(root_, "projectCrs.spatialrefsys.authid"), "EPSG:5514");
     OGRSpatialReference srs;
     ASSERT_EQ(srs.SetFromUserInput(value_of(root_, "projectCrs.spatialrefsys.wkt").c_str()),
@@ -97,8 +93,7 @@ TEST_F(QgisProjectXml, ProjectCrsIsEpsg5514WithParsableWkt)
     EXPECT_EQ(value_of(root_, "properties.Paths.Absolute"), "false");
 }
 
-TEST_F(QgisProjectXml, EveryTreeLayerHasAMapLayerWithSourceProviderAndCrs)
-{
+TEST_F(QgisProjectXml, EveryTreeLayerHasAMapLayerWithSourceProviderAndCrs) {
     const auto tree = children(CPLGetXMLNode(root_, "layer-tree-group"), "layer-tree-layer");
     ASSERT_EQ(tree.size(), 4u);
     ASSERT_EQ(layers_.size(), 4u);
@@ -124,8 +119,7 @@ TEST_F(QgisProjectXml, EveryTreeLayerHasAMapLayerWithSourceProviderAndCrs)
     EXPECT_EQ(value_of(tree.back(), "name"), "Hillshade");
 }
 
-TEST_F(QgisProjectXml, DemIsTerrainRampMultipliedOverHillshade)
-{
+TEST_F(QgisProjectXml, DemIsTerrainRampMultipliedOverHillshade) {
     const CPLXMLNode* dem = layers_.at("dtm_dem_layer");
     EXPECT_EQ(value_of(dem, "type"), "raster");
     const CPLXMLNode* renderer = CPLGetXMLNode(const_cast<CPLXMLNode*>(dem), "pipe.rasterrenderer");
@@ -138,14 +132,14 @@ TEST_F(QgisProjectXml, DemIsTerrainRampMultipliedOverHillshade)
     EXPECT_DOUBLE_EQ(std::stod(value_of(items.front(), "value")), 310.0);
     EXPECT_DOUBLE_EQ(std::stod(value_of(items.back(), "value")), 330.0);
     for (std::size_t i = 1; i < items.size(); ++i) {
-        EXPECT_LT(std::stod(value_of(items[i - 1], "value")), std::stod(value_of(items[i], "value")));
+        EXPECT_LT(std::stod(value_of(items[i - 1], "value")),
+                  std::stod(value_of(items[i], "value")));
     }
     const CPLXMLNode* hillshade = layers_.at("dtm_hillshade_layer");
     EXPECT_EQ(value_of(hillshade, "pipe.rasterrenderer.type"), "singlebandgray");
 }
 
-TEST_F(QgisProjectXml, ContoursAreLabelledByElevationWithIndexContoursEmphasised)
-{
+TEST_F(QgisProjectXml, ContoursAreLabelledByElevationWithIndexContoursEmphasised) {
     const CPLXMLNode* contours = layers_.at("dtm_contours_layer");
     EXPECT_EQ(value_of(contours, "type"), "vector");
     EXPECT_EQ(value_of(contours, "labeling.type"), "simple");
@@ -163,26 +157,26 @@ TEST_F(QgisProjectXml, ContoursAreLabelledByElevationWithIndexContoursEmphasised
     std::map<std::string, double> widths;
     for (const CPLXMLNode* symbol :
          children(CPLGetXMLNode(const_cast<CPLXMLNode*>(renderer), "symbols"), "symbol")) {
-        for (const CPLXMLNode* prop : children(CPLGetXMLNode(const_cast<CPLXMLNode*>(symbol), "layer"), "prop")) {
+        for (const CPLXMLNode* prop :
+             children(CPLGetXMLNode(const_cast<CPLXMLNode*>(symbol), "layer"), "prop")) {
             if (value_of(prop, "k") == "line_width") {
                 widths[value_of(symbol, "name")] = std::stod(value_of(prop, "v"));
             }
         }
     }
     ASSERT_EQ(widths.size(), 2u);
-    EXPECT_GT(widths.at(value_of(rules[0], "symbol")), 2.0 * widths.at(value_of(rules[1], "symbol")));
+    EXPECT_GT(widths.at(value_of(rules[0], "symbol")),
+              2.0 * widths.at(value_of(rules[1], "symbol")));
 }
 
-TEST_F(QgisProjectXml, MeshLayerUsesMdalProvider)
-{
+TEST_F(QgisProjectXml, MeshLayerUsesMdalProvider) {
     const CPLXMLNode* mesh = layers_.at("dtm_tin_mesh_layer");
     EXPECT_EQ(value_of(mesh, "type"), "mesh");
     EXPECT_EQ(value_of(mesh, "provider"), "mdal");
     EXPECT_NE(CPLGetXMLNode(const_cast<CPLXMLNode*>(mesh), "mesh-renderer-settings"), nullptr);
 }
 
-TEST(QgisProject, WithoutIndexFieldIndexContoursAreRecognisedFromElevation)
-{
+TEST(QgisProject, WithoutIndexFieldIndexContoursAreRecognisedFromElevation) {
     dtm::io::QgisProject project = sample_project();
     project.index_field.clear();
     project.index_interval = 5.0;
@@ -191,19 +185,19 @@ TEST(QgisProject, WithoutIndexFieldIndexContoursAreRecognisedFromElevation)
               std::string::npos);
 }
 
-TEST(QgisProject, OnlyRequestedLayersAreWritten)
-{
+TEST(QgisProject, OnlyRequestedLayersAreWritten) {
     dtm::io::QgisProject project;
     project.crs_wkt = epsg_wkt(5514);
     project.dem = "dem.tif";
     Xml doc(CPLParseXMLString(dtm::io::qgis_project_xml(project).c_str()));
     ASSERT_TRUE(doc);
     const CPLXMLNode* root = CPLGetXMLNode(doc.get(), "=qgis");
-    EXPECT_EQ(children(CPLGetXMLNode(const_cast<CPLXMLNode*>(root), "projectlayers"), "maplayer").size(), 1u);
+    EXPECT_EQ(
+        children(CPLGetXMLNode(const_cast<CPLXMLNode*>(root), "projectlayers"), "maplayer").size(),
+        1u);
 }
 
-TEST(QgisProject, WriteCreatesTheFile)
-{
+TEST(QgisProject, WriteCreatesTheFile) {
     dtm::test::ScratchDir dir;
     dtm::io::write_qgis_project(sample_project(), dir / "dtm.qgs");
     const std::string text = dtm::test::read_file(dir / "dtm.qgs");

@@ -10,8 +10,7 @@
 
 namespace dtm::test {
 
-inline Tin grid_tin(std::size_t n = 5)
-{
+inline Tin grid_tin(std::size_t n = 5) {
     Tin tin;
     for (std::size_t j = 0; j < n; ++j) {
         for (std::size_t i = 0; i < n; ++i) {
@@ -20,7 +19,9 @@ inline Tin grid_tin(std::size_t n = 5)
             tin.vertices.push_back({x, y, 300.0 + 0.1 * static_cast<double>(i * i + j)});
         }
     }
-    const auto at = [n](std::size_t i, std::size_t j) { return static_cast<VertexIndex>(j * n + i); };
+    const auto at = [n](std::size_t i, std::size_t j) {
+        return static_cast<VertexIndex>(j * n + i);
+    };
     for (std::size_t j = 0; j + 1 < n; ++j) {
         for (std::size_t i = 0; i + 1 < n; ++i) {
             Triangle lower;

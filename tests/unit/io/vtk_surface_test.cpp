@@ -19,16 +19,14 @@
 
 namespace {
 
-vtkSmartPointer<vtkPolyData> read_back(const std::filesystem::path& path)
-{
+vtkSmartPointer<vtkPolyData> read_back(const std::filesystem::path& path) {
     vtkNew<vtkXMLPolyDataReader> reader;
     reader->SetFileName(path.string().c_str());
     reader->Update();
     return reader->GetOutput();
 }
 
-TEST(VtkSurface, ReadBackByVtkHasTinCountsAndElevationArray)
-{
+TEST(VtkSurface, ReadBackByVtkHasTinCountsAndElevationArray) {
     const dtm::Tin tin = dtm::test::grid_tin(7);
     dtm::test::ScratchDir dir;
     dtm::io::write_vtp(tin, dir / "surface.vtp", {});
@@ -52,8 +50,7 @@ TEST(VtkSurface, ReadBackByVtkHasTinCountsAndElevationArray)
     }
 }
 
-TEST(VtkSurface, TrianglesAndBreaklineCellsKeepTheirVertices)
-{
+TEST(VtkSurface, TrianglesAndBreaklineCellsKeepTheirVertices) {
     const dtm::Tin tin = dtm::test::grid_tin(4);
     dtm::test::ScratchDir dir;
     dtm::io::write_vtp(tin, dir / "surface.vtp", {});
@@ -80,12 +77,11 @@ TEST(VtkSurface, TrianglesAndBreaklineCellsKeepTheirVertices)
     vtkDataArray* kind = poly->GetCellData()->GetArray("constraint_kind");
     ASSERT_NE(kind, nullptr);
     EXPECT_EQ(kind->GetNumberOfTuples(), poly->GetNumberOfCells());
-    EXPECT_EQ(kind->GetTuple1(0), 0.0);                             // first line: a breakline
+    EXPECT_EQ(kind->GetTuple1(0), 0.0);                              // first line: a breakline
     EXPECT_EQ(kind->GetTuple1(poly->GetNumberOfCells() - 1), -1.0);  // last cell: a triangle
 }
 
-TEST(VtkSurface, CrsIsKeptInFieldData)
-{
+TEST(VtkSurface, CrsIsKeptInFieldData) {
     dtm::test::ScratchDir dir;
     dtm::io::TinWriteOptions options;
     options.crs_wkt = "PROJCS[\"S-JTSK / Krovak East North\"]";
@@ -96,8 +92,7 @@ TEST(VtkSurface, CrsIsKeptInFieldData)
     EXPECT_EQ(crs->GetValue(0), options.crs_wkt);
 }
 
-TEST(VtkSurface, UnwritablePathThrowsError)
-{
+TEST(VtkSurface, UnwritablePathThrowsError) {
     EXPECT_THROW(dtm::io::write_vtp(dtm::test::grid_tin(3), "/nonexistent/dir/surface.vtp", {}),
                  dtm::Error);
 }

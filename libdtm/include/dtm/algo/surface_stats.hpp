@@ -14,7 +14,8 @@ struct SurfaceStats {
     std::size_t vertex_count = 0;
     std::size_t triangle_count = 0;
     std::size_t constraint_count = 0;
-    /// Extent of the vertices that some triangle uses (unused vertices are not part of the surface).
+    /// Extent of the vertices that some triangle uses (unused vertices are not part of the
+    /// surface).
     Box2 extent;
     double z_min = 0.0;  ///< over the used vertices; 0 when the TIN has no triangle
     double z_max = 0.0;

@@ -17,15 +17,13 @@ namespace dtm::io {
 namespace {
 
 /// Appends the shortest text that reads back as exactly @p value.
-void append_number(std::string& out, double value)
-{
+void append_number(std::string& out, double value) {
     std::array<char, 32> buffer{};
     const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
     out.append(buffer.data(), result.ptr);
 }
 
-void append_number(std::string& out, std::size_t value)
-{
+void append_number(std::string& out, std::size_t value) {
     std::array<char, 24> buffer{};
     const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
     out.append(buffer.data(), result.ptr);
@@ -33,8 +31,7 @@ void append_number(std::string& out, std::size_t value)
 
 }  // namespace
 
-void write_2dm(const Tin& tin, const std::filesystem::path& path, const TinWriteOptions&)
-{
+void write_2dm(const Tin& tin, const std::filesystem::path& path, const TinWriteOptions&) {
     std::ofstream file(path, std::ios::binary | std::ios::trunc);
     if (!file) {
         throw Error("2dm: cannot create " + path.string());
@@ -74,13 +71,11 @@ struct Reader2dm {
     std::size_t line_number = 0;
     std::unordered_map<long long, VertexIndex> node_index;
 
-    [[noreturn]] void fail(const std::string& what) const
-    {
+    [[noreturn]] void fail(const std::string& what) const {
         throw InputError(path, line_number, 0, "2dm: " + what);
     }
 
-    void read_node(std::istringstream& fields, Tin& tin)
-    {
+    void read_node(std::istringstream& fields, Tin& tin) {
         long long id = 0;
         Point3 p;
         if (!(fields >> id >> p.x >> p.y >> p.z)) {
@@ -92,8 +87,7 @@ struct Reader2dm {
         tin.vertices.push_back(p);
     }
 
-    void read_triangle(std::istringstream& fields, Tin& tin) const
-    {
+    void read_triangle(std::istringstream& fields, Tin& tin) const {
         long long id = 0;
         std::array<long long, 3> nodes{};
         if (!(fields >> id >> nodes[0] >> nodes[1] >> nodes[2])) {
@@ -114,8 +108,7 @@ struct Reader2dm {
 
 }  // namespace
 
-Tin read_2dm(const std::filesystem::path& path)
-{
+Tin read_2dm(const std::filesystem::path& path) {
     std::ifstream file(path);
     if (!file) {
         throw InputError(path, 0, 0, "2dm: cannot open file");

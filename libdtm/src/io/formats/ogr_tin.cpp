@@ -25,8 +25,7 @@ struct DatasetCloser {
 };
 using DatasetPtr = std::unique_ptr<GDALDataset, DatasetCloser>;
 
-const char* driver_for(const std::filesystem::path& path)
-{
+const char* driver_for(const std::filesystem::path& path) {
     std::string ext = path.extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
@@ -40,14 +39,12 @@ const char* driver_for(const std::filesystem::path& path)
                      " (known: .gpkg, .shp)");
 }
 
-[[noreturn]] void fail(const std::string& what)
-{
+[[noreturn]] void fail(const std::string& what) {
     throw Error("ogr tin: " + what + ": " + CPLGetLastErrorMsg());
 }
 
 /// Steepest slope in degrees of the plane through the triangle.
-double slope_degrees(const Point3& a, const Point3& b, const Point3& c)
-{
+double slope_degrees(const Point3& a, const Point3& b, const Point3& c) {
     const double ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z;
     const double vx = c.x - a.x, vy = c.y - a.y, vz = c.z - a.z;
     const double nx = uy * vz - uz * vy;
@@ -56,9 +53,9 @@ double slope_degrees(const Point3& a, const Point3& b, const Point3& c)
     return std::atan2(std::hypot(nx, ny), std::fabs(nz)) * 180.0 / std::numbers::pi;
 }
 
-OGRLayer* create_layer(GDALDataset& dataset, const std::filesystem::path& path,
-                       const std::string& crs_wkt)
-{
+OGRLayer* create_layer(GDALDataset& dataset,
+                       const std::filesystem::path& path,
+                       const std::string& crs_wkt) {
     OGRSpatialReference srs;
     const bool has_crs = !crs_wkt.empty();
     if (has_crs && srs.SetFromUserInput(crs_wkt.c_str()) != OGRERR_NONE) {
@@ -68,8 +65,8 @@ OGRLayer* create_layer(GDALDataset& dataset, const std::filesystem::path& path,
     const std::string name = std::string(dataset.GetDriver()->GetDescription()) == "GPKG"
                                  ? std::string("tin")
                                  : path.stem().string();
-    OGRLayer* layer = dataset.CreateLayer(name.c_str(), has_crs ? &srs : nullptr, wkbPolygon25D,
-                                          nullptr);
+    OGRLayer* layer =
+        dataset.CreateLayer(name.c_str(), has_crs ? &srs : nullptr, wkbPolygon25D, nullptr);
     if (layer == nullptr) {
         fail("cannot create layer in " + path.string());
     }
@@ -85,8 +82,7 @@ OGRLayer* create_layer(GDALDataset& dataset, const std::filesystem::path& path,
     return layer;
 }
 
-void write_features(const Tin& tin, OGRLayer& layer, const std::filesystem::path& path)
-{
+void write_features(const Tin& tin, OGRLayer& layer, const std::filesystem::path& path) {
     for (std::size_t i = 0; i < tin.triangles.size(); ++i) {
         const Triangle& t = tin.triangles[i];
         const Point3& a = tin.vertices[t.v[0]];
@@ -112,9 +108,9 @@ void write_features(const Tin& tin, OGRLayer& layer, const std::filesystem::path
 
 }  // namespace
 
-void write_ogr_tin(const Tin& tin, const std::filesystem::path& path,
-                   const TinWriteOptions& options)
-{
+void write_ogr_tin(const Tin& tin,
+                   const std::filesystem::path& path,
+                   const TinWriteOptions& options) {
     const char* driver_name = driver_for(path);
     static std::once_flag registered;
     std::call_once(registered, [] { GDALAllRegister(); });

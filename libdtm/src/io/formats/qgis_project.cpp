@@ -9,12 +9,12 @@
 // authid/proj are informative.
 #include "dtm/io/formats/qgis_project.hpp"
 
+#include <cpl_conv.h>
 #include <ogr_spatialref.h>
 
 #include <algorithm>
 #include <array>
 #include <charconv>
-#include <cpl_conv.h>
 #include <fstream>
 
 #include "dtm/core/error.hpp"
@@ -23,33 +23,43 @@
 namespace dtm::io {
 namespace qgis {
 
-std::string escape(std::string_view text)
-{
+std::string escape(std::string_view text) {
     std::string out;
     out.reserve(text.size());
     for (const char c : text) {
         switch (c) {
-        case '&': out += "&amp;"; break;
-        case '<': out += "&lt;"; break;
-        case '>': out += "&gt;"; break;
-        case '"': out += "&quot;"; break;
-        case '\'': out += "&apos;"; break;
-        case '\n': out += "&#xa;"; break;
-        default: out += c;
+            case '&':
+                out += "&amp;";
+                break;
+            case '<':
+                out += "&lt;";
+                break;
+            case '>':
+                out += "&gt;";
+                break;
+            case '"':
+                out += "&quot;";
+                break;
+            case '\'':
+                out += "&apos;";
+                break;
+            case '\n':
+                out += "&#xa;";
+                break;
+            default:
+                out += c;
         }
     }
     return out;
 }
 
-std::string number(double value)
-{
+std::string number(double value) {
     std::array<char, 32> buffer{};
     const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
     return {buffer.data(), result.ptr};
 }
 
-void XmlWriter::start_tag(std::string_view name, Attributes attributes)
-{
+void XmlWriter::start_tag(std::string_view name, Attributes attributes) {
     out_.append(static_cast<std::size_t>(depth_) * 2, ' ');
     out_ += '<';
     out_ += name;
@@ -62,15 +72,13 @@ void XmlWriter::start_tag(std::string_view name, Attributes attributes)
     }
 }
 
-void XmlWriter::open(std::string_view name, Attributes attributes)
-{
+void XmlWriter::open(std::string_view name, Attributes attributes) {
     start_tag(name, attributes);
     out_ += ">\n";
     ++depth_;
 }
 
-void XmlWriter::close(std::string_view name)
-{
+void XmlWriter::close(std::string_view name) {
     --depth_;
     out_.append(static_cast<std::size_t>(depth_) * 2, ' ');
     out_ += "</";
@@ -78,14 +86,12 @@ void XmlWriter::close(std::string_view name)
     out_ += ">\n";
 }
 
-void XmlWriter::leaf(std::string_view name, Attributes attributes)
-{
+void XmlWriter::leaf(std::string_view name, Attributes attributes) {
     start_tag(name, attributes);
     out_ += "/>\n";
 }
 
-void XmlWriter::text(std::string_view name, std::string_view value, Attributes attributes)
-{
+void XmlWriter::text(std::string_view name, std::string_view value, Attributes attributes) {
     start_tag(name, attributes);
     out_ += '>';
     out_ += escape(value);
@@ -94,22 +100,19 @@ void XmlWriter::text(std::string_view name, std::string_view value, Attributes a
     out_ += ">\n";
 }
 
-void XmlWriter::option(std::string_view name, std::string value)
-{
+void XmlWriter::option(std::string_view name, std::string value) {
     leaf("Option", {{"name", std::string(name)}, {"type", "QString"}, {"value", std::move(value)}});
 }
 
 namespace {
 
-std::string take_cpl_string(char* text)
-{
+std::string take_cpl_string(char* text) {
     std::string out = text != nullptr ? text : "";
     CPLFree(text);
     return out;
 }
 
-std::string proj_acronym(const std::string& proj)
-{
+std::string proj_acronym(const std::string& proj) {
     const auto at = proj.find("+proj=");
     if (at == std::string::npos) {
         return {};
@@ -120,8 +123,7 @@ std::string proj_acronym(const std::string& proj)
 
 }  // namespace
 
-CrsInfo describe_crs(const std::string& crs_wkt)
-{
+CrsInfo describe_crs(const std::string& crs_wkt) {
     CrsInfo info;
     if (crs_wkt.empty()) {
         return info;
@@ -156,8 +158,7 @@ CrsInfo describe_crs(const std::string& crs_wkt)
     return info;
 }
 
-void write_spatialrefsys(XmlWriter& xml, const CrsInfo& crs)
-{
+void write_spatialrefsys(XmlWriter& xml, const CrsInfo& crs) {
     xml.open("spatialrefsys", {{"nativeFormat", "Wkt"}});
     xml.text("wkt", crs.wkt);
     xml.text("proj4", crs.proj);
@@ -170,8 +171,7 @@ void write_spatialrefsys(XmlWriter& xml, const CrsInfo& crs)
     xml.close("spatialrefsys");
 }
 
-std::string contours_source(const QgisProject& project)
-{
+std::string contours_source(const QgisProject& project) {
     std::string source = project.contours.generic_string();
     if (!project.contour_layer.empty()) {
         source += "|layername=" + project.contour_layer;
@@ -194,11 +194,11 @@ struct TreeEntry {
 };
 
 /// The layers present in @p project, top of the drawing order first.
-std::vector<TreeEntry> tree_entries(const QgisProject& project)
-{
+std::vector<TreeEntry> tree_entries(const QgisProject& project) {
     std::vector<TreeEntry> entries;
     if (!project.contours.empty()) {
-        entries.push_back({qgis::contours_id, "Contours", qgis::contours_source(project), "ogr", true});
+        entries.push_back(
+            {qgis::contours_id, "Contours", qgis::contours_source(project), "ogr", true});
     }
     if (!project.mesh.empty()) {
         entries.push_back({qgis::mesh_id, "TIN (mesh)", project.mesh.generic_string(), "mdal",
@@ -214,16 +214,17 @@ std::vector<TreeEntry> tree_entries(const QgisProject& project)
     return entries;
 }
 
-void write_layer_tree(XmlWriter& xml, const std::vector<TreeEntry>& entries)
-{
+void write_layer_tree(XmlWriter& xml, const std::vector<TreeEntry>& entries) {
     xml.open("layer-tree-group");
     xml.leaf("customproperties");
     for (const TreeEntry& e : entries) {
-        xml.open("layer-tree-layer",
-                 {{"id", std::string(e.id)}, {"name", e.name}, {"source", e.source},
-                  {"providerKey", std::string(e.provider)},
-                  {"checked", e.visible ? "Qt::Checked" : "Qt::Unchecked"}, {"expanded", "1"},
-                  {"legend_exp", ""}});
+        xml.open("layer-tree-layer", {{"id", std::string(e.id)},
+                                      {"name", e.name},
+                                      {"source", e.source},
+                                      {"providerKey", std::string(e.provider)},
+                                      {"checked", e.visible ? "Qt::Checked" : "Qt::Unchecked"},
+                                      {"expanded", "1"},
+                                      {"legend_exp", ""}});
         xml.leaf("customproperties");
         xml.close("layer-tree-layer");
     }
@@ -235,8 +236,7 @@ void write_layer_tree(XmlWriter& xml, const std::vector<TreeEntry>& entries)
     xml.close("layer-tree-group");
 }
 
-void write_canvas(XmlWriter& xml, const QgisProject& project, const qgis::CrsInfo& crs)
-{
+void write_canvas(XmlWriter& xml, const QgisProject& project, const qgis::CrsInfo& crs) {
     Box2 box = project.extent;
     if (box.empty()) {
         box = Box2{0.0, 0.0, 1.0, 1.0};
@@ -258,8 +258,7 @@ void write_canvas(XmlWriter& xml, const QgisProject& project, const qgis::CrsInf
     xml.close("mapcanvas");
 }
 
-void write_properties(XmlWriter& xml)
-{
+void write_properties(XmlWriter& xml) {
     xml.open("properties");
     xml.open("Paths");
     xml.text("Absolute", "false", {{"type", "bool"}});
@@ -273,8 +272,7 @@ void write_properties(XmlWriter& xml)
 
 }  // namespace
 
-std::string qgis_project_xml(const QgisProject& project)
-{
+std::string qgis_project_xml(const QgisProject& project) {
     const qgis::CrsInfo crs = qgis::describe_crs(project.crs_wkt);
     const std::vector<TreeEntry> entries = tree_entries(project);
     XmlWriter xml;
@@ -313,8 +311,7 @@ std::string qgis_project_xml(const QgisProject& project)
     return xml.str();
 }
 
-void write_qgis_project(const QgisProject& project, const std::filesystem::path& path)
-{
+void write_qgis_project(const QgisProject& project, const std::filesystem::path& path) {
     const std::string text = qgis_project_xml(project);
     std::ofstream file(path, std::ios::binary | std::ios::trunc);
     file.write(text.data(), static_cast<std::streamsize>(text.size()));

@@ -19,8 +19,7 @@
 namespace dtm::io::qgis {
 namespace {
 
-void write_extent(XmlWriter& xml, const Box2& box)
-{
+void write_extent(XmlWriter& xml, const Box2& box) {
     if (box.empty()) {
         return;
     }
@@ -34,10 +33,13 @@ void write_extent(XmlWriter& xml, const Box2& box)
 
 }  // namespace
 
-void write_layer_head(XmlWriter& xml, const QgisProject& project, const CrsInfo& crs,
-                      std::string_view id, const std::string& source, std::string_view name,
-                      std::string_view provider)
-{
+void write_layer_head(XmlWriter& xml,
+                      const QgisProject& project,
+                      const CrsInfo& crs,
+                      std::string_view id,
+                      const std::string& source,
+                      std::string_view name,
+                      std::string_view provider) {
     write_extent(xml, project.extent);
     xml.text("id", id);
     xml.text("datasource", source);
@@ -57,8 +59,7 @@ void write_layer_head(XmlWriter& xml, const QgisProject& project, const CrsInfo&
     xml.close("flags");
 }
 
-void open_maplayer(XmlWriter& xml, std::string_view type, std::string_view geometry)
-{
+void open_maplayer(XmlWriter& xml, std::string_view type, std::string_view geometry) {
     xml.open("maplayer", {{"type", std::string(type)},
                           {"geometry", std::string(geometry)},
                           {"hasScaleBasedVisibilityFlag", "0"},
@@ -73,8 +74,7 @@ void open_maplayer(XmlWriter& xml, std::string_view type, std::string_view geome
 
 namespace {
 
-void write_min_max_origin(XmlWriter& xml)
-{
+void write_min_max_origin(XmlWriter& xml) {
     xml.open("minMaxOrigin");
     xml.text("limits", "None");
     xml.text("extent", "WholeRaster");
@@ -85,8 +85,7 @@ void write_min_max_origin(XmlWriter& xml)
     xml.close("minMaxOrigin");
 }
 
-void write_pipe_tail(XmlWriter& xml)
-{
+void write_pipe_tail(XmlWriter& xml) {
     xml.leaf("brightnesscontrast", {{"brightness", "0"}, {"contrast", "0"}, {"gamma", "1"}});
     xml.leaf("huesaturation", {{"saturation", "0"},
                                {"grayscaleMode", "0"},
@@ -113,8 +112,7 @@ constexpr std::array<RampStop, 6> terrain_ramp{{{0.0, "#3b8d46"},
                                                 {0.88, "#9c6b4a"},
                                                 {1.0, "#f4efe9"}}};
 
-void write_color_ramp_shader(XmlWriter& xml, double z_min, double z_max)
-{
+void write_color_ramp_shader(XmlWriter& xml, double z_min, double z_max) {
     xml.open("rastershader");
     xml.open("colorrampshader", {{"colorRampType", "INTERPOLATED"},
                                  {"classificationMode", "1"},
@@ -137,8 +135,7 @@ void write_color_ramp_shader(XmlWriter& xml, double z_min, double z_max)
 
 }  // namespace
 
-void write_dem_layer(XmlWriter& xml, const QgisProject& project, const CrsInfo& crs)
-{
+void write_dem_layer(XmlWriter& xml, const QgisProject& project, const CrsInfo& crs) {
     const double z_min = project.z_min;
     const double z_max = project.z_max > project.z_min ? project.z_max : project.z_min + 1.0;
     open_maplayer(xml, "raster", "");
@@ -164,8 +161,7 @@ void write_dem_layer(XmlWriter& xml, const QgisProject& project, const CrsInfo& 
     xml.close("maplayer");
 }
 
-void write_hillshade_layer(XmlWriter& xml, const QgisProject& project, const CrsInfo& crs)
-{
+void write_hillshade_layer(XmlWriter& xml, const QgisProject& project, const CrsInfo& crs) {
     open_maplayer(xml, "raster", "");
     write_layer_head(xml, project, crs, hillshade_id, project.hillshade.generic_string(),
                      "Hillshade", "gdal");

@@ -10,8 +10,7 @@ namespace dtm::io::qgis {
 namespace {
 
 /// QGIS expression true on index contours.
-std::string index_filter(const QgisProject& project)
-{
+std::string index_filter(const QgisProject& project) {
     if (!project.index_field.empty()) {
         return "\"" + project.index_field + "\" = 1";
     }
@@ -20,8 +19,7 @@ std::string index_filter(const QgisProject& project)
     return "abs(" + z + " / " + step + " - round(" + z + " / " + step + ")) < 0.000001";
 }
 
-void write_line_symbol(XmlWriter& xml, std::string_view name, std::string color, double width)
-{
+void write_line_symbol(XmlWriter& xml, std::string_view name, std::string color, double width) {
     xml.open("symbol", {{"type", "line"},
                         {"name", std::string(name)},
                         {"alpha", "1"},
@@ -30,9 +28,9 @@ void write_line_symbol(XmlWriter& xml, std::string_view name, std::string color,
     xml.open("layer", {{"class", "SimpleLine"}, {"enabled", "1"}, {"locked", "0"}, {"pass", "0"}});
     // QGIS >= 3.26 reads the Option map, older 3.x the prop list; both say the same.
     const std::pair<std::string_view, std::string> props[] = {
-        {"capstyle", "round"},      {"joinstyle", "round"}, {"line_color", color},
-        {"line_style", "solid"},    {"line_width", number(width)}, {"line_width_unit", "MM"},
-        {"offset", "0"},            {"offset_unit", "MM"},  {"use_custom_dash", "0"}};
+        {"capstyle", "round"},   {"joinstyle", "round"},        {"line_color", color},
+        {"line_style", "solid"}, {"line_width", number(width)}, {"line_width_unit", "MM"},
+        {"offset", "0"},         {"offset_unit", "MM"},         {"use_custom_dash", "0"}};
     xml.open("Option", {{"type", "Map"}});
     for (const auto& [key, value] : props) {
         xml.option(key, value);
@@ -45,8 +43,7 @@ void write_line_symbol(XmlWriter& xml, std::string_view name, std::string color,
     xml.close("symbol");
 }
 
-void write_contour_renderer(XmlWriter& xml, const QgisProject& project)
-{
+void write_contour_renderer(XmlWriter& xml, const QgisProject& project) {
     xml.open("renderer-v2", {{"type", "RuleRenderer"},
                              {"symbollevels", "0"},
                              {"enableorderby", "0"},
@@ -69,8 +66,7 @@ void write_contour_renderer(XmlWriter& xml, const QgisProject& project)
 }
 
 /// Decimals needed to print multiples of @p step exactly (0 for whole metres).
-int label_decimals(double step)
-{
+int label_decimals(double step) {
     for (int decimals = 0; decimals < 3; ++decimals) {
         const double scaled = step * std::pow(10.0, decimals);
         if (std::fabs(scaled - std::round(scaled)) < 1e-9) {
@@ -81,8 +77,7 @@ int label_decimals(double step)
 }
 
 /// Data-defined "Show" property: only index contours get a label.
-void write_show_property(XmlWriter& xml, const QgisProject& project)
-{
+void write_show_property(XmlWriter& xml, const QgisProject& project) {
     xml.open("dd_properties");
     xml.open("Option", {{"type", "Map"}});
     xml.option("name", "");
@@ -98,8 +93,7 @@ void write_show_property(XmlWriter& xml, const QgisProject& project)
     xml.close("dd_properties");
 }
 
-void write_contour_labeling(XmlWriter& xml, const QgisProject& project)
-{
+void write_contour_labeling(XmlWriter& xml, const QgisProject& project) {
     xml.open("labeling", {{"type", "simple"}});
     xml.open("settings", {{"calloutType", "simple"}});
     xml.open("text-style", {{"fieldName", project.elevation_field},
@@ -125,7 +119,7 @@ void write_contour_labeling(XmlWriter& xml, const QgisProject& project)
                              {"plussign", "0"},
                              {"wrapChar", ""},
                              {"multilineAlign", "0"}});
-    xml.leaf("placement", {{"placement", "2"},  // along the line
+    xml.leaf("placement", {{"placement", "2"},       // along the line
                            {"placementFlags", "1"},  // on the line
                            {"repeatDistance", "80"},
                            {"repeatDistanceUnits", "MM"},
@@ -144,8 +138,7 @@ void write_contour_labeling(XmlWriter& xml, const QgisProject& project)
 
 }  // namespace
 
-void write_contours_layer(XmlWriter& xml, const QgisProject& project, const CrsInfo& crs)
-{
+void write_contours_layer(XmlWriter& xml, const QgisProject& project, const CrsInfo& crs) {
     open_maplayer(xml, "vector", "Line");
     write_layer_head(xml, project, crs, contours_id, contours_source(project), "Contours", "ogr");
     write_contour_renderer(xml, project);
@@ -156,10 +149,10 @@ void write_contours_layer(XmlWriter& xml, const QgisProject& project, const CrsI
     xml.close("maplayer");
 }
 
-void write_mesh_layer(XmlWriter& xml, const QgisProject& project, const CrsInfo& crs)
-{
+void write_mesh_layer(XmlWriter& xml, const QgisProject& project, const CrsInfo& crs) {
     open_maplayer(xml, "mesh", "");
-    write_layer_head(xml, project, crs, mesh_id, project.mesh.generic_string(), "TIN (mesh)", "mdal");
+    write_layer_head(xml, project, crs, mesh_id, project.mesh.generic_string(), "TIN (mesh)",
+                     "mdal");
     xml.leaf("extra-datasets");
     xml.open("mesh-renderer-settings");
     xml.leaf("active-dataset-group", {{"scalar", "-1"}, {"vector", "-1"}});

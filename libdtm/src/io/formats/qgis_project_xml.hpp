@@ -63,8 +63,12 @@ inline constexpr std::string_view mesh_id = "dtm_tin_mesh_layer";
 /// Opens a `maplayer` element (closed by the caller) and writes the children every layer starts
 /// with: extent, id, datasource, layername, srs, provider, flags.
 void open_maplayer(XmlWriter& xml, std::string_view type, std::string_view geometry);
-void write_layer_head(XmlWriter& xml, const QgisProject& project, const CrsInfo& crs,
-                      std::string_view id, const std::string& source, std::string_view name,
+void write_layer_head(XmlWriter& xml,
+                      const QgisProject& project,
+                      const CrsInfo& crs,
+                      std::string_view id,
+                      const std::string& source,
+                      std::string_view name,
                       std::string_view provider);
 
 void write_dem_layer(XmlWriter& xml, const QgisProject& project, const CrsInfo& crs);

@@ -21,8 +21,7 @@
 namespace dtm::io {
 namespace {
 
-void add_points(const Tin& tin, vtkPolyData& poly)
-{
+void add_points(const Tin& tin, vtkPolyData& poly) {
     vtkNew<vtkPoints> points;
     points->SetDataTypeToDouble();
     points->SetNumberOfPoints(static_cast<vtkIdType>(tin.vertices.size()));
@@ -41,8 +40,7 @@ void add_points(const Tin& tin, vtkPolyData& poly)
     poly.GetPointData()->SetActiveScalars("elevation");
 }
 
-void add_cells(const Tin& tin, vtkPolyData& poly)
-{
+void add_cells(const Tin& tin, vtkPolyData& poly) {
     vtkNew<vtkCellArray> triangles;
     triangles->AllocateExact(static_cast<vtkIdType>(tin.triangles.size()),
                              static_cast<vtkIdType>(tin.triangles.size() * 3));
@@ -76,8 +74,7 @@ void add_cells(const Tin& tin, vtkPolyData& poly)
 
 }  // namespace
 
-void write_vtp(const Tin& tin, const std::filesystem::path& path, const TinWriteOptions& options)
-{
+void write_vtp(const Tin& tin, const std::filesystem::path& path, const TinWriteOptions& options) {
     vtkNew<vtkPolyData> poly;
     add_points(tin, *poly);
     add_cells(tin, *poly);

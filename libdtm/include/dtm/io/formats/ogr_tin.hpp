@@ -16,7 +16,8 @@ namespace dtm::io {
 /// `id` (0-based triangle index), `z_min`, `z_max`, `slope_deg` (steepest slope of the plane).
 /// The caller provides atomicity; an existing file at @p path is replaced.
 /// @throws UsageError for another extension; Error if GDAL fails.
-void write_ogr_tin(const Tin& tin, const std::filesystem::path& path,
+void write_ogr_tin(const Tin& tin,
+                   const std::filesystem::path& path,
                    const TinWriteOptions& options);
 
 }  // namespace dtm::io
