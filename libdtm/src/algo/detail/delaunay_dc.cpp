@@ -1,0 +1,250 @@
+// SPDX-License-Identifier: MIT
+//
+// Delaunay triangulation by divide and conquer with alternating cuts.
+//
+// The point set is split at its median, alternately by x and by y (Dwyer's improvement of the
+// Guibas-Stolfi algorithm, as in Shewchuk's Triangle), down to pieces of two or three points.
+// Two neighbouring halves are stitched by the Guibas-Stolfi merge: start from the lower common
+// tangent of the two hulls and zip upwards, each step adding the cross edge chosen by the
+// in-circle test and deleting the edges of either half that the new edge makes non-Delaunay.
+// A cut by y is merged in a frame rotated by 90 degrees: the merge reads geometry only through
+// orient2d and incircle, which are invariant under that rotation, so only the order used to pick
+// the extreme hull vertices changes ((x, y) for x cuts, (y, -x) for y cuts).
+//
+// The recursion tree depends only on the input (a median split of a canonically sorted array),
+// so the triangulation is the same whether a subtree runs sequentially or as a parallel task:
+// the top levels of the tree are the "tiles" and their merges are the exact seam stitches.
+// Each parallel subtree allocates edges from its own slot range (3 slots per point always
+// suffice: a planar straight-line graph on m >= 3 points has at most 3m - 6 edges).
+//
+// References:
+//   L. Guibas, J. Stolfi, "Primitives for the manipulation of general subdivisions and the
+//     computation of Voronoi diagrams", ACM Transactions on Graphics 4(2), 1985.
+//   R. A. Dwyer, "A faster divide-and-conquer algorithm for constructing Delaunay
+//     triangulations", Algorithmica 2, 1987.
+//   J. R. Shewchuk, "Triangle: engineering a 2D quality mesh generator and Delaunay
+//     triangulator", 1996 (alternating cuts, robust predicates).
+#include "algo/detail/delaunay_dc.hpp"
+
+#include <tbb/parallel_invoke.h>
+
+#include <algorithm>
+#include <atomic>
+
+#include "dtm/geom/predicates.hpp"
+
+namespace dtm::detail {
+namespace {
+
+/// ldo: counter-clockwise hull edge out of the first (leftmost) vertex of the frame order;
+/// rdo: clockwise hull edge out of the last (rightmost) one.
+struct Hull {
+    EdgeId left;
+    EdgeId right;
+};
+
+/// Strict order of the frame: lexicographic (x, y) for axis 0, (y, -x) for axis 1.
+inline bool before(int axis, const KernelPoint& a, const KernelPoint& b) noexcept
+{
+    if (axis == 0) return a.x < b.x || (a.x == b.x && a.y < b.y);
+    return a.y < b.y || (a.y == b.y && a.x > b.x);
+}
+
+class Builder {
+public:
+    Builder(std::vector<KernelPoint>& points, EdgeMesh& mesh, const DelaunayDcOptions& options,
+            const Progress& progress)
+        : pts_(points.data()), mesh_(mesh), options_(options), progress_(progress),
+          total_(points.size()),
+          progress_unit_(options.parallel_cutoff > 0 ? options.parallel_cutoff : 65536)
+    {
+    }
+
+    Hull build(std::size_t lo, std::size_t hi, int cut, int frame, EdgeSlots& slots,
+               std::size_t parent_n)
+    {
+        const std::size_t n = hi - lo;
+        if (n <= 3) return base_case(lo, n, frame, slots);
+        const Hull hull = build_inner(lo, hi, cut, frame, slots);
+        if (n <= progress_unit_ && parent_n > progress_unit_) {
+            const std::size_t done = done_.fetch_add(n) + n;
+            progress_.report(static_cast<double>(done) / static_cast<double>(total_),
+                             "triangulating");
+        }
+        return hull;
+    }
+
+private:
+    Hull build_inner(std::size_t lo, std::size_t hi, int cut, int frame, EdgeSlots& slots)
+    {
+        const std::size_t n = hi - lo;
+        const std::size_t mid = lo + n / 2;
+        std::nth_element(pts_ + lo, pts_ + mid, pts_ + hi,
+                         [cut](const KernelPoint& a, const KernelPoint& b) {
+                             return before(cut, a, b);
+                         });
+        Hull left{};
+        Hull right{};
+        if (options_.parallel_cutoff > 0 && n > options_.parallel_cutoff) {
+            EdgeSlots left_slots{static_cast<EdgeId>(3 * lo), static_cast<EdgeId>(3 * mid), {}};
+            EdgeSlots right_slots{static_cast<EdgeId>(3 * mid), static_cast<EdgeId>(3 * hi), {}};
+            tbb::parallel_invoke(
+                [&] { left = build(lo, mid, 1 - cut, cut, left_slots, n); },
+                [&] { right = build(mid, hi, 1 - cut, cut, right_slots, n); });
+            slots = std::move(right_slots);
+            slots.absorb(left_slots);
+        } else {
+            left = build(lo, mid, 1 - cut, cut, slots, n);
+            right = build(mid, hi, 1 - cut, cut, slots, n);
+        }
+        const Hull merged = merge(left, right, slots);
+        return frame == cut ? merged : rehull(merged, frame);
+    }
+
+    [[nodiscard]] int orient(VertexId a, VertexId b, VertexId c) const noexcept
+    {
+        return geom::orient2d(pts_[a].x, pts_[a].y, pts_[b].x, pts_[b].y, pts_[c].x, pts_[c].y);
+    }
+    [[nodiscard]] bool incircle(VertexId a, VertexId b, VertexId c, VertexId d) const noexcept
+    {
+        return geom::incircle(pts_[a].x, pts_[a].y, pts_[b].x, pts_[b].y, pts_[c].x, pts_[c].y,
+                              pts_[d].x, pts_[d].y) > 0;
+    }
+    [[nodiscard]] bool rightof(VertexId x, EdgeId e) const noexcept
+    {
+        return orient(x, mesh_.dest(e), mesh_.org[e]) > 0;
+    }
+    [[nodiscard]] bool leftof(VertexId x, EdgeId e) const noexcept
+    {
+        return orient(x, mesh_.org[e], mesh_.dest(e)) > 0;
+    }
+
+    Hull base_case(std::size_t lo, std::size_t n, int frame, EdgeSlots& slots)
+    {
+        std::sort(pts_ + lo, pts_ + lo + n, [frame](const KernelPoint& a, const KernelPoint& b) {
+            return before(frame, a, b);
+        });
+        const auto v0 = static_cast<VertexId>(lo);
+        const EdgeId a = mesh_.make_edge(slots, v0, v0 + 1);
+        if (n == 2) return {a, EdgeMesh::sym(a)};
+        const EdgeId b = mesh_.make_edge(slots, v0 + 1, v0 + 2);
+        mesh_.splice(EdgeMesh::sym(a), b);
+        const int o = orient(v0, v0 + 1, v0 + 2);
+        if (o > 0) {
+            mesh_.connect(slots, b, a);
+            return {a, EdgeMesh::sym(b)};
+        }
+        if (o < 0) {
+            const EdgeId c = mesh_.connect(slots, b, a);
+            return {EdgeMesh::sym(c), c};
+        }
+        return {a, EdgeMesh::sym(b)};
+    }
+
+    /// Re-expresses the hull handles in another frame by walking the hull once.
+    [[nodiscard]] Hull rehull(Hull hull, int frame) const noexcept
+    {
+        const EdgeId start = hull.left;
+        EdgeId lo_edge = start;
+        EdgeId hi_edge = mesh_.oprev[start];
+        VertexId lo_v = mesh_.org[start];
+        VertexId hi_v = lo_v;
+        for (EdgeId e = mesh_.onext[start ^ 1u]; e != start; e = mesh_.onext[e ^ 1u]) {
+            const VertexId v = mesh_.org[e];
+            if (before(frame, pts_[v], pts_[lo_v])) {
+                lo_v = v;
+                lo_edge = e;
+            }
+            if (before(frame, pts_[hi_v], pts_[v])) {
+                hi_v = v;
+                hi_edge = mesh_.oprev[e];
+            }
+        }
+        return {lo_edge, hi_edge};
+    }
+
+    [[nodiscard]] bool valid(EdgeId e, EdgeId basel) const noexcept
+    {
+        return rightof(mesh_.dest(e), basel);
+    }
+
+    Hull merge(Hull left, Hull right, EdgeSlots& slots)
+    {
+        EdgeMesh& m = mesh_;
+        EdgeId ldo = left.left;
+        EdgeId ldi = left.right;
+        EdgeId rdi = right.left;
+        EdgeId rdo = right.right;
+        // Lower common tangent.
+        for (;;) {
+            if (leftof(m.org[rdi], ldi)) {
+                ldi = m.lnext(ldi);
+            } else if (rightof(m.org[ldi], rdi)) {
+                rdi = m.rprev(rdi);
+            } else {
+                break;
+            }
+        }
+        EdgeId basel = m.connect(slots, EdgeMesh::sym(rdi), ldi);
+        if (m.org[ldi] == m.org[ldo]) ldo = EdgeMesh::sym(basel);
+        if (m.org[rdi] == m.org[rdo]) rdo = basel;
+        // Zip upwards.
+        for (;;) {
+            EdgeId lcand = m.onext[EdgeMesh::sym(basel)];
+            if (valid(lcand, basel)) {
+                while (incircle(m.dest(basel), m.org[basel], m.dest(lcand),
+                                m.dest(m.onext[lcand]))) {
+                    const EdgeId t = m.onext[lcand];
+                    m.delete_edge(slots, lcand);
+                    lcand = t;
+                }
+            }
+            EdgeId rcand = m.oprev[basel];
+            if (valid(rcand, basel)) {
+                while (incircle(m.dest(basel), m.org[basel], m.dest(rcand),
+                                m.dest(m.oprev[rcand]))) {
+                    const EdgeId t = m.oprev[rcand];
+                    m.delete_edge(slots, rcand);
+                    rcand = t;
+                }
+            }
+            const bool lvalid = valid(lcand, basel);
+            const bool rvalid = valid(rcand, basel);
+            if (!lvalid && !rvalid) break;
+            if (!lvalid ||
+                (rvalid && incircle(m.dest(lcand), m.org[lcand], m.org[rcand], m.dest(rcand)))) {
+                basel = m.connect(slots, rcand, EdgeMesh::sym(basel));
+            } else {
+                basel = m.connect(slots, EdgeMesh::sym(basel), EdgeMesh::sym(lcand));
+            }
+        }
+        return {ldo, rdo};
+    }
+
+    KernelPoint* pts_;
+    EdgeMesh& mesh_;
+    const DelaunayDcOptions& options_;
+    const Progress& progress_;
+    std::size_t total_;
+    std::size_t progress_unit_;
+    std::atomic<std::size_t> done_{0};
+};
+
+}  // namespace
+
+void delaunay_divide_and_conquer(std::vector<KernelPoint>& points, EdgeMesh& mesh, EdgeSlots& slots,
+                                 const DelaunayDcOptions& options, const Progress& progress)
+{
+    const std::size_t n = points.size();
+    mesh.resize_slots(3 * n + 16);
+    slots = EdgeSlots{0, static_cast<EdgeId>(3 * n), {}};
+    if (n >= 2) {
+        Builder builder(points, mesh, options, progress);
+        builder.build(0, n, 0, 0, slots, n + 1);
+    }
+    slots.end = static_cast<EdgeId>(mesh.slot_count());
+    mesh.points.resize(n);
+    for (std::size_t i = 0; i < n; ++i) mesh.points[i] = {points[i].x, points[i].y};
+}
+
+}  // namespace dtm::detail

@@ -1,0 +1,36 @@
+// SPDX-License-Identifier: MIT
+/// @file
+/// @brief Delaunay triangulation by divide and conquer with alternating cuts (kernel of dtm).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "algo/detail/edge_mesh.hpp"
+#include "dtm/core/progress.hpp"
+
+namespace dtm::detail {
+
+/// A point of the kernel: position and the caller's index.
+struct KernelPoint {
+    double x;
+    double y;
+    std::uint32_t id;
+};
+
+struct DelaunayDcOptions {
+    /// Subtrees larger than this are built as parallel tasks (tiles); 0 = everything sequential.
+    /// The triangulation never depends on it: only where the work runs does.
+    std::size_t parallel_cutoff = 0;
+};
+
+/// Delaunay triangulation of @p points (pairwise distinct in xy, at least 2) into @p mesh.
+/// Reorders @p points (the final order is the kernel vertex numbering: vertex v of the mesh is
+/// points[v]) and fills mesh.points. On return @p slots describes the free edge slots.
+/// Collinear input gives a chain of edges and no triangle.
+/// @throws Cancelled when @p progress asks to stop.
+void delaunay_divide_and_conquer(std::vector<KernelPoint>& points, EdgeMesh& mesh, EdgeSlots& slots,
+                                 const DelaunayDcOptions& options, const Progress& progress);
+
+}  // namespace dtm::detail

@@ -1,0 +1,188 @@
+// SPDX-License-Identifier: MIT
+//
+// Input merging: every input point (survey points first, then the vertices of hard breaklines,
+// soft breaklines, boundaries and holes, in that order) becomes one distinct TIN vertex.
+// Exact duplicates in x, y are found by sorting; with a snap distance D > 0, points closer than D
+// to an earlier kept point are merged into it (a uniform grid of cell D, scanned in input order,
+// so the result is deterministic). The kept position is the first point's; its z follows the
+// DuplicateRule over the points that carry a height (soft breakline vertices carry none).
+#include "algo/detail/input_merge.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <string>
+#include <unordered_map>
+
+#include "algo/detail/edge_mesh.hpp"
+#include "dtm/core/error.hpp"
+
+namespace dtm::detail {
+namespace {
+
+struct Combined {
+    std::vector<Point3> points;
+    std::vector<bool> z_known;
+    std::vector<InputSegment> segments;  // indices into points
+};
+
+std::string where(const Polyline& line, const char* what, std::size_t number)
+{
+    return line.source.empty() ? std::string(what) + " " + std::to_string(number + 1)
+                               : line.source;
+}
+
+void add_polylines(const std::vector<Polyline>& lines, std::uint8_t bits, bool ring,
+                   const char* what, Combined& c)
+{
+    for (std::size_t k = 0; k < lines.size(); ++k) {
+        const Polyline& line = lines[k];
+        std::size_t count = line.points.size();
+        const bool repeats_first = count > 1 && line.points.front().x == line.points.back().x &&
+                                   line.points.front().y == line.points.back().y;
+        if (repeats_first) --count;
+        const bool closed = line.closed || repeats_first;
+        if (ring && (!closed || count < 3)) {
+            throw InputError(where(line, what, k) + ": " + what +
+                             " must be a closed ring of at least 3 vertices");
+        }
+        const auto first = static_cast<VertexIndex>(c.points.size());
+        for (std::size_t i = 0; i < line.points.size(); ++i) {
+            const Point3& p = line.points[i];
+            if (!std::isfinite(p.x) || !std::isfinite(p.y) ||
+                (bits != constraint_soft && !std::isfinite(p.z))) {
+                throw InputError(where(line, what, k) + ": vertex " + std::to_string(i + 1) +
+                                 " has a coordinate that is not a finite number");
+            }
+            c.points.push_back(p);
+            c.z_known.push_back(bits != constraint_soft);
+        }
+        for (std::size_t i = 0; i + 1 < count; ++i) {
+            c.segments.push_back({first + static_cast<VertexIndex>(i),
+                                  first + static_cast<VertexIndex>(i + 1), bits});
+        }
+        if (closed && count > 2) {
+            c.segments.push_back({first + static_cast<VertexIndex>(count - 1), first, bits});
+        }
+    }
+}
+
+/// rep[i]: the combined index of the point i is merged into (rep[i] == i when kept).
+std::vector<std::size_t> find_representatives(const std::vector<Point3>& pts, double snap)
+{
+    const std::size_t n = pts.size();
+    std::vector<std::size_t> rep(n);
+    if (snap <= 0.0) {
+        std::vector<std::size_t> order(n);
+        std::iota(order.begin(), order.end(), std::size_t{0});
+        std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+            const Point3& p = pts[a];
+            const Point3& q = pts[b];
+            return p.x < q.x || (p.x == q.x && (p.y < q.y || (p.y == q.y && a < b)));
+        });
+        for (std::size_t k = 0; k < n; ++k) {
+            const std::size_t i = order[k];
+            const bool same = k > 0 && pts[order[k - 1]].x == pts[i].x &&
+                              pts[order[k - 1]].y == pts[i].y;
+            rep[i] = same ? rep[order[k - 1]] : i;
+        }
+        return rep;
+    }
+    struct CellHash {
+        std::size_t operator()(const std::pair<std::int64_t, std::int64_t>& c) const noexcept
+        {
+            return std::hash<std::int64_t>()(c.first * 0x9e3779b97f4a7c15LL ^ c.second);
+        }
+    };
+    std::unordered_map<std::pair<std::int64_t, std::int64_t>, std::vector<std::size_t>, CellHash>
+        grid;
+    const double snap2 = snap * snap;
+    for (std::size_t i = 0; i < n; ++i) {
+        const auto cx = static_cast<std::int64_t>(std::floor(pts[i].x / snap));
+        const auto cy = static_cast<std::int64_t>(std::floor(pts[i].y / snap));
+        std::size_t found = i;
+        for (std::int64_t dx = -1; dx <= 1; ++dx) {
+            for (std::int64_t dy = -1; dy <= 1; ++dy) {
+                const auto it = grid.find({cx + dx, cy + dy});
+                if (it == grid.end()) continue;
+                for (const std::size_t r : it->second) {
+                    const double ex = pts[r].x - pts[i].x;
+                    const double ey = pts[r].y - pts[i].y;
+                    if (ex * ex + ey * ey < snap2 && r < found) found = r;
+                }
+            }
+        }
+        rep[i] = found;
+        if (found == i) grid[{cx, cy}].push_back(i);
+    }
+    return rep;
+}
+
+double rule_z(DuplicateRule rule, double current, double z, std::size_t count)
+{
+    switch (rule) {
+        case DuplicateRule::first: return current;
+        case DuplicateRule::mean: return current + (z - current) / static_cast<double>(count);
+        case DuplicateRule::min: return std::min(current, z);
+        case DuplicateRule::max: return std::max(current, z);
+    }
+    return current;
+}
+
+}  // namespace
+
+MergedInput merge_input(const TerrainInput& input, const TriangulateOptions& options)
+{
+    Combined c;
+    for (std::size_t i = 0; i < input.points.size(); ++i) {
+        const Point3& p = input.points[i];
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
+            throw InputError("point " + std::to_string(i + 1) +
+                             " has a coordinate that is not a finite number");
+        }
+    }
+    c.points = input.points;
+    c.z_known.assign(c.points.size(), true);
+    add_polylines(input.breaklines, constraint_breakline, false, "breakline", c);
+    add_polylines(input.boundaries, constraint_boundary, true, "boundary", c);
+    add_polylines(input.holes, constraint_hole, true, "hole", c);
+    add_polylines(input.soft_breaklines, constraint_soft, false, "soft breakline", c);
+
+    MergedInput out;
+    out.points_in = c.points.size();
+    const std::vector<std::size_t> rep = find_representatives(c.points, options.snap_distance);
+    std::vector<VertexIndex> vertex_of(c.points.size(), no_vertex);
+    std::vector<std::size_t> z_count;
+    for (std::size_t i = 0; i < c.points.size(); ++i) {
+        if (rep[i] == i) {
+            vertex_of[i] = static_cast<VertexIndex>(out.vertices.size());
+            out.vertices.push_back(c.points[i]);
+            out.z_known.push_back(c.z_known[i]);
+            z_count.push_back(c.z_known[i] ? 1 : 0);
+            continue;
+        }
+        const VertexIndex v = vertex_of[rep[i]];
+        vertex_of[i] = v;
+        if (c.z_known[i]) {
+            Point3& kept = out.vertices[v];
+            ++z_count[v];
+            kept.z = out.z_known[v] ? rule_z(options.duplicates, kept.z, c.points[i].z, z_count[v])
+                                    : c.points[i].z;
+            out.z_known[v] = true;
+        }
+    }
+    for (std::size_t i = 0; i < c.points.size(); ++i) {
+        if (rep[i] != i) {
+            out.merges.push_back({rep[i], i, out.vertices[vertex_of[i]], c.points[i]});
+        }
+    }
+    out.input_to_vertex = std::move(vertex_of);
+    for (const InputSegment& s : c.segments) {
+        const VertexIndex a = out.input_to_vertex[s.a];
+        const VertexIndex b = out.input_to_vertex[s.b];
+        if (a != b) out.segments.push_back({a, b, s.bits});
+    }
+    return out;
+}
+
+}  // namespace dtm::detail

@@ -1,0 +1,80 @@
+// SPDX-License-Identifier: MIT
+/// @file
+/// @brief Editing a Delaunay edge mesh into a constrained Delaunay one: point insertion with
+/// Lawson flips, and segment (breakline) insertion by cavity retriangulation.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "algo/detail/edge_mesh.hpp"
+#include "dtm/core/point.hpp"
+
+namespace dtm::detail {
+
+/// Two constraints cross; where, and the height of each line there.
+struct Crossing {
+    Point2 at;
+    double z_first;   ///< height of the constraint already in the mesh
+    double z_second;  ///< height of the constraint being inserted
+    bool conflict;    ///< |z_first - z_second| > tolerance
+};
+
+/// Where a point lies relative to the mesh.
+struct Location {
+    enum class Kind { face, edge, vertex, outside } kind;
+    EdgeId e;  ///< face: p in the left face of e; edge: p on e; vertex: p == org(e)
+};
+
+class MeshEditor {
+public:
+    /// @param z heights per vertex, grown with every vertex added.
+    MeshEditor(EdgeMesh& mesh, EdgeSlots& slots, std::vector<double>& z, double z_tolerance);
+
+    /// Locate @p p starting the walk at @p hint (any live edge).
+    [[nodiscard]] Location locate(Point2 p, EdgeId hint);
+    /// Any live edge out of @p v (no_edge for an isolated vertex).
+    [[nodiscard]] EdgeId edge_of(VertexId v) const { return vertex_edge_[v]; }
+
+    /// Inserts a vertex at @p p with height @p z (returns the existing vertex at p if any).
+    /// @pre p is inside the triangulated hull.
+    VertexId insert_point(Point2 p, double z, EdgeId hint);
+
+    /// Makes the segment a-b a chain of constrained edges with the given ConstraintBits,
+    /// splitting it at vertices it passes through and at crossings with other constraints.
+    void insert_segment(VertexId a, VertexId b, std::uint8_t bits);
+
+    [[nodiscard]] const std::vector<Crossing>& crossings() const noexcept { return crossings_; }
+
+private:
+    struct Work {
+        VertexId a;
+        VertexId b;
+        std::uint8_t bits;
+        bool legalize;  ///< restore the Delaunay property of edge a-b instead of inserting it
+    };
+
+    [[nodiscard]] int orient(VertexId a, VertexId b, VertexId c) const;
+    [[nodiscard]] int orient_p(VertexId a, VertexId b, Point2 c) const;
+    [[nodiscard]] bool is_triangle(EdgeId e) const;
+    [[nodiscard]] EdgeId find_edge(VertexId a, VertexId b) const;
+    void ensure_slots(std::size_t count);
+    VertexId add_vertex(Point2 p, double z);
+    void delete_edge(EdgeId e);
+    void flip(EdgeId e);
+    void legalize(EdgeId e);
+    void insert_piece(const Work& work, std::vector<Work>& stack);
+    void cross_constraint(VertexId u, VertexId w, std::uint8_t bits, EdgeId f,
+                          std::vector<Work>& stack);
+    void fill_cavity(EdgeId base, std::vector<EdgeId>& edges);
+
+    EdgeMesh& mesh_;
+    EdgeSlots& slots_;
+    std::vector<double>& z_;
+    double z_tolerance_;
+    std::vector<EdgeId> vertex_edge_;
+    std::vector<Crossing> crossings_;
+    std::uint64_t rng_ = 0x9e3779b97f4a7c15ull;
+};
+
+}  // namespace dtm::detail

@@ -1,0 +1,181 @@
+// SPDX-License-Identifier: MIT
+//
+// Segment insertion into the edge mesh (see mesh_edit.cpp for the method and references): the
+// walk along the segment, the cavity retriangulation, and crossings of two constraints.
+#include <algorithm>
+#include <cmath>
+
+#include "algo/detail/mesh_edit.hpp"
+#include "dtm/core/error.hpp"
+#include "dtm/geom/predicates.hpp"
+
+namespace dtm::detail {
+namespace {
+
+/// Collinear q lies on the ray from a through b (same direction), decided by comparisons only.
+bool same_direction(const Point2& a, const Point2& b, const Point2& q)
+{
+    const auto sign = [](double from, double to) { return (to > from) - (to < from); };
+    return sign(a.x, q.x) == sign(a.x, b.x) && sign(a.y, q.y) == sign(a.y, b.y);
+}
+
+}  // namespace
+
+void MeshEditor::insert_piece(const Work& work, std::vector<Work>& stack)
+{
+    EdgeMesh& m = mesh_;
+    const VertexId u = work.a;
+    const VertexId w = work.b;
+    const auto side = [&](VertexId v) { return orient(u, w, v); };
+
+    // 1. Find the edge along u->w, or the triangle at u that the segment enters.
+    const EdgeId start = vertex_edge_[u];
+    EdgeId e = start;
+    EdgeId sector = no_edge;
+    int side_e = side(m.dest(e));
+    do {
+        const VertexId p = m.dest(e);
+        if (side_e == 0 && same_direction(m.p(u), m.p(w), m.p(p))) {
+            m.constrained[e >> 1] |= work.bits;
+            stack.push_back({p, w, work.bits, false});
+            return;
+        }
+        const EdgeId next = m.onext[e];
+        const int side_next = side(m.dest(next));
+        if (side_e < 0 && side_next > 0 && is_triangle(e)) {
+            sector = e;
+            break;
+        }
+        e = next;
+        side_e = side_next;
+    } while (e != start);
+    if (sector == no_edge) throw Error("triangulation: breakline leaves the triangulated hull");
+
+    // 2. Walk through the crossed triangles, collecting crossed edges and the cavity boundary.
+    std::vector<EdgeId> crossed;
+    std::vector<EdgeId> right_chain{sector};                         // u -> ... -> end
+    std::vector<EdgeId> left_chain{m.lnext(m.lnext(sector))};        // reversed: ... -> u
+    EdgeId f = m.lnext(sector);  // from the right side to the left side of u->w
+    VertexId end = no_edge;
+    for (;;) {
+        if (m.is_constrained(f)) {
+            cross_constraint(u, w, work.bits, f, stack);
+            return;
+        }
+        crossed.push_back(f);
+        const EdgeId g = m.oprev[f];  // p -> v, v the apex beyond f
+        const VertexId v = m.dest(g);
+        const int s = v == w ? 0 : side(v);
+        if (s == 0) {
+            right_chain.push_back(g);
+            left_chain.push_back(m.lnext(g));
+            end = v;
+            break;
+        }
+        if (s < 0) {
+            right_chain.push_back(g);
+            f = m.lnext(g);
+        } else {
+            left_chain.push_back(m.lnext(g));
+            f = g;
+        }
+    }
+    std::reverse(left_chain.begin(), left_chain.end());
+
+    // 3. Replace the crossed edges by the segment and retriangulate both sides.
+    for (const EdgeId c : crossed) delete_edge(c);
+    ensure_slots(crossed.size() + 4);
+    const EdgeId segment = m.connect(slots_, left_chain.back(), left_chain.front());
+    m.constrained[segment >> 1] = work.bits;
+    vertex_edge_[u] = segment;
+    fill_cavity(segment, left_chain);
+    fill_cavity(EdgeMesh::sym(segment), right_chain);
+    if (end != w) stack.push_back({end, w, work.bits, false});
+}
+
+void MeshEditor::fill_cavity(EdgeId first_base, std::vector<EdgeId>& edges)
+{
+    // Explicit stack of sub-polygons: base edge plus a range of boundary edges in `edges`
+    // (boundary ccw from dest(base) back to org(base), polygon on the left of each).
+    struct Piece {
+        EdgeId base;
+        std::size_t lo;
+        std::size_t hi;
+    };
+    EdgeMesh& m = mesh_;
+    std::vector<Piece> pieces{{first_base, 0, edges.size()}};
+    while (!pieces.empty()) {
+        const Piece piece = pieces.back();
+        pieces.pop_back();
+        if (piece.hi - piece.lo < 3) continue;  // already a triangle
+        const VertexId u = m.org[piece.base];
+        const VertexId w = m.dest(piece.base);
+        std::size_t best = piece.lo + 1;
+        for (std::size_t j = piece.lo + 2; j < piece.hi; ++j) {
+            const VertexId c = m.org[edges[best]];
+            const VertexId q = m.org[edges[j]];
+            if (geom::incircle(m.p(u), m.p(w), m.p(c), m.p(q)) > 0) best = j;
+        }
+        EdgeId into_c = edges[best - 1];
+        if (best > piece.lo + 1) {
+            into_c = m.connect(slots_, piece.base, edges[best]);
+            pieces.push_back({EdgeMesh::sym(into_c), piece.lo, best});
+        }
+        if (best < piece.hi - 1) {
+            const EdgeId c_to_u = m.connect(slots_, into_c, piece.base);
+            pieces.push_back({EdgeMesh::sym(c_to_u), best, piece.hi});
+        }
+    }
+}
+
+void MeshEditor::cross_constraint(VertexId u, VertexId w, std::uint8_t bits, EdgeId f,
+                                  std::vector<Work>& stack)
+{
+    EdgeMesh& m = mesh_;
+    const VertexId p = m.org[f];
+    const VertexId r = m.dest(f);
+    const std::uint8_t f_bits = m.constrained[f >> 1];
+    // Intersection of u-w and p-r, in coordinates relative to u (exact differences for nearby
+    // points), parameters t along u->w and s along p->r.
+    const Point2 pu = m.p(u);
+    const double wx = m.p(w).x - pu.x, wy = m.p(w).y - pu.y;
+    const double px = m.p(p).x - pu.x, py = m.p(p).y - pu.y;
+    const double rx = m.p(r).x - m.p(p).x, ry = m.p(r).y - m.p(p).y;
+    const double denom = wx * ry - wy * rx;
+    double t = (px * ry - py * rx) / denom;
+    double s = (px * wy - py * wx) / denom;
+    t = std::clamp(t, 0.0, 1.0);
+    s = std::clamp(s, 0.0, 1.0);
+    const Point2 at{pu.x + t * wx, pu.y + t * wy};
+    const double z_new = z_[u] + t * (z_[w] - z_[u]);
+    const double z_old = z_[p] + s * (z_[r] - z_[p]);
+
+    VertexId x;
+    if (at == m.p(p)) {
+        x = p;
+    } else if (at == m.p(r)) {
+        x = r;
+    } else {
+        m.constrained[f >> 1] = 0;  // the old constraint is re-inserted through x below
+        // A soft (2-D) line takes its height from the hard one it crosses.
+        const double z_x = bits == constraint_soft ? z_old
+                           : f_bits == constraint_soft ? z_new
+                                                       : 0.5 * (z_new + z_old);
+        x = insert_point(at, z_x, f);
+        if (x != p && x != r) {
+            stack.push_back({p, r, 0, true});
+            stack.push_back({x, r, f_bits, false});
+            stack.push_back({p, x, f_bits, false});
+        } else {
+            m.constrained[f >> 1] = f_bits;
+        }
+    }
+    const double z_at_x = x == p || x == r ? z_[x] : z_old;
+    const bool heights_compared = bits != constraint_soft && f_bits != constraint_soft;
+    crossings_.push_back({m.p(x), z_at_x, z_new,
+                          heights_compared && std::abs(z_at_x - z_new) > z_tolerance_});
+    stack.push_back({x, w, bits, false});
+    stack.push_back({u, x, bits, false});
+}
+
+}  // namespace dtm::detail

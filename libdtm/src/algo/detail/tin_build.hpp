@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: MIT
+/// @file
+/// @brief From the kernel's edge mesh to a Tin: triangles with neighbour links, the domain
+/// (boundary, holes, hole seeds, maximum edge length) and the canonical order.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "algo/detail/edge_mesh.hpp"
+#include "dtm/algo/triangulate.hpp"
+
+namespace dtm::detail {
+
+/// A Tin under construction: per triangle, the ConstraintBits of the edge opposite v[i].
+struct TinDraft {
+    Tin tin;
+    std::vector<std::array<std::uint8_t, 3>> edge_bits;
+};
+
+/// Faces of @p mesh as triangles; vertex v of the mesh becomes kernel_to_vertex[v].
+[[nodiscard]] TinDraft mesh_to_tin(const EdgeMesh& mesh,
+                                   const std::vector<VertexIndex>& kernel_to_vertex,
+                                   std::vector<Point3> vertices);
+
+/// Removes the triangles outside the boundaries, inside holes (rings and seeds) and, with
+/// options.max_edge, the long border triangles. @return the number removed.
+std::size_t apply_domain(TinDraft& draft, bool has_boundary, const std::vector<Point2>& hole_seeds,
+                         double max_edge);
+
+/// Peels border triangles whose border edge is unconstrained and longer than @p max_edge,
+/// repeatedly from the outside inwards. @return the number removed.
+std::size_t trim_long_edges(TinDraft& draft, double max_edge);
+
+/// Drops the triangles with keep[t] == false and fixes the neighbour links.
+void compact(TinDraft& draft, const std::vector<bool>& keep);
+
+/// Canonical order (see Tin) and the constraint list.
+void finish_tin(TinDraft& draft);
+
+}  // namespace dtm::detail

@@ -1,0 +1,115 @@
+// SPDX-License-Identifier: MIT
+//
+// Finishing a TinDraft: trimming long border triangles and putting the Tin in canonical order
+// (triangles rotated to start at their smallest vertex and sorted; constraints sorted), so that
+// output files are byte-identical whatever the thread or tile count.
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "algo/detail/tin_build.hpp"
+
+namespace dtm::detail {
+namespace {
+
+ConstraintKind kind_of(std::uint8_t bits)
+{
+    if (bits & constraint_boundary) return ConstraintKind::boundary;
+    if (bits & constraint_hole) return ConstraintKind::hole;
+    if (bits & constraint_breakline) return ConstraintKind::breakline;
+    return ConstraintKind::soft_breakline;
+}
+
+/// Rotates a 3-array left by k (written out: std::rotate trips a GCC 12 false warning here).
+template <class T>
+void rotate3(std::array<T, 3>& a, int k)
+{
+    const std::array<T, 3> copy = a;
+    for (int i = 0; i < 3; ++i) a[i] = copy[(i + k) % 3];
+}
+
+}  // namespace
+
+std::size_t trim_long_edges(TinDraft& draft, double max_edge)
+{
+    const Tin& tin = draft.tin;
+    const std::size_t count = tin.triangles.size();
+    std::vector<bool> keep(count, true);
+    const double limit2 = max_edge * max_edge;
+    const auto removable = [&](TriangleIndex t) {
+        const Triangle& tri = tin.triangles[t];
+        for (int i = 0; i < 3; ++i) {
+            const TriangleIndex n = tri.n[i];
+            if ((n != no_triangle && keep[n]) || draft.edge_bits[t][i] != 0) continue;
+            const Point3& a = tin.vertices[tri.v[(i + 1) % 3]];
+            const Point3& b = tin.vertices[tri.v[(i + 2) % 3]];
+            const double dx = a.x - b.x;
+            const double dy = a.y - b.y;
+            if (dx * dx + dy * dy > limit2) return true;
+        }
+        return false;
+    };
+    std::vector<TriangleIndex> stack;
+    for (TriangleIndex t = 0; t < count; ++t) {
+        const auto& n = tin.triangles[t].n;
+        if (n[0] == no_triangle || n[1] == no_triangle || n[2] == no_triangle) stack.push_back(t);
+    }
+    std::size_t removed = 0;
+    while (!stack.empty()) {
+        const TriangleIndex t = stack.back();
+        stack.pop_back();
+        if (!keep[t] || !removable(t)) continue;
+        keep[t] = false;
+        ++removed;
+        for (const TriangleIndex n : tin.triangles[t].n) {
+            if (n != no_triangle && keep[n]) stack.push_back(n);
+        }
+    }
+    compact(draft, keep);
+    return removed;
+}
+
+void finish_tin(TinDraft& draft)
+{
+    std::vector<Triangle>& tris = draft.tin.triangles;
+    const std::size_t count = tris.size();
+    for (std::size_t t = 0; t < count; ++t) {
+        Triangle& tri = tris[t];
+        auto& bits = draft.edge_bits[t];
+        const int k = tri.v[1] < tri.v[0] ? (tri.v[2] < tri.v[1] ? 2 : 1) : (tri.v[2] < tri.v[0] ? 2 : 0);
+        rotate3(tri.v, k);
+        rotate3(tri.n, k);
+        rotate3(bits, k);
+    }
+    std::vector<TriangleIndex> order(count);
+    std::iota(order.begin(), order.end(), TriangleIndex{0});
+    std::sort(order.begin(), order.end(),
+              [&](TriangleIndex a, TriangleIndex b) { return tris[a].v < tris[b].v; });
+    std::vector<TriangleIndex> new_index(count);
+    for (std::size_t i = 0; i < count; ++i) new_index[order[i]] = static_cast<TriangleIndex>(i);
+    std::vector<Triangle> sorted(count);
+    std::vector<ConstrainedEdge>& constraints = draft.tin.constraints;
+    constraints.clear();
+    for (std::size_t i = 0; i < count; ++i) {
+        Triangle tri = tris[order[i]];
+        for (TriangleIndex& n : tri.n) n = n == no_triangle ? no_triangle : new_index[n];
+        const auto& bits = draft.edge_bits[order[i]];
+        for (int j = 0; j < 3; ++j) {
+            if (bits[j] == 0) continue;
+            const VertexIndex a = tri.v[(j + 1) % 3];
+            const VertexIndex b = tri.v[(j + 2) % 3];
+            // Each interior edge is seen from both sides: keep it once (from the side a < b).
+            if (a < b || tri.n[j] == no_triangle) {
+                constraints.push_back({std::min(a, b), std::max(a, b), kind_of(bits[j])});
+            }
+        }
+        sorted[i] = tri;
+    }
+    tris = std::move(sorted);
+    std::sort(constraints.begin(), constraints.end(), [](const auto& x, const auto& y) {
+        return x.a < y.a || (x.a == y.a && x.b < y.b);
+    });
+    draft.edge_bits.clear();
+}
+
+}  // namespace dtm::detail

@@ -1,0 +1,222 @@
+// SPDX-License-Identifier: MIT
+//
+// Constrained Delaunay triangulation of terrain input: the pipeline.
+//
+//   1. merge_input: distinct vertices (duplicates and snapped points merged, every merge kept)
+//      and the constraint segments of breaklines, boundaries, holes and soft breaklines;
+//   2. the Delaunay kernel: divide and conquer with alternating cuts; its top levels run as
+//      parallel tiles and the merges that join them are the exact seam stitches
+//      (detail/delaunay_dc.cpp);
+//   3. constraints inserted by cavity retriangulation, crossings split with interpolated heights
+//      (detail/mesh_edit.cpp, detail/mesh_segment.cpp);
+//   4. the domain: outside the boundary, holes and long border triangles removed; canonical
+//      order (detail/tin_build.cpp, detail/tin_finish.cpp).
+// Soft breakline vertices take their heights from the surface built without them (a first pass
+// of steps 2-3 without soft lines), then everything is built again with them.
+#include "dtm/algo/triangulate.hpp"
+
+#include <tbb/global_control.h>
+#include <tbb/task_arena.h>
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "algo/detail/delaunay_dc.hpp"
+#include "algo/detail/input_merge.hpp"
+#include "algo/detail/mesh_edit.hpp"
+#include "algo/detail/tin_build.hpp"
+#include "dtm/core/error.hpp"
+#include "dtm/geom/predicates.hpp"
+
+namespace dtm {
+namespace {
+
+using detail::EdgeId;
+using detail::MergedInput;
+
+double seconds_since(std::chrono::steady_clock::time_point start)
+{
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+/// The kernel's mesh over a subset of the merged vertices, with the constraints inserted.
+struct Kernel {
+    detail::EdgeMesh mesh;
+    detail::EdgeSlots slots;
+    std::vector<double> z;                     ///< per kernel vertex
+    std::vector<VertexIndex> vertex_of_kernel; ///< merged vertex (or new index for added ones)
+    std::vector<detail::Crossing> crossings;
+    double seconds_triangulate = 0.0;
+    double seconds_constrain = 0.0;
+};
+
+std::size_t parallel_cutoff(std::size_t n, const TriangulateOptions& options)
+{
+    const unsigned threads =
+        options.threads > 0 ? options.threads
+                            : static_cast<unsigned>(tbb::this_task_arena::max_concurrency());
+    if (options.tiles == 1 || (options.tiles == 0 && (threads <= 1 || n < 200'000))) return 0;
+    const std::size_t tiles = options.tiles > 0 ? options.tiles : 8 * static_cast<std::size_t>(threads);
+    return std::max<std::size_t>(n / tiles, 4);
+}
+
+Kernel build_kernel(const MergedInput& in, bool with_soft, const TriangulateOptions& options,
+                    const Progress& progress)
+{
+    Kernel k;
+    auto start = std::chrono::steady_clock::now();
+    std::vector<detail::KernelPoint> points;
+    points.reserve(in.vertices.size());
+    for (std::size_t i = 0; i < in.vertices.size(); ++i) {
+        if (!with_soft && !in.z_known[i]) continue;
+        points.push_back({in.vertices[i].x, in.vertices[i].y, static_cast<std::uint32_t>(i)});
+    }
+    detail::DelaunayDcOptions dc;
+    dc.parallel_cutoff = parallel_cutoff(points.size(), options);
+    detail::delaunay_divide_and_conquer(points, k.mesh, k.slots, dc, progress.sub(0.0, 0.7));
+    std::vector<detail::VertexId> kernel_of(in.vertices.size(), detail::no_edge);
+    k.vertex_of_kernel.resize(points.size());
+    k.z.resize(points.size());
+    for (std::size_t v = 0; v < points.size(); ++v) {
+        k.vertex_of_kernel[v] = points[v].id;
+        kernel_of[points[v].id] = static_cast<detail::VertexId>(v);
+        k.z[v] = in.vertices[points[v].id].z;
+    }
+    k.seconds_triangulate = seconds_since(start);
+
+    start = std::chrono::steady_clock::now();
+    detail::MeshEditor editor(k.mesh, k.slots, k.z, options.z_tolerance);
+    const Progress constrain = progress.sub(0.7, 1.0);
+    for (std::size_t s = 0; s < in.segments.size(); ++s) {
+        const detail::InputSegment& seg = in.segments[s];
+        if (!with_soft && seg.bits == detail::constraint_soft) continue;
+        editor.insert_segment(kernel_of[seg.a], kernel_of[seg.b], seg.bits);
+        if ((s & 1023u) == 0) {
+            constrain.report(static_cast<double>(s) / static_cast<double>(in.segments.size()),
+                             "inserting breaklines");
+        }
+    }
+    const auto first_added = static_cast<VertexIndex>(in.vertices.size());
+    for (std::size_t v = points.size(); v < k.mesh.points.size(); ++v) {
+        k.vertex_of_kernel.push_back(first_added + static_cast<VertexIndex>(v - points.size()));
+    }
+    k.crossings = editor.crossings();
+    k.seconds_constrain = seconds_since(start);
+    return k;
+}
+
+/// Heights of soft-breakline-only vertices, interpolated on the surface built without them.
+void interpolate_soft_heights(MergedInput& in, const TriangulateOptions& options,
+                              const Progress& progress)
+{
+    Kernel k = build_kernel(in, false, options, progress);
+    detail::MeshEditor editor(k.mesh, k.slots, k.z, options.z_tolerance);
+    EdgeId hint = editor.edge_of(0);
+    for (std::size_t i = 0; i < in.vertices.size(); ++i) {
+        if (in.z_known[i]) continue;
+        const Point2 p{in.vertices[i].x, in.vertices[i].y};
+        const detail::Location loc = editor.locate(p, hint);
+        double z = std::numeric_limits<double>::quiet_NaN();
+        if (loc.kind == detail::Location::Kind::outside) {
+            double best = std::numeric_limits<double>::infinity();
+            for (std::size_t v = 0; v < k.mesh.points.size(); ++v) {
+                const double dx = k.mesh.points[v].x - p.x;
+                const double dy = k.mesh.points[v].y - p.y;
+                if (dx * dx + dy * dy < best) {
+                    best = dx * dx + dy * dy;
+                    z = k.z[v];
+                }
+            }
+        } else {
+            hint = loc.e;
+            const detail::VertexId a = k.mesh.org[loc.e];
+            const detail::VertexId b = k.mesh.dest(loc.e);
+            const detail::VertexId c = k.mesh.dest(k.mesh.lnext(loc.e));
+            const Point2 &pa = k.mesh.p(a), &pb = k.mesh.p(b), &pc = k.mesh.p(c);
+            const double det = (pb.x - pa.x) * (pc.y - pa.y) - (pb.y - pa.y) * (pc.x - pa.x);
+            const double wb = ((p.x - pa.x) * (pc.y - pa.y) - (p.y - pa.y) * (pc.x - pa.x)) / det;
+            const double wc = ((pb.x - pa.x) * (p.y - pa.y) - (pb.y - pa.y) * (p.x - pa.x)) / det;
+            z = loc.kind == detail::Location::Kind::vertex
+                    ? k.z[a]
+                    : k.z[a] + wb * (k.z[b] - k.z[a]) + wc * (k.z[c] - k.z[a]);
+        }
+        in.vertices[i].z = z;
+    }
+    for (std::size_t i = 0; i < in.vertices.size(); ++i) in.z_known[i] = true;
+}
+
+void check_not_degenerate(const MergedInput& in)
+{
+    const std::size_t n = in.vertices.size();
+    if (n < 3) {
+        throw InputError("triangulation needs at least 3 distinct points; the input has " +
+                         std::to_string(n));
+    }
+    for (std::size_t i = 2; i < n; ++i) {
+        if (geom::orient2d(in.vertices[0], in.vertices[1], in.vertices[i]) != 0) return;
+    }
+    throw InputError("all " + std::to_string(n) +
+                     " distinct points are collinear: there is no surface to triangulate");
+}
+
+TriangulateResult run(const TerrainInput& input, const TriangulateOptions& options,
+                      const Progress& progress)
+{
+    TriangulateResult result;
+    auto start = std::chrono::steady_clock::now();
+    MergedInput merged = detail::merge_input(input, options);
+    check_not_degenerate(merged);
+    const double seconds_merge = seconds_since(start);
+    bool has_soft = false;
+    for (const bool known : merged.z_known) has_soft = has_soft || !known;
+    if (has_soft) interpolate_soft_heights(merged, options, progress.sub(0.0, 0.3));
+    Kernel k = build_kernel(merged, true, options, progress.sub(has_soft ? 0.3 : 0.0, 0.95));
+
+    start = std::chrono::steady_clock::now();
+    std::vector<Point3> vertices = merged.vertices;
+    for (std::size_t v = 0; v < k.mesh.points.size(); ++v) {
+        if (k.vertex_of_kernel[v] >= merged.vertices.size()) {  // added at crossings, in order
+            vertices.push_back({k.mesh.points[v].x, k.mesh.points[v].y, k.z[v]});
+        }
+    }
+    detail::TinDraft draft = detail::mesh_to_tin(k.mesh, k.vertex_of_kernel, std::move(vertices));
+    k.mesh = detail::EdgeMesh{};
+    result.stats.removed_triangles =
+        detail::apply_domain(draft, !input.boundaries.empty(), input.hole_seeds, options.max_edge);
+    detail::finish_tin(draft);
+    result.tin = std::move(draft.tin);
+    if (result.tin.triangles.empty()) {
+        throw InputError("no triangle is left inside the boundary and outside the holes");
+    }
+    progress.report(1.0, "triangulated");
+
+    result.stats.points_in = merged.points_in;
+    result.stats.duplicates_merged = merged.merges.size();
+    result.stats.intersections = 0;
+    for (const detail::Crossing& c : k.crossings) {
+        ++result.stats.intersections;
+        if (c.conflict) {
+            ++result.stats.conflicts;
+            result.conflicts.push_back({c.at, c.z_first, c.z_second});
+        }
+    }
+    result.stats.seconds_triangulate = seconds_merge + k.seconds_triangulate;
+    result.stats.seconds_constrain = k.seconds_constrain + seconds_since(start);
+    result.merges = std::move(merged.merges);
+    result.input_to_vertex = std::move(merged.input_to_vertex);
+    return result;
+}
+
+}  // namespace
+
+TriangulateResult triangulate(const TerrainInput& input, const TriangulateOptions& options,
+                              const Progress& progress)
+{
+    if (options.threads == 0) return run(input, options, progress);
+    tbb::task_arena arena(static_cast<int>(options.threads));
+    return arena.execute([&] { return run(input, options, progress); });
+}
+
+}  // namespace dtm

@@ -1,0 +1,203 @@
+// SPDX-License-Identifier: MIT
+//
+// Invariant checkers for a Tin. They use only the exact predicates, so a reported violation is a
+// real one, never round-off. verify_constraints follows each input segment through the TIN along
+// constrained edges, allowing vertices exactly on the segment and vertices added where
+// constraints cross (those are the only vertices of a TIN that no input point gave).
+#include "dtm/algo/validate.hpp"
+
+#include <algorithm>
+#include <map>
+#include <numeric>
+#include <set>
+#include <sstream>
+#include <unordered_map>
+#include <unordered_set>
+
+#include "dtm/geom/predicates.hpp"
+
+namespace dtm {
+namespace {
+
+constexpr std::size_t max_problems = 10;
+
+void add(CheckReport& report, const std::string& problem)
+{
+    if (report.problems.size() < max_problems) report.problems.push_back(problem);
+}
+
+std::uint64_t edge_key(VertexIndex a, VertexIndex b)
+{
+    if (a > b) std::swap(a, b);
+    return (static_cast<std::uint64_t>(a) << 32) | b;
+}
+
+struct XyHash {
+    std::size_t operator()(const std::pair<double, double>& p) const noexcept
+    {
+        return std::hash<double>()(p.first) * 31u ^ std::hash<double>()(p.second);
+    }
+};
+
+}  // namespace
+
+std::string CheckReport::text() const
+{
+    std::ostringstream out;
+    for (const std::string& p : problems) out << p << '\n';
+    return out.str();
+}
+
+CheckReport verify_topology(const Tin& tin)
+{
+    CheckReport report;
+    const std::size_t nv = tin.vertices.size();
+    const std::size_t nt = tin.triangles.size();
+    std::unordered_map<std::uint64_t, int> edge_use;
+    edge_use.reserve(3 * nt);
+    for (std::size_t t = 0; t < nt; ++t) {
+        const Triangle& tri = tin.triangles[t];
+        const std::string name = "triangle " + std::to_string(t);
+        if (tri.v[0] >= nv || tri.v[1] >= nv || tri.v[2] >= nv) {
+            add(report, name + ": vertex index out of range");
+            continue;
+        }
+        if (geom::orient2d(tin.vertex(tri.v[0]), tin.vertex(tri.v[1]), tin.vertex(tri.v[2])) <= 0) {
+            add(report, name + ": not counter-clockwise (or degenerate)");
+        }
+        for (int i = 0; i < 3; ++i) {
+            const VertexIndex a = tri.v[(i + 1) % 3];
+            const VertexIndex b = tri.v[(i + 2) % 3];
+            if (++edge_use[edge_key(a, b)] > 2) add(report, name + ": edge used by 3 triangles");
+            const TriangleIndex n = tri.n[i];
+            if (n == no_triangle) continue;
+            if (n >= nt) {
+                add(report, name + ": neighbour index out of range");
+                continue;
+            }
+            const Triangle& other = tin.triangles[n];
+            bool back = false;
+            for (int j = 0; j < 3; ++j) {
+                back = back || (other.n[j] == t && other.v[(j + 1) % 3] == b &&
+                                other.v[(j + 2) % 3] == a);
+            }
+            if (!back) add(report, name + ": neighbour " + std::to_string(n) + " does not link back");
+        }
+    }
+    for (const ConstrainedEdge& c : tin.constraints) {
+        if (!edge_use.count(edge_key(c.a, c.b))) {
+            add(report, "constraint " + std::to_string(c.a) + "-" + std::to_string(c.b) +
+                            " is not an edge of the TIN");
+        }
+    }
+    return report;
+}
+
+CheckReport verify_constrained_delaunay(const Tin& tin)
+{
+    CheckReport report;
+    std::unordered_set<std::uint64_t> constrained;
+    for (const ConstrainedEdge& c : tin.constraints) constrained.insert(edge_key(c.a, c.b));
+    for (std::size_t t = 0; t < tin.triangles.size(); ++t) {
+        const Triangle& tri = tin.triangles[t];
+        for (int i = 0; i < 3; ++i) {
+            const TriangleIndex n = tri.n[i];
+            if (n == no_triangle || n < t) continue;
+            const VertexIndex a = tri.v[(i + 1) % 3];
+            const VertexIndex b = tri.v[(i + 2) % 3];
+            if (constrained.count(edge_key(a, b))) continue;
+            const Triangle& other = tin.triangles[n];
+            VertexIndex d = other.v[0] + other.v[1] + other.v[2] - a - b;
+            if (geom::incircle(tin.vertex(tri.v[0]), tin.vertex(tri.v[1]), tin.vertex(tri.v[2]),
+                               tin.vertex(d)) > 0) {
+                add(report, "edge " + std::to_string(a) + "-" + std::to_string(b) +
+                                " is not constrained Delaunay (vertex " + std::to_string(d) +
+                                " inside the circumcircle of triangle " + std::to_string(t) + ")");
+            }
+        }
+    }
+    return report;
+}
+
+CheckReport verify_constraints(const Tin& tin, const TerrainInput& input)
+{
+    CheckReport report;
+    std::unordered_map<std::pair<double, double>, VertexIndex, XyHash> at;
+    for (VertexIndex v = 0; v < tin.vertices.size(); ++v) at[{tin.vertices[v].x, tin.vertices[v].y}] = v;
+    std::unordered_set<std::pair<double, double>, XyHash> given;
+    for (const Point3& p : input.points) given.insert({p.x, p.y});
+    std::unordered_map<VertexIndex, std::vector<VertexIndex>> adjacent;
+    for (const ConstrainedEdge& c : tin.constraints) {
+        adjacent[c.a].push_back(c.b);
+        adjacent[c.b].push_back(c.a);
+    }
+    const auto check_lines = [&](const std::vector<Polyline>& lines, const char* what) {
+        for (const Polyline& line : lines) for (const Point3& p : line.points) given.insert({p.x, p.y});
+        for (std::size_t k = 0; k < lines.size(); ++k) {
+            const auto& pts = lines[k].points;
+            const std::size_t count = pts.size();
+            for (std::size_t i = 0; i + 1 < count + (lines[k].closed ? 1 : 0); ++i) {
+                const Point3& pa = pts[i];
+                const Point3& pb = pts[(i + 1) % count];
+                const auto ia = at.find({pa.x, pa.y});
+                const auto ib = at.find({pb.x, pb.y});
+                const std::string name = std::string(what) + " " + std::to_string(k + 1) +
+                                         " segment " + std::to_string(i + 1);
+                if (ia == at.end() || ib == at.end()) {
+                    add(report, name + ": endpoint is not a TIN vertex");
+                    continue;
+                }
+                if (ia->second == ib->second) continue;
+                // Breadth-first search along constrained edges through allowed vertices.
+                std::set<VertexIndex> seen{ia->second};
+                std::vector<VertexIndex> frontier{ia->second};
+                bool found = false;
+                while (!frontier.empty() && !found) {
+                    const VertexIndex v = frontier.back();
+                    frontier.pop_back();
+                    for (const VertexIndex w : adjacent[v]) {
+                        if (w == ib->second) {
+                            found = true;
+                            break;
+                        }
+                        const Point3& q = tin.vertices[w];
+                        const bool on_segment = geom::orient2d(pa, pb, q) == 0 &&
+                                                std::min(pa.x, pb.x) <= q.x && q.x <= std::max(pa.x, pb.x) &&
+                                                std::min(pa.y, pb.y) <= q.y && q.y <= std::max(pa.y, pb.y);
+                        const bool added = !given.count({q.x, q.y});
+                        if ((on_segment || added) && seen.insert(w).second) frontier.push_back(w);
+                    }
+                }
+                if (!found) add(report, name + ": not present as constrained edges");
+            }
+        }
+    };
+    // All input vertices first (so "added" means added by the triangulator), then the chains.
+    for (const auto* lines : {&input.breaklines, &input.soft_breaklines, &input.boundaries, &input.holes}) {
+        for (const Polyline& line : *lines) for (const Point3& p : line.points) given.insert({p.x, p.y});
+    }
+    check_lines(input.breaklines, "breakline");
+    check_lines(input.soft_breaklines, "soft breakline");
+    check_lines(input.boundaries, "boundary");
+    check_lines(input.holes, "hole");
+    return report;
+}
+
+double tin_area(const Tin& tin)
+{
+    double sum = 0.0;
+    double compensation = 0.0;
+    for (const Triangle& t : tin.triangles) {
+        const Point3& a = tin.vertex(t.v[0]);
+        const Point3& b = tin.vertex(t.v[1]);
+        const Point3& c = tin.vertex(t.v[2]);
+        const double area = 0.5 * ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+        const double y = area - compensation;
+        const double s = sum + y;
+        compensation = (s - sum) - y;
+        sum = s;
+    }
+    return sum;
+}
+
+}  // namespace dtm
