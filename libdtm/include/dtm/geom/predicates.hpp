@@ -6,21 +6,106 @@
 /// floating-point filter decides almost every call; when it cannot, adaptive exact arithmetic
 /// (Shewchuk 1997, "Adaptive precision floating-point arithmetic and fast robust geometric
 /// predicates") takes over. 2.5-D: only x and y are read.
+///
+/// The filter (Shewchuk's stage A) is inline below so that the common case costs a handful of
+/// multiplications and one well-predicted branch; the adaptive stages B, C, D and an exact
+/// big-integer fallback for extreme magnitudes live out of line in src/geom/predicates.cpp.
+/// See docs/algorithms/predicates.md for the error bounds and why they hold.
 #pragma once
+
+#include <cmath>
 
 #include "dtm/core/point.hpp"
 
 namespace dtm::geom {
 
+namespace detail {
+
+/// Half an ulp of 1.0: the relative rounding error of one IEEE-754 double operation.
+inline constexpr double epsilon = 0x1p-53;
+/// Stage A bound of orient2d. Shewchuk's (3 + 16 eps) eps, with the eps^2 term raised to 24 to
+/// cover the one extra rounding of the underflow guard below.
+inline constexpr double orient_bound_a = (3.0 + 24.0 * epsilon) * epsilon;
+/// Stage A bound of incircle. Shewchuk's (10 + 96 eps) eps, eps^2 term raised for the guards.
+inline constexpr double incircle_bound_a = (10.0 + 128.0 * epsilon) * epsilon;
+/// Absolute terms added to the filter's magnitude sums so that products which underflow
+/// (absolute error up to 2^-1075 each, which a relative bound does not cover) can never let a
+/// wrong sign through. They only matter for coordinate differences below ~2^-200.
+inline constexpr double orient_underflow_guard = 0x1p-1000;
+inline constexpr double incircle_underflow_guard = 0x1p-500;
+
+/// Stages B-D of orient2d; `detsum` is |detleft| + |detright| from stage A. Exact.
+[[nodiscard]] int orient2d_adaptive(double ax, double ay, double bx, double by, double cx,
+                                    double cy, double detsum) noexcept;
+/// Stages B-D of incircle; `permanent` is the stage A magnitude bound. Exact.
+[[nodiscard]] int incircle_adaptive(double ax, double ay, double bx, double by, double cx,
+                                    double cy, double dx, double dy, double permanent) noexcept;
+
+}  // namespace detail
+
 /// Sign of the orientation determinant of (a, b, c):
 /// +1 counter-clockwise (c left of a->b), -1 clockwise, 0 collinear. Exact.
-[[nodiscard]] int orient2d(double ax, double ay, double bx, double by, double cx,
-                           double cy) noexcept;
+[[nodiscard]] inline int orient2d(double ax, double ay, double bx, double by, double cx,
+                                  double cy) noexcept
+{
+#if defined(__clang__)
+#pragma clang fp contract(off)
+#endif
+    const double detleft = (ax - cx) * (by - cy);
+    const double detright = (ay - cy) * (bx - cx);
+    const double det = detleft - detright;
+    const double detsum = std::abs(detleft) + std::abs(detright);
+    const double bound = detail::orient_bound_a * (detsum + detail::orient_underflow_guard);
+    // NaN/inf from overflow fail both tests and go to the exact path.
+    if (det > bound) {
+        return 1;
+    }
+    if (-det > bound) {
+        return -1;
+    }
+    return detail::orient2d_adaptive(ax, ay, bx, by, cx, cy, detsum);
+}
 
 /// +1 if d lies strictly inside the circle through a, b, c (given counter-clockwise),
 /// -1 if strictly outside, 0 if on it (sign flips for clockwise a, b, c). Exact.
-[[nodiscard]] int incircle(double ax, double ay, double bx, double by, double cx, double cy,
-                           double dx, double dy) noexcept;
+[[nodiscard]] inline int incircle(double ax, double ay, double bx, double by, double cx,
+                                  double cy, double dx, double dy) noexcept
+{
+#if defined(__clang__)
+#pragma clang fp contract(off)
+#endif
+    const double adx = ax - dx;
+    const double ady = ay - dy;
+    const double bdx = bx - dx;
+    const double bdy = by - dy;
+    const double cdx = cx - dx;
+    const double cdy = cy - dy;
+
+    const double bdxcdy = bdx * cdy;
+    const double cdxbdy = cdx * bdy;
+    const double alift = adx * adx + ady * ady;
+    const double cdxady = cdx * ady;
+    const double adxcdy = adx * cdy;
+    const double blift = bdx * bdx + bdy * bdy;
+    const double adxbdy = adx * bdy;
+    const double bdxady = bdx * ady;
+    const double clift = cdx * cdx + cdy * cdy;
+
+    const double det = alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) +
+                       clift * (adxbdy - bdxady);
+    constexpr double g = detail::incircle_underflow_guard;
+    const double permanent = (std::abs(bdxcdy) + std::abs(cdxbdy) + g) * (alift + g) +
+                             (std::abs(cdxady) + std::abs(adxcdy) + g) * (blift + g) +
+                             (std::abs(adxbdy) + std::abs(bdxady) + g) * (clift + g);
+    const double bound = detail::incircle_bound_a * permanent;
+    if (det > bound) {
+        return 1;
+    }
+    if (-det > bound) {
+        return -1;
+    }
+    return detail::incircle_adaptive(ax, ay, bx, by, cx, cy, dx, dy, permanent);
+}
 
 template <class P>
 [[nodiscard]] inline int orient2d(const P& a, const P& b, const P& c) noexcept

@@ -1,0 +1,158 @@
+// SPDX-License-Identifier: MIT
+/// @file
+/// @brief Floating-point expansion arithmetic (Shewchuk 1997, sections 2.2-2.8).
+///
+/// An expansion is an unevaluated sum of doubles, stored smallest magnitude first, whose
+/// components do not overlap; its value is exact and its sign is the sign of its last
+/// (largest) component. The building blocks are error-free transformations: two_sum and
+/// two_product return the rounded result and the exact rounding error.
+///
+/// These functions are only correct when the compiler evaluates every operation as written,
+/// in double precision and without contracting a*b+c into an FMA: the translation units
+/// that include this header are compiled with -ffp-contract=off (libdtm/CMakeLists.txt),
+/// and FMA is used only explicitly, when the target has it in hardware.
+/// Callers also guarantee that no intermediate overflows or underflows (see predicates.cpp).
+#pragma once
+
+#include <cmath>
+
+namespace dtm::geom::detail {
+
+/// x + y == a + b exactly, x = fl(a + b). Requires |a| >= |b| (or a == 0).
+inline void fast_two_sum(double a, double b, double& x, double& y) noexcept
+{
+    x = a + b;
+    const double b_virtual = x - a;
+    y = b - b_virtual;
+}
+
+/// x + y == a + b exactly, x = fl(a + b). Knuth's branch-free six-operation form.
+inline void two_sum(double a, double b, double& x, double& y) noexcept
+{
+    x = a + b;
+    const double b_virtual = x - a;
+    const double a_virtual = x - b_virtual;
+    const double b_round = b - b_virtual;
+    const double a_round = a - a_virtual;
+    y = a_round + b_round;
+}
+
+/// The rounding error of x = fl(a - b): a - b == x + result exactly.
+inline double two_diff_tail(double a, double b, double x) noexcept
+{
+    const double b_virtual = a - x;
+    const double a_virtual = x + b_virtual;
+    const double b_round = b_virtual - b;
+    const double a_round = a - a_virtual;
+    return a_round + b_round;
+}
+
+/// x + y == a - b exactly, x = fl(a - b).
+inline void two_diff(double a, double b, double& x, double& y) noexcept
+{
+    x = a - b;
+    y = two_diff_tail(a, b, x);
+}
+
+#if defined(__FMA__) || defined(__FP_FAST_FMA)
+inline constexpr bool has_hardware_fma = true;
+#else
+inline constexpr bool has_hardware_fma = false;
+#endif
+
+/// Dekker's split: a == hi + lo, each with at most 26 significant bits.
+inline void split(double a, double& hi, double& lo) noexcept
+{
+    constexpr double splitter = 134217729.0;  // 2^27 + 1
+    const double c = splitter * a;
+    const double a_big = c - a;
+    hi = c - a_big;
+    lo = a - hi;
+}
+
+/// x + y == a * b exactly, x = fl(a * b); b is given pre-split (Dekker, Veltkamp).
+inline void two_product_presplit(double a, double b, double bhi, double blo, double& x,
+                                 double& y) noexcept
+{
+    x = a * b;
+    if constexpr (has_hardware_fma) {
+        y = std::fma(a, b, -x);
+    } else {
+        double ahi = 0.0;
+        double alo = 0.0;
+        split(a, ahi, alo);
+        const double err1 = x - ahi * bhi;
+        const double err2 = err1 - alo * bhi;
+        const double err3 = err2 - ahi * blo;
+        y = alo * blo - err3;
+    }
+}
+
+/// x + y == a * b exactly, x = fl(a * b).
+inline void two_product(double a, double b, double& x, double& y) noexcept
+{
+    if constexpr (has_hardware_fma) {
+        x = a * b;
+        y = std::fma(a, b, -x);
+    } else {
+        double bhi = 0.0;
+        double blo = 0.0;
+        split(b, bhi, blo);
+        two_product_presplit(a, b, bhi, blo, x, y);
+    }
+}
+
+/// (a1 + a0) - (b1 + b0) as the four-component expansion x[0..3] (zeros kept).
+inline void two_two_diff(double a1, double a0, double b1, double b0, double* x) noexcept
+{
+    double i = 0.0;
+    double j = 0.0;
+    double k = 0.0;
+    double u = 0.0;
+    double v = 0.0;
+    // Two_One_Diff(a1, a0, b0) then Two_One_Diff(result, b1).
+    two_diff(a0, b0, i, x[0]);
+    two_sum(a1, i, j, k);
+    two_diff(k, b1, i, x[1]);
+    two_sum(j, i, u, v);
+    x[2] = v;
+    x[3] = u;
+}
+
+/// h = e * b. Returns the length of h (at most 2 * elen; zeros removed, at least 1).
+int scale_expansion(int elen, const double* e, double b, double* h) noexcept;
+
+/// h = e + f for strongly non-overlapping e, f. Returns the length (<= elen + flen, >= 1).
+int expansion_sum(int elen, const double* e, int flen, const double* f, double* h) noexcept;
+
+/// Approximate value of an expansion (sum of its components, largest last).
+inline double estimate(int n, const double* e) noexcept
+{
+    double q = e[0];
+    for (int i = 1; i < n; ++i) {
+        q += e[i];
+    }
+    return q;
+}
+
+/// Exact sign of an expansion with no overlapping components: the sign of its largest
+/// non-zero component.
+inline int expansion_sign(int n, const double* e) noexcept
+{
+    for (int i = n - 1; i >= 0; --i) {
+        if (e[i] > 0.0) {
+            return 1;
+        }
+        if (e[i] < 0.0) {
+            return -1;
+        }
+    }
+    return 0;
+}
+
+/// Exact incircle sign by full expansion arithmetic, tails included (stage D; in
+/// predicates_exact.cpp). Valid while the coordinates are in the expansion-safe range.
+[[nodiscard]] int incircle_exact(double ax, double ay, double bx, double by, double cx,
+                                 double cy, double dx, double dy) noexcept;
+
+}  // namespace dtm::geom::detail
