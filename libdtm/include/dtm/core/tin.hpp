@@ -47,8 +47,10 @@ struct ConstrainedEdge {
 /// A triangulated irregular network.
 /// Invariants (checked by verify_topology): every triangle is counter-clockwise with three distinct
 /// vertices; neighbour links are symmetric; every constrained edge is an edge of some triangle.
-/// Canonical order (what libdtm returns): triangles are rotated so v[0] is their smallest index and
-/// sorted by (v[0], v[1], v[2]); constraints sorted by (a, b).
+/// Canonical order (what libdtm returns): the order of vertices is the input order (first
+/// occurrence; vertices added where breaklines cross come last); the order of triangles is
+/// deterministic, a function of the input only (never of thread or tile counts), and spatially
+/// coherent; constraints are sorted by (a, b).
 struct Tin {
     std::vector<Point3> vertices;  ///< x, y in CRS units; z = elevation
     std::vector<Triangle> triangles;

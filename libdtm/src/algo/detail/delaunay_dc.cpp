@@ -163,9 +163,12 @@ private:
         return {lo_edge, hi_edge};
     }
 
+    /// Candidate e lies above basel. Repeated vertices are answered without the predicate, whose
+    /// filter cannot certify an exact zero and would take the slow exact path.
     [[nodiscard]] bool valid(EdgeId e, EdgeId basel) const noexcept
     {
-        return rightof(mesh_.dest(e), basel);
+        const VertexId d = mesh_.dest(e);
+        return d != mesh_.org[basel] && d != mesh_.dest(basel) && rightof(d, basel);
     }
 
     Hull merge(Hull left, Hull right, EdgeSlots& slots)
@@ -192,7 +195,8 @@ private:
         for (;;) {
             EdgeId lcand = m.onext[EdgeMesh::sym(basel)];
             if (valid(lcand, basel)) {
-                while (incircle(m.dest(basel), m.org[basel], m.dest(lcand),
+                while (m.dest(m.onext[lcand]) != m.org[basel] &&
+                       incircle(m.dest(basel), m.org[basel], m.dest(lcand),
                                 m.dest(m.onext[lcand]))) {
                     const EdgeId t = m.onext[lcand];
                     m.delete_edge(slots, lcand);
@@ -201,7 +205,8 @@ private:
             }
             EdgeId rcand = m.oprev[basel];
             if (valid(rcand, basel)) {
-                while (incircle(m.dest(basel), m.org[basel], m.dest(rcand),
+                while (m.dest(m.oprev[rcand]) != m.dest(basel) &&
+                       incircle(m.dest(basel), m.org[basel], m.dest(rcand),
                                 m.dest(m.oprev[rcand]))) {
                     const EdgeId t = m.oprev[rcand];
                     m.delete_edge(slots, rcand);

@@ -9,6 +9,8 @@
 #include "algo/detail/input_merge.hpp"
 
 #include <algorithm>
+#include <bit>
+#include <limits>
 #include <cmath>
 #include <numeric>
 #include <string>
@@ -67,27 +69,48 @@ void add_polylines(const std::vector<Polyline>& lines, std::uint8_t bits, bool r
     }
 }
 
+/// Exact duplicates by an open-addressing hash table on the coordinate bits (-0.0 counts as 0.0).
+std::vector<std::size_t> exact_representatives(const std::vector<Point3>& pts)
+{
+    const std::size_t n = pts.size();
+    std::vector<std::size_t> rep(n);
+    std::size_t capacity = 16;
+    while (capacity < 2 * n) capacity *= 2;
+    constexpr std::size_t empty = std::numeric_limits<std::size_t>::max();
+    std::vector<std::size_t> table(capacity, empty);
+    const auto bits = [](double v) {
+        return std::bit_cast<std::uint64_t>(v == 0.0 ? 0.0 : v);
+    };
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::uint64_t bx = bits(pts[i].x);
+        const std::uint64_t by = bits(pts[i].y);
+        std::uint64_t h = (bx * 0x9e3779b97f4a7c15ull) ^ (by + 0x7f4a7c159e3779b9ull + (bx << 6));
+        h ^= h >> 29;
+        h *= 0xbf58476d1ce4e5b9ull;
+        h ^= h >> 32;
+        std::size_t slot = static_cast<std::size_t>(h) & (capacity - 1);
+        rep[i] = i;
+        for (;; slot = (slot + 1) & (capacity - 1)) {
+            const std::size_t j = table[slot];
+            if (j == empty) {
+                table[slot] = i;
+                break;
+            }
+            if (pts[j].x == pts[i].x && pts[j].y == pts[i].y) {
+                rep[i] = j;
+                break;
+            }
+        }
+    }
+    return rep;
+}
+
 /// rep[i]: the combined index of the point i is merged into (rep[i] == i when kept).
 std::vector<std::size_t> find_representatives(const std::vector<Point3>& pts, double snap)
 {
     const std::size_t n = pts.size();
     std::vector<std::size_t> rep(n);
-    if (snap <= 0.0) {
-        std::vector<std::size_t> order(n);
-        std::iota(order.begin(), order.end(), std::size_t{0});
-        std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-            const Point3& p = pts[a];
-            const Point3& q = pts[b];
-            return p.x < q.x || (p.x == q.x && (p.y < q.y || (p.y == q.y && a < b)));
-        });
-        for (std::size_t k = 0; k < n; ++k) {
-            const std::size_t i = order[k];
-            const bool same = k > 0 && pts[order[k - 1]].x == pts[i].x &&
-                              pts[order[k - 1]].y == pts[i].y;
-            rep[i] = same ? rep[order[k - 1]] : i;
-        }
-        return rep;
-    }
+    if (snap <= 0.0) return exact_representatives(pts);
     struct CellHash {
         std::size_t operator()(const std::pair<std::int64_t, std::int64_t>& c) const noexcept
         {

@@ -55,29 +55,51 @@ void compact(TinDraft& draft, const std::vector<bool>& keep)
 TinDraft mesh_to_tin(const EdgeMesh& m, const std::vector<VertexIndex>& kernel_to_vertex,
                      std::vector<Point3> vertices)
 {
+    // Triangles are emitted in the canonical order: by their smallest kernel vertex, then by the
+    // other two. The kernel numbering comes from the divide and conquer's median splits, which
+    // depend on the input only (never on threads or tiles), and it is spatially coherent, so this
+    // order costs no global sort and keeps neighbours close in memory.
     TinDraft draft;
     draft.tin.vertices = std::move(vertices);
     const std::size_t directed = 2 * m.slot_count();
+    const std::size_t kernel_count = m.points.size();
+    std::vector<EdgeId> vertex_edge(kernel_count, no_edge);
+    for (EdgeId e = 0; e < directed; ++e) {
+        if (m.alive[e >> 1]) vertex_edge[m.org[e]] = e;
+    }
     std::vector<TriangleIndex> face(directed, no_triangle);
     std::vector<Triangle>& tris = draft.tin.triangles;
-    tris.reserve(directed / 3);
+    tris.reserve(2 * kernel_count);
     std::vector<EdgeId> first_edge;
-    first_edge.reserve(directed / 3);
-    for (EdgeId e = 0; e < directed; ++e) {
-        if (!m.alive[e >> 1] || face[e] != no_triangle) continue;
-        if (m.org[e] > m.dest(e) || m.org[e] > m.dest(m.lnext(e))) continue;  // start at min vertex
-        if (!left_face_is_triangle(m, e)) continue;
-        const auto t = static_cast<TriangleIndex>(tris.size());
-        const EdgeId e1 = m.lnext(e);
-        const EdgeId e2 = m.lnext(e1);
-        face[e] = face[e1] = face[e2] = t;
-        Triangle tri;
-        tri.v = {kernel_to_vertex[m.org[e]], kernel_to_vertex[m.org[e1]],
-                 kernel_to_vertex[m.org[e2]]};
-        tris.push_back(tri);
-        first_edge.push_back(e);
-        draft.edge_bits.push_back({m.constrained[e1 >> 1], m.constrained[e2 >> 1],
-                                   m.constrained[e >> 1]});
+    first_edge.reserve(2 * kernel_count);
+    std::vector<EdgeId> local;
+    for (VertexId v = 0; v < kernel_count; ++v) {
+        const EdgeId start = vertex_edge[v];
+        if (start == no_edge) continue;
+        local.clear();
+        EdgeId e = start;
+        do {
+            if (m.dest(e) > v && m.dest(m.lnext(e)) > v && left_face_is_triangle(m, e)) {
+                local.push_back(e);
+            }
+            e = m.onext[e];
+        } while (e != start);
+        std::sort(local.begin(), local.end(), [&](EdgeId a, EdgeId b) {
+            const VertexId a1 = m.dest(a), b1 = m.dest(b);
+            return a1 < b1 || (a1 == b1 && m.dest(m.lnext(a)) < m.dest(m.lnext(b)));
+        });
+        for (const EdgeId f : local) {
+            const auto t = static_cast<TriangleIndex>(tris.size());
+            const EdgeId f1 = m.lnext(f);
+            const EdgeId f2 = m.lnext(f1);
+            face[f] = face[f1] = face[f2] = t;
+            Triangle tri;
+            tri.v = {kernel_to_vertex[v], kernel_to_vertex[m.org[f1]], kernel_to_vertex[m.org[f2]]};
+            tris.push_back(tri);
+            first_edge.push_back(f);
+            draft.edge_bits.push_back({m.constrained[f1 >> 1], m.constrained[f2 >> 1],
+                                       m.constrained[f >> 1]});
+        }
     }
     for (std::size_t t = 0; t < tris.size(); ++t) {
         const EdgeId e = first_edge[t];

@@ -1,8 +1,7 @@
 // SPDX-License-Identifier: MIT
 //
-// Finishing a TinDraft: trimming long border triangles and putting the Tin in canonical order
-// (triangles rotated to start at their smallest vertex and sorted; constraints sorted), so that
-// output files are byte-identical whatever the thread or tile count.
+// Finishing a TinDraft: trimming long border triangles and listing the constraints in sorted
+// order, so that output files are byte-identical whatever the thread or tile count.
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -18,14 +17,6 @@ ConstraintKind kind_of(std::uint8_t bits)
     if (bits & constraint_hole) return ConstraintKind::hole;
     if (bits & constraint_breakline) return ConstraintKind::breakline;
     return ConstraintKind::soft_breakline;
-}
-
-/// Rotates a 3-array left by k (written out: std::rotate trips a GCC 12 false warning here).
-template <class T>
-void rotate3(std::array<T, 3>& a, int k)
-{
-    const std::array<T, 3> copy = a;
-    for (int i = 0; i < 3; ++i) a[i] = copy[(i + k) % 3];
 }
 
 }  // namespace
@@ -71,41 +62,23 @@ std::size_t trim_long_edges(TinDraft& draft, double max_edge)
 
 void finish_tin(TinDraft& draft)
 {
-    std::vector<Triangle>& tris = draft.tin.triangles;
-    const std::size_t count = tris.size();
-    for (std::size_t t = 0; t < count; ++t) {
-        Triangle& tri = tris[t];
-        auto& bits = draft.edge_bits[t];
-        const int k = tri.v[1] < tri.v[0] ? (tri.v[2] < tri.v[1] ? 2 : 1) : (tri.v[2] < tri.v[0] ? 2 : 0);
-        rotate3(tri.v, k);
-        rotate3(tri.n, k);
-        rotate3(bits, k);
-    }
-    std::vector<TriangleIndex> order(count);
-    std::iota(order.begin(), order.end(), TriangleIndex{0});
-    std::sort(order.begin(), order.end(),
-              [&](TriangleIndex a, TriangleIndex b) { return tris[a].v < tris[b].v; });
-    std::vector<TriangleIndex> new_index(count);
-    for (std::size_t i = 0; i < count; ++i) new_index[order[i]] = static_cast<TriangleIndex>(i);
-    std::vector<Triangle> sorted(count);
+    // Triangles are already in canonical order (mesh_to_tin); collect the constraints.
+    const std::vector<Triangle>& tris = draft.tin.triangles;
     std::vector<ConstrainedEdge>& constraints = draft.tin.constraints;
     constraints.clear();
-    for (std::size_t i = 0; i < count; ++i) {
-        Triangle tri = tris[order[i]];
-        for (TriangleIndex& n : tri.n) n = n == no_triangle ? no_triangle : new_index[n];
-        const auto& bits = draft.edge_bits[order[i]];
+    for (std::size_t t = 0; t < tris.size(); ++t) {
+        const Triangle& tri = tris[t];
+        const auto& bits = draft.edge_bits[t];
         for (int j = 0; j < 3; ++j) {
             if (bits[j] == 0) continue;
             const VertexIndex a = tri.v[(j + 1) % 3];
             const VertexIndex b = tri.v[(j + 2) % 3];
-            // Each interior edge is seen from both sides: keep it once (from the side a < b).
+            // An interior edge is seen from both sides: keep it from the side where a < b.
             if (a < b || tri.n[j] == no_triangle) {
                 constraints.push_back({std::min(a, b), std::max(a, b), kind_of(bits[j])});
             }
         }
-        sorted[i] = tri;
     }
-    tris = std::move(sorted);
     std::sort(constraints.begin(), constraints.end(), [](const auto& x, const auto& y) {
         return x.a < y.a || (x.a == y.a && x.b < y.b);
     });
