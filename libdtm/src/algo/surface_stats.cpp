@@ -88,4 +88,35 @@ SurfaceStats surface_stats(const Tin& tin) {
     return stats;
 }
 
+InputAccounting account_inputs(const TriangulateResult& result, std::size_t survey_point_count) {
+    const Tin& tin = result.tin;
+    std::vector<bool> in_triangle(tin.vertices.size(), false);
+    for (const Triangle& t : tin.triangles) {
+        for (const VertexIndex v : t.v) {
+            in_triangle[v] = true;
+        }
+    }
+    std::vector<bool> merged(result.input_to_vertex.size(), false);
+    for (const DuplicateMerge& m : result.merges) {
+        if (m.merged_input < merged.size()) {
+            merged[m.merged_input] = true;
+        }
+    }
+    InputAccounting accounting;
+    for (std::size_t i = 0; i < result.input_to_vertex.size(); ++i) {
+        PointFate& fate =
+            i < survey_point_count ? accounting.survey_points : accounting.line_vertices;
+        ++fate.total;
+        const VertexIndex v = result.input_to_vertex[i];
+        if (merged[i]) {
+            ++fate.merged;
+        } else if (v != no_vertex && v < in_triangle.size() && in_triangle[v]) {
+            ++fate.used;
+        } else {
+            ++fate.removed;
+        }
+    }
+    return accounting;
+}
+
 }  // namespace dtm

@@ -10,6 +10,9 @@
 
 #include "dtm/core/error.hpp"
 #include "dtm/io/atomic_file.hpp"
+#include "dtm/io/formats/mesh_2dm.hpp"
+#include "dtm/io/formats/ogr_tin.hpp"
+#include "dtm/io/formats/vtk_surface.hpp"
 #include "dtm/io/tin_file.hpp"
 
 namespace dtm::io {
@@ -26,6 +29,10 @@ struct TinWriterInfo {
 // The whole list, in one place. Add a row per format (its writer lives in src/io/formats/).
 constexpr std::array tin_writer_table{
     TinWriterInfo{"ply", "PLY TIN with constrained edges (dtm's own, lossless)", &write_tin_ply},
+    TinWriterInfo{"2dm", "SMS 2DM mesh (a QGIS mesh layer through MDAL)", &write_2dm},
+    TinWriterInfo{"vtp", "VTK XML PolyData: triangles, breaklines, elevation", &write_vtp},
+    TinWriterInfo{"gpkg", "GeoPackage: one PolygonZ feature per triangle", &write_ogr_tin},
+    TinWriterInfo{"shp", "ESRI Shapefile: one PolygonZ feature per triangle", &write_ogr_tin},
 };
 
 std::string lower_extension(const std::filesystem::path& path) {

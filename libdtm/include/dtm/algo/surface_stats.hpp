@@ -4,7 +4,9 @@
 #pragma once
 
 #include <cstddef>
+#include <vector>
 
+#include "dtm/algo/triangulate.hpp"
 #include "dtm/core/point.hpp"
 #include "dtm/core/tin.hpp"
 
@@ -26,5 +28,26 @@ struct SurfaceStats {
 /// Measures @p tin. Areas use compensated (Kahan-Neumaier) summation and coordinates taken
 /// relative to the first vertex, so large projected offsets (S-JTSK, UTM) cost no precision.
 [[nodiscard]] SurfaceStats surface_stats(const Tin& tin);
+
+/// What became of a group of input points (every one is counted exactly once).
+struct PointFate {
+    std::size_t total = 0;
+    std::size_t used = 0;     ///< became a vertex of some triangle
+    std::size_t merged = 0;   ///< merged into another input point (duplicate or snapped)
+    std::size_t removed = 0;  ///< its vertex lies outside the boundary, in a hole, or was trimmed
+};
+
+/// Where every input point of a triangulation went, split into survey points and line vertices
+/// (breakline, soft breakline, boundary and hole vertices), in TriangulateResult's input order.
+struct InputAccounting {
+    PointFate survey_points;
+    PointFate line_vertices;
+};
+
+/// Accounts for every entry of result.input_to_vertex. The first @p survey_point_count entries
+/// are survey points. A merged point counts as merged even if the point it merged into was
+/// later removed; a point that is not merged counts as used when some triangle has its vertex.
+[[nodiscard]] InputAccounting account_inputs(const TriangulateResult& result,
+                                             std::size_t survey_point_count);
 
 }  // namespace dtm

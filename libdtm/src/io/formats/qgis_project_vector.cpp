@@ -12,7 +12,7 @@ namespace {
 /// QGIS expression true on index contours.
 std::string index_filter(const QgisProject& project) {
     if (!project.index_field.empty()) {
-        return "\"" + project.index_field + "\" = 1";
+        return "\"" + project.index_field + "\"";  // true (or 1) on index contours
     }
     const std::string step = number(project.index_interval > 0.0 ? project.index_interval : 1.0);
     const std::string z = "\"" + project.elevation_field + "\"";

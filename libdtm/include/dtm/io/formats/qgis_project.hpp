@@ -26,7 +26,7 @@ struct QgisProject {
     std::filesystem::path contours;   ///< GeoPackage or shapefile (ogr provider)
     std::string contour_layer;        ///< layer inside a GeoPackage; empty for a shapefile
     std::string elevation_field = "elevation";
-    /// Field that is true (1) on index contours. Empty: index contours are recognised from
+    /// Boolean (or 0/1) field that is true on index contours (ContourWriter writes `index`). Empty: index contours are recognised from
     /// their elevation, a multiple of index_interval.
     std::string index_field;
     double index_interval = 5.0;
