@@ -40,9 +40,13 @@ struct Header {
 
 std::string read_whole_file(const fs::path& path) {
     std::FILE* file = std::fopen(path.c_str(), "rb");
-    if (file == nullptr)
+    if (file == nullptr) {
         throw InputError(path, 0, 0, "cannot open: " + std::string(std::strerror(errno)));
+    }
     std::string bytes;
+    std::error_code ec;
+    const auto size = fs::file_size(path, ec);
+    if (!ec) bytes.reserve(static_cast<std::size_t>(size));
     char buffer[1 << 16];
     std::size_t n = 0;
     while ((n = std::fread(buffer, 1, sizeof buffer, file)) > 0) bytes.append(buffer, n);
@@ -386,40 +390,49 @@ void read_ascii_body(BodyReader& reader, std::string_view body) {
 // ---- neighbours --------------------------------------------------------------------------------
 
 /// Sets Triangle::n from the faces. Directed edge i of triangle t runs v[i+1] -> v[i+2] (the edge
-/// opposite v[i]); its neighbour holds the reversed edge.
+/// opposite v[i]) and is numbered 3 t + i; its neighbour holds the reversed edge. The directed
+/// edges are grouped by origin vertex (compressed rows holding the target and the edge number), so
+/// both the duplicate check and the twin search scan short contiguous lists.
 void link_neighbours(Tin& tin, const fs::path& path) {
     const std::size_t n = tin.vertices.size();
     if (tin.triangles.size() > std::numeric_limits<std::uint32_t>::max() / 3) {
         throw InputError(path, 0, 0, "too many faces");
     }
-    std::vector<std::uint32_t> first(n + 1, 0);  // CSR: outgoing directed edges per origin vertex
+    struct Outgoing {
+        VertexIndex target;
+        std::uint32_t edge;
+    };
+    std::vector<std::uint32_t> first(n + 1, 0);
     for (const Triangle& t : tin.triangles) {
-        for (std::size_t i = 0; i < 3; ++i) ++first[t.v[(i + 1) % 3] + 1];
+        for (const VertexIndex v : t.v) ++first[v + 1];
     }
     for (std::size_t v = 0; v < n; ++v) first[v + 1] += first[v];
-    std::vector<std::uint32_t> edges(first[n]);  // 3 * triangle + i
+    std::vector<Outgoing> outgoing(first[n]);
     std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
     for (std::size_t t = 0; t < tin.triangles.size(); ++t) {
-        for (std::size_t i = 0; i < 3; ++i) {
-            edges[fill[tin.triangles[t].v[(i + 1) % 3]]++] = static_cast<std::uint32_t>(3 * t + i);
+        const auto& v = tin.triangles[t].v;
+        for (std::uint32_t i = 0; i < 3; ++i) {
+            outgoing[fill[v[(i + 1) % 3]]++] = {v[(i + 2) % 3],
+                                                static_cast<std::uint32_t>(3 * t + i)};
         }
     }
-    const auto target = [&](std::uint32_t e) { return tin.triangles[e / 3].v[(e % 3 + 2) % 3]; };
-    for (std::size_t t = 0; t < tin.triangles.size(); ++t) {
-        Triangle& tri = tin.triangles[t];
-        for (std::size_t i = 0; i < 3; ++i) {
-            const VertexIndex a = tri.v[(i + 1) % 3];
-            const VertexIndex b = tri.v[(i + 2) % 3];
-            std::size_t same = 0;
-            for (std::uint32_t k = first[a]; k < first[a + 1]; ++k) same += target(edges[k]) == b;
-            if (same > 1) {
-                throw InputError(path, 0, 0,
-                                 "edge " + std::to_string(a) + "-" + std::to_string(b) +
-                                     " is used twice in the same direction (faces "
-                                     "overlap or are not consistently oriented)");
+    for (VertexIndex a = 0; a < n; ++a) {
+        for (std::uint32_t k = first[a]; k < first[a + 1]; ++k) {
+            const VertexIndex b = outgoing[k].target;
+            for (std::uint32_t j = k + 1; j < first[a + 1]; ++j) {
+                if (outgoing[j].target == b) {
+                    throw InputError(path, 0, 0,
+                                     "edge " + std::to_string(a) + "-" + std::to_string(b) +
+                                         " is used twice in the same direction (faces "
+                                         "overlap or are not consistently oriented)");
+                }
             }
-            for (std::uint32_t k = first[b]; k < first[b + 1]; ++k) {
-                if (target(edges[k]) == a) tri.n[i] = edges[k] / 3;
+            for (std::uint32_t j = first[b]; j < first[b + 1]; ++j) {
+                if (outgoing[j].target == a) {
+                    tin.triangles[outgoing[k].edge / 3].n[outgoing[k].edge % 3] =
+                        outgoing[j].edge / 3;
+                    break;
+                }
             }
         }
     }

@@ -265,3 +265,13 @@ TEST(PlyReader, NotAPlyFileIsAnInputError) {
     write_file(dir / "points.ply", "1 2 3\n4 5 6\n");
     EXPECT_NE(error_of(dir / "points.ply").find("not a PLY file"), std::string::npos);
 }
+
+TEST(PlyReader, FacesSharingAnEdgeInTheSameDirectionAreAnInputError) {
+    const ScratchDir dir;
+    // Faces 0-1-2 and 0-1-3 both run 0 -> 1: one of them is clockwise or they overlap.
+    write_file(dir / "t.ply",
+               "ply\nformat ascii 1.0\nelement vertex 4\nproperty double x\nproperty double y\n"
+               "property double z\nelement face 2\nproperty list uchar int vertex_indices\n"
+               "end_header\n0 0 0\n1 0 0\n0 1 0\n1 -1 0\n3 0 1 2\n3 0 1 3\n");
+    EXPECT_NE(error_of(dir / "t.ply").find("same direction"), std::string::npos);
+}
