@@ -173,6 +173,56 @@ TEST(Orient2d, ExtremeMagnitudesAreExact)
     EXPECT_EQ(orient2d(-max, -max, max, max, tiny, 0.0), -1);
 }
 
+TEST(Orient2d, MixedMagnitudesAgreeWithBigIntegerEvaluation)
+{
+    // Coordinates of very different sizes make the differences round, so near-degenerate
+    // cases need the tails' products (stage D). First a case found that way.
+    EXPECT_EQ(orient2d(0x1p+17, 0x1.8p+18, 0x1p+17, -0x1p+16, 0x1.0000000000002p+235,
+                       -0x1.4p+327),
+              orient2d_bigint(0x1p+17, 0x1.8p+18, 0x1p+17, -0x1p+16, 0x1.0000000000002p+235,
+                              -0x1.4p+327));
+    std::mt19937_64 rng(11);
+    std::uniform_int_distribution<int> eighths(-8, 8);
+    std::uniform_int_distribution<int> mag(-150, 240);
+    std::uniform_int_distribution<int> ulps(-2, 2);
+    for (int k = 0; k < 100000; ++k) {
+        const int common = mag(rng);
+        double v[6];
+        for (double& x : v) {
+            x = std::ldexp(eighths(rng) / 8.0, k % 3 == 0 ? common : mag(rng));
+        }
+        for (int s = ulps(rng); s != 0; s += s > 0 ? -1 : 1) {
+            v[4] = s > 0 ? up(v[4]) : down(v[4]);
+        }
+        ASSERT_EQ(orient2d(v[0], v[1], v[2], v[3], v[4], v[5]),
+                  orient2d_bigint(v[0], v[1], v[2], v[3], v[4], v[5]))
+            << std::hexfloat << v[0] << ' ' << v[1] << ' ' << v[2] << ' ' << v[3] << ' '
+            << v[4] << ' ' << v[5];
+    }
+}
+
+TEST(Incircle, MixedMagnitudesAgreeWithBigIntegerEvaluation)
+{
+    std::mt19937_64 rng(12);
+    std::uniform_int_distribution<int> eighths(-8, 8);
+    std::uniform_int_distribution<int> mag(-60, 120);
+    std::uniform_int_distribution<int> ulps(-2, 2);
+    for (int k = 0; k < 50000; ++k) {
+        const int common = mag(rng);
+        double v[8];
+        for (double& x : v) {
+            x = std::ldexp(eighths(rng) / 8.0, k % 3 == 0 ? common : mag(rng));
+        }
+        for (int s = ulps(rng); s != 0; s += s > 0 ? -1 : 1) {
+            v[6] = s > 0 ? up(v[6]) : down(v[6]);
+        }
+        ASSERT_EQ(incircle(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]),
+                  incircle_bigint(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]))
+            << std::hexfloat << v[0] << ' ' << v[1] << ' ' << v[2] << ' ' << v[3] << ' '
+            << v[4] << ' ' << v[5] << ' ' << v[6] << ' ' << v[7];
+    }
+}
+
 TEST(Incircle, UnitCircleCases)
 {
     EXPECT_EQ(incircle(1.0, 0.0, 0.0, 1.0, -1.0, 0.0, 0.0, 0.0), 1);
