@@ -1,13 +1,81 @@
 // SPDX-License-Identifier: MIT
-// Placeholder until `dtm contour` is implemented (see the issues); it fails clearly instead of pretending.
+// dtm contour INPUTS... -o OUT --interval I [--base B] [--levels L1,L2,...] [--index-every K]
+//             [--smooth N]
+// Contour lines traced exactly on the TIN (parse -> options -> library -> report).
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
 #include "command.hpp"
+#include "dtm/algo/contour.hpp"
+#include "dtm/algo/triangulate.hpp"
 #include "dtm/core/error.hpp"
+#include "dtm/io/contour_writer.hpp"
+#include "dtm/io/inputs.hpp"
+#include "input_args.hpp"
+#include "terminal_progress.hpp"
+#include "tin_args.hpp"
 
 namespace dtm::cli {
+namespace {
+
+struct ContourArgs {
+    InputArgs input;
+    TriangulateOptions tin;
+    std::string output;
+    ContourOptions contour;
+    bool quiet = false;
+};
+
+int run_contour(ContourArgs args)
+{
+    if (args.contour.fixed_levels.empty() && !(args.contour.interval > 0.0)) {
+        throw UsageError("contour: give --interval or --levels");
+    }
+    const Progress progress = terminal_progress("contour", args.quiet);
+    io::LoadedInputs inputs = io::load_inputs(to_load_options(args.input), progress.sub(0.0, 0.2));
+    const Tin tin = inputs.tin ? std::move(*inputs.tin)
+                               : triangulate(inputs.terrain, args.tin, progress.sub(0.2, 0.6)).tin;
+    args.contour.threads = args.tin.threads;
+    io::ContourWriter writer(args.output, {.crs_wkt = inputs.crs_wkt});
+    contour(tin, args.contour, writer, progress.sub(0.6, 1.0));
+    writer.commit();
+    std::cout << "contour: " << writer.feature_count() << " lines -> " << args.output << '\n';
+    return 0;
+}
+
+}  // namespace
+
 Command contour_command()
 {
-    return {"contour", "(not implemented yet)", [](CLI::App&) {
-                return []() -> int { throw dtm::Error("dtm contour is not implemented yet"); };
+    return {"contour", "Contour lines traced exactly on the TIN (GeoPackage, shapefile, DXF, GeoJSON)",
+            [](CLI::App& app) {
+                auto args = std::make_shared<ContourArgs>();
+                args->contour.interval = 0.0;
+                add_input_options(app, args->input);
+                add_tin_options(app, args->tin);
+                app.add_option("-o,--output", args->output,
+                               "Contour file: .gpkg (default format), .shp, .dxf, .geojson")
+                    ->required();
+                app.add_option("--interval", args->contour.interval,
+                               "Distance between levels")
+                    ->check(CLI::PositiveNumber);
+                app.add_option("--base", args->contour.base,
+                               "Levels are base + k * interval (default 0)");
+                app.add_option("--levels", args->contour.fixed_levels,
+                               "Explicit levels L1,L2,... (instead of --interval)")
+                    ->delimiter(',');
+                app.add_option("--index-every", args->contour.index_every,
+                               "Every K-th level is an index contour (default 5; 0: none)");
+                app.add_option("--smooth", args->contour.smooth,
+                               "Corner-cutting passes that keep lines inside their triangles "
+                               "and never crossing (default 0)");
+                app.add_option("--max-levels", args->contour.max_levels,
+                               "Refuse more levels than this (default 100000)");
+                app.add_flag("-q,--quiet", args->quiet, "No progress on stderr");
+                return [args]() { return run_contour(*args); };
             }};
 }
+
 }  // namespace dtm::cli

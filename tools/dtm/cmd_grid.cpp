@@ -1,13 +1,145 @@
 // SPDX-License-Identifier: MIT
-// Placeholder until `dtm grid` is implemented (see the issues); it fails clearly instead of pretending.
+// dtm grid INPUTS... -o DEM --cell C [--extent xmin,ymin,xmax,ymax] [--nodata V] [--cog]
+//          [--hillshade FILE] [--slope FILE] [--aspect FILE]
+// The TIN surface sampled at cell centres (parse -> options -> library -> report).
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
 #include "command.hpp"
+#include "dtm/algo/rasterize.hpp"
+#include "dtm/algo/triangulate.hpp"
 #include "dtm/core/error.hpp"
+#include "dtm/io/grid_writer.hpp"
+#include "dtm/io/inputs.hpp"
+#include "input_args.hpp"
+#include "terminal_progress.hpp"
+#include "tin_args.hpp"
 
 namespace dtm::cli {
+namespace {
+
+struct GridArgs {
+    InputArgs input;
+    TriangulateOptions tin;
+    std::string output;
+    double cell = 0.0;
+    std::string extent;
+    float nodata = -9999.0F;
+    bool cog = false;
+    std::string hillshade, slope, aspect;
+    bool quiet = false;
+};
+
+/// "xmin,ymin,xmax,ymax" -> Box2. @throws UsageError
+Box2 parse_extent(const std::string& text)
+{
+    std::vector<double> v;
+    std::stringstream in(text);
+    std::string item;
+    while (std::getline(in, item, ',')) {
+        try {
+            std::size_t used = 0;
+            v.push_back(std::stod(item, &used));
+            if (used != item.size()) {
+                throw std::invalid_argument(item);
+            }
+        } catch (const std::exception&) {
+            throw UsageError("grid: --extent '" + text + "': '" + item + "' is not a number");
+        }
+    }
+    if (v.size() != 4 || !(v[2] > v[0]) || !(v[3] > v[1])) {
+        throw UsageError("grid: --extent '" + text +
+                         "': expected xmin,ymin,xmax,ymax with xmax > xmin and ymax > ymin");
+    }
+    return {v[0], v[1], v[2], v[3]};
+}
+
+/// Counts the cells that received a value while passing the rows on.
+class CountingSink final : public GridSink {
+public:
+    CountingSink(GridSink& next, float nodata) : next_(next), nodata_(nodata) {}
+    void write_rows(std::size_t first_row, std::size_t row_count,
+                    std::span<const float> values) override
+    {
+        for (const float v : values) {
+            filled += v != nodata_ ? 1 : 0;
+        }
+        next_.write_rows(first_row, row_count, values);
+    }
+    std::size_t filled = 0;
+
+private:
+    GridSink& next_;
+    float nodata_;
+};
+
+int run_grid(const GridArgs& args)
+{
+    const Progress progress = terminal_progress("grid", args.quiet);
+    io::LoadedInputs inputs = io::load_inputs(to_load_options(args.input), progress.sub(0.0, 0.2));
+    const Tin tin = inputs.tin ? std::move(*inputs.tin)
+                               : triangulate(inputs.terrain, args.tin, progress.sub(0.2, 0.5)).tin;
+    if (tin.triangles.empty()) {
+        throw InputError("grid: the inputs give no triangle to rasterise");
+    }
+    const GridSpec spec = args.extent.empty()
+                              ? snapped_grid_spec(tin_bounds(tin), args.cell)
+                              : extent_grid_spec(parse_extent(args.extent), args.cell);
+    io::GridWriter writer(args.output, spec,
+                          {.crs_wkt = inputs.crs_wkt, .nodata = args.nodata, .cog = args.cog});
+    CountingSink counter(writer, args.nodata);
+    rasterize(tin, spec, {.nodata = args.nodata, .threads = args.tin.threads}, counter,
+              progress.sub(0.5, 0.9));
+    writer.commit();
+    const std::pair<const std::string*, io::DemDerivative> derived[] = {
+        {&args.hillshade, io::DemDerivative::hillshade},
+        {&args.slope, io::DemDerivative::slope},
+        {&args.aspect, io::DemDerivative::aspect}};
+    for (const auto& [file, kind] : derived) {
+        if (!file->empty()) {
+            io::write_dem_derivative(args.output, *file, kind);
+        }
+    }
+    progress.report(1.0, "done");
+    std::cout << "grid: " << spec.cols << " x " << spec.rows << " cells of " << spec.cell
+              << " (cell centres), extent " << spec.xmin << "," << spec.ymin() << ","
+              << spec.xmax() << "," << spec.ymax << ", " << counter.filled << " with data -> "
+              << args.output << '\n';
+    return 0;
+}
+
+}  // namespace
+
 Command grid_command()
 {
-    return {"grid", "(not implemented yet)", [](CLI::App&) {
-                return []() -> int { throw dtm::Error("dtm grid is not implemented yet"); };
+    return {"grid", "DEM raster of the TIN sampled at cell centres (GeoTIFF or any GDAL format)",
+            [](CLI::App& app) {
+                auto args = std::make_shared<GridArgs>();
+                add_input_options(app, args->input);
+                add_tin_options(app, args->tin);
+                app.add_option("-o,--output", args->output,
+                               "DEM file; the extension picks the GDAL driver (default .tif: "
+                               "tiled DEFLATE Float32 GeoTIFF; .asc, .img, ...)")
+                    ->required();
+                app.add_option("--cell", args->cell, "Cell size in CRS units")
+                    ->required()
+                    ->check(CLI::PositiveNumber);
+                app.add_option("--extent", args->extent,
+                               "xmin,ymin,xmax,ymax: outer edges of the raster (default: the "
+                               "TIN's bounding box snapped outwards to the cell size)");
+                app.add_option("--nodata", args->nodata,
+                               "Value of cells outside the TIN, the boundary and holes "
+                               "(default -9999)");
+                app.add_flag("--cog", args->cog, "Write a Cloud Optimized GeoTIFF");
+                app.add_option("--hillshade", args->hillshade, "Also write a hillshade (gdaldem)");
+                app.add_option("--slope", args->slope, "Also write slope in degrees (gdaldem)");
+                app.add_option("--aspect", args->aspect, "Also write aspect in degrees (gdaldem)");
+                app.add_flag("-q,--quiet", args->quiet, "No progress on stderr");
+                return [args]() { return run_grid(*args); };
             }};
 }
+
 }  // namespace dtm::cli

@@ -1,0 +1,88 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# dtm grid / dtm contour against gdal_grid -a linear / gdal_contour, in one run.
+#
+#   bench/compare_gdal.sh [DTM_BINARY] [POINTS] [WORKDIR]
+#
+# 1. Generates POINTS (default 10^6) uniform random survey points of a smooth terrain with
+#    about 150 m of relief over 2000 m x 2000 m at S-JTSK (EPSG:5514) offsets.
+# 2. DEM: `dtm grid` and `gdal_grid -a linear:radius=0` (all threads) on the same points and the
+#    same 2000 x 2000 cells. The extent is given as the raster's outer edges to both
+#    (gdal_grid's -txe/-tye are outer edges and it samples cell centres, as dtm does), so the
+#    same cell centres are sampled. Prints both times, the ratio, the largest absolute difference
+#    where both have a value, and the NoData footprint mismatch (bench/compare_rasters.cpp).
+# 3. Contours at 1 m: `dtm contour` on the points (reading + triangulation included) against
+#    `gdal_contour -i 1` on gdal_grid's 2000 x 2000 raster; both write a GeoPackage.
+set -euo pipefail
+
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+dtm="${1:-$here/../build/tools/dtm}"
+points="${2:-1000000}"
+work="${3:-$(mktemp -d /tmp/dtm-compare-gdal.XXXXXX)}"
+mkdir -p "$work"
+xmin=-750000; xmax=-748000; ymin=-1050000; ymax=-1048000; size=2000
+
+[[ -x "$dtm" ]] || { echo "compare_gdal: no dtm binary at $dtm" >&2; exit 2; }
+command -v gdal_grid >/dev/null || { echo "compare_gdal: gdal_grid not found" >&2; exit 2; }
+
+now() { date +%s.%N; }
+elapsed() { echo "$2 - $1" | bc -l | awk '{printf "%.2f", $1}'; }
+
+echo "== work directory: $work"
+echo "== generating $points points"
+python3 - "$points" "$work/points.csv" "$xmin" "$ymin" "$xmax" "$ymax" <<'PY'
+import math, random, sys
+n, path = int(sys.argv[1]), sys.argv[2]
+x0, y0, x1, y1 = map(float, sys.argv[3:7])
+random.seed(20261124)
+with open(path, "w") as f:
+    f.write("x,y,z\n")
+    # the four corners, so that both tools cover the whole extent
+    pts = [(x0, y0), (x1, y0), (x0, y1), (x1, y1)]
+    pts += [(random.uniform(x0, x1), random.uniform(y0, y1)) for _ in range(n - 4)]
+    for x, y in pts:
+        u, v = x - x0, y - y0
+        z = (300.0 + 40.0 * math.sin(u / 300.0) * math.cos(v / 250.0) + 0.03 * u
+             + 6.0 * math.sin(u / 37.0 + v / 53.0) + 2.0 * math.cos(u / 11.0 - v / 17.0))
+        f.write(f"{x:.3f},{y:.3f},{z:.3f}\n")
+PY
+cat > "$work/points.vrt" <<VRT
+<OGRVRTDataSource>
+  <OGRVRTLayer name="points">
+    <SrcDataSource>$work/points.csv</SrcDataSource>
+    <SrcLayer>points</SrcLayer>
+    <GeometryType>wkbPoint25D</GeometryType>
+    <GeometryField encoding="PointFromColumns" x="x" y="y" z="z"/>
+  </OGRVRTLayer>
+</OGRVRTDataSource>
+VRT
+
+compare="$work/compare_rasters"
+g++ -std=c++20 -O2 -I/usr/include/gdal "$here/compare_rasters.cpp" -o "$compare" -lgdal
+
+echo "== DEM ${size} x ${size}"
+t0=$(now)
+"$dtm" grid "$work/points.csv" -o "$work/dtm.tif" --cell 1 --extent "$xmin,$ymin,$xmax,$ymax" -q
+t1=$(now)
+gdal_grid --config GDAL_NUM_THREADS ALL_CPUS -q -a linear:radius=0:nodata=-9999 -ot Float32 \
+    -txe "$xmin" "$xmax" -tye "$ymax" "$ymin" -outsize "$size" "$size" \
+    -l points "$work/points.vrt" "$work/gdal.tif"
+t2=$(now)
+dtm_grid=$(elapsed "$t0" "$t1"); gdal_grid_s=$(elapsed "$t1" "$t2")
+echo "dtm grid:  ${dtm_grid} s"
+echo "gdal_grid: ${gdal_grid_s} s"
+echo "speed-up:  $(echo "$gdal_grid_s / $dtm_grid" | bc -l | awk '{printf "%.1f", $1}') x"
+"$compare" "$work/dtm.tif" "$work/gdal.tif"
+
+echo "== contours at 1 m"
+t0=$(now)
+"$dtm" contour "$work/points.csv" -o "$work/dtm_contours.gpkg" --interval 1 -q
+t1=$(now)
+gdal_contour -q -i 1 -a elevation -3d "$work/gdal.tif" "$work/gdal_contours.gpkg"
+t2=$(now)
+dtm_contour=$(elapsed "$t0" "$t1"); gdal_contour_s=$(elapsed "$t1" "$t2")
+echo "dtm contour (points -> TIN -> contours): ${dtm_contour} s"
+echo "gdal_contour (2000 x 2000 raster):       ${gdal_contour_s} s"
+echo "speed-up:  $(echo "$gdal_contour_s / $dtm_contour" | bc -l | awk '{printf "%.1f", $1}') x"
+echo "features: dtm $(ogrinfo -so -al "$work/dtm_contours.gpkg" | awk '/Feature Count/ {print $3}')," \
+     "gdal $(ogrinfo -so -al "$work/gdal_contours.gpkg" | awk '/Feature Count/ {print $3}')"
