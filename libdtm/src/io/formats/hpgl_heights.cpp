@@ -1,0 +1,199 @@
+// SPDX-License-Identifier: MIT
+// Spot heights of an HP-GL height plan.
+//
+// A height plan marks each surveyed point with a small symbol and writes its height next to it.
+// The symbol is one of: a character plotted by SM (symbol mode), a small CI circle, a small
+// cross of two short perpendicular strokes, a pen-down dot, or any vertex drawn with a pen whose
+// role is "points". A label is a height when its whole text is a decimal number ("312.45",
+// "312,45"); integer labels (parcel numbers) only on --hpgl-height-pens. Every height label is
+// matched to the nearest free marker within the marker radius (pairs taken in increasing
+// distance, so a marker serves one label); without one, the label's own position is used and
+// counted in a warning. Grids keyed by the radius keep every step linear in the plot size.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <tuple>
+
+#include "io/formats/detail/hpgl_grid.hpp"
+#include "io/formats/detail/hpgl_heights.hpp"
+
+namespace dtm::io::hpgl {
+
+void assign_line_roles(const Plot& plot, const HpglOptions& options, double radius, TerrainPlan& plan);
+
+namespace {
+
+constexpr double perpendicular_cosine = 0.1;  // |cos| of the stroke angle, about 84..96 degrees
+
+struct Stroke {
+    std::size_t line;
+    Point2 a, b;
+};
+
+/// Parameters along both strokes of their crossing; false when parallel.
+bool crossing(const Stroke& s, const Stroke& t, double& u, double& v)
+{
+    const double dx = s.b.x - s.a.x, dy = s.b.y - s.a.y;
+    const double ex = t.b.x - t.a.x, ey = t.b.y - t.a.y;
+    const double det = dx * ey - dy * ex;
+    if (det == 0.0) return false;
+    const double fx = t.a.x - s.a.x, fy = t.a.y - s.a.y;
+    u = (fx * ey - fy * ex) / det;
+    v = (fx * dy - fy * dx) / det;
+    return true;
+}
+
+/// Pairs short perpendicular strokes crossing near their middles into cross markers.
+std::size_t find_crosses(Plot& plot, double radius)
+{
+    std::vector<Stroke> strokes;
+    for (std::size_t i = 0; i < plot.lines.size(); ++i) {
+        const auto& pts = plot.lines[i].points;
+        if (pts.size() == 2 && distance(pts[0], pts[1]) <= 2.0 * radius) strokes.push_back({i, pts[0], pts[1]});
+    }
+    PointGrid grid(radius);
+    for (std::size_t i = 0; i < strokes.size(); ++i) {
+        const Point2 mid{(strokes[i].a.x + strokes[i].b.x) / 2, (strokes[i].a.y + strokes[i].b.y) / 2};
+        grid.insert(mid, static_cast<std::uint32_t>(i));
+    }
+    std::vector<bool> used(strokes.size(), false), consumed(plot.lines.size(), false);
+    std::size_t found = 0;
+    for (std::size_t i = 0; i < strokes.size(); ++i) {
+        if (used[i]) continue;
+        const Stroke& s = strokes[i];
+        const Point2 mid{(s.a.x + s.b.x) / 2, (s.a.y + s.b.y) / 2};
+        const double ls = distance(s.a, s.b);
+        std::size_t best = strokes.size();
+        double best_score = 1.0, best_u = 0.0;
+        grid.near(mid, [&](std::uint32_t j) {
+            if (j == i || used[j]) return;
+            const Stroke& t = strokes[j];
+            const double lt = distance(t.a, t.b);
+            const double dot = (s.b.x - s.a.x) * (t.b.x - t.a.x) + (s.b.y - s.a.y) * (t.b.y - t.a.y);
+            double u = 0.0, v = 0.0;
+            if (std::abs(dot) > perpendicular_cosine * ls * lt || !crossing(s, t, u, v)) return;
+            const double score = std::max(std::abs(u - 0.5), std::abs(v - 0.5));
+            if (score <= 0.2 && (score < best_score || (score == best_score && j < best))) {
+                best = j;
+                best_score = score;
+                best_u = u;
+            }
+        });
+        if (best == strokes.size()) continue;
+        used[i] = used[best] = true;
+        consumed[s.line] = consumed[strokes[best].line] = true;
+        const Point2 centre{s.a.x + best_u * (s.b.x - s.a.x), s.a.y + best_u * (s.b.y - s.a.y)};
+        plot.markers.push_back({centre, MarkerKind::cross, plot.lines[s.line].pen, plot.lines[s.line].offset});
+        ++found;
+    }
+    if (found == 0) return 0;
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < plot.lines.size(); ++i) {
+        if (consumed[i]) continue;
+        if (kept != i) plot.lines[kept] = std::move(plot.lines[i]);
+        ++kept;
+    }
+    plot.lines.resize(kept);
+    return found;
+}
+
+/// Dots (pen-down without movement) and vertices drawn with a "points" pen become markers.
+void add_point_markers(const Plot& plot, const HpglOptions& options, std::vector<PlotMarker>& markers)
+{
+    for (const PlotLine& line : plot.lines) {
+        const auto role = options.pens.find(line.pen);
+        if (role != options.pens.end() && role->second == PenRole::points) {
+            for (const Point2& p : line.points) markers.push_back({p, MarkerKind::pen_vertex, line.pen, line.offset});
+        } else if (line.points.size() == 1) {
+            markers.push_back({line.points[0], MarkerKind::dot, line.pen, line.offset});
+        }
+    }
+}
+
+void match_labels(const Plot& plot, const HpglOptions& options, double radius, TerrainPlan& plan)
+{
+    const auto& markers = plot.markers;
+    PointGrid grid(radius);
+    for (std::size_t i = 0; i < markers.size(); ++i) grid.insert(markers[i].at, static_cast<std::uint32_t>(i));
+    std::vector<std::tuple<double, std::size_t, std::size_t>> pairs;  // distance, spot, marker
+    for (std::size_t i = 0; i < plot.labels.size(); ++i) {
+        const PlotLabel& label = plot.labels[i];
+        const bool integers = std::find(options.height_pens.begin(), options.height_pens.end(), label.pen) !=
+                              options.height_pens.end();
+        const auto z = parse_height_label(label.text, integers);
+        if (!z) continue;
+        const std::size_t spot = plan.spots.size();
+        plan.spots.push_back({label.at, *z, i, false});
+        grid.near(label.at, [&](std::uint32_t m) {
+            const double d = distance(label.at, markers[m].at);
+            if (d <= radius) pairs.emplace_back(d, spot, m);
+        });
+    }
+    std::sort(pairs.begin(), pairs.end());
+    std::vector<bool> taken(markers.size(), false);
+    for (const auto& [d, spot, m] : pairs) {
+        SpotHeight& s = plan.spots[spot];
+        if (s.on_marker || taken[m]) continue;
+        s.at = markers[m].at;
+        s.on_marker = true;
+        taken[m] = true;
+    }
+    plan.height_labels = plan.spots.size();
+    std::string first;
+    for (const SpotHeight& s : plan.spots) {
+        if (s.on_marker) continue;
+        if (plan.labels_without_marker++ < 5) first += " " + std::to_string(plot.labels[s.label].offset);
+    }
+    if (plan.labels_without_marker > 0) {
+        plan.warnings.push_back(std::to_string(plan.labels_without_marker) + " height labels have no marker within " +
+                                std::to_string(options.marker_radius_mm) +
+                                " mm: the label position was used (labels at bytes" + first + ")");
+    }
+}
+
+}  // namespace
+
+std::optional<double> parse_height_label(std::string_view text, bool allow_integer)
+{
+    const auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; };
+    while (!text.empty() && blank(text.front())) text.remove_prefix(1);
+    while (!text.empty() && blank(text.back())) text.remove_suffix(1);
+    std::size_t i = 0;
+    bool negative = false;
+    if (i < text.size() && (text[i] == '-' || text[i] == '+')) negative = text[i++] == '-';
+    std::uint64_t mantissa = 0;
+    int digits = 0, decimals = 0;
+    bool separator = false;
+    for (; i < text.size(); ++i) {
+        const char c = text[i];
+        if (c >= '0' && c <= '9') {
+            if (++digits > 17) return std::nullopt;
+            mantissa = mantissa * 10 + static_cast<unsigned>(c - '0');
+            if (separator) ++decimals;
+        } else if ((c == '.' || c == ',') && !separator) {
+            separator = true;
+        } else {
+            return std::nullopt;
+        }
+    }
+    if (digits == 0 || (!separator && !allow_integer)) return std::nullopt;
+    // Exact integer divided by an exact power of ten: the correctly rounded decimal value.
+    static constexpr double powers[] = {1e0, 1e1, 1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,
+                                        1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16, 1e17};
+    const double value = static_cast<double>(mantissa) / powers[decimals];
+    return negative ? -value : value;
+}
+
+TerrainPlan build_terrain_plan(Plot& plot, const HpglOptions& options)
+{
+    TerrainPlan plan;
+    const double radius = options.marker_radius_mm * units_per_mm;
+    plan.crosses = find_crosses(plot, radius);
+    add_point_markers(plot, options, plot.markers);
+    plan.markers = plot.markers.size();
+    match_labels(plot, options, radius, plan);
+    assign_line_roles(plot, options, radius, plan);
+    return plan;
+}
+
+}  // namespace dtm::io::hpgl
