@@ -54,3 +54,27 @@ TEST(SurfaceStats, EmptyTinHasZeroAreaAndEmptyExtent) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(AccountInputs, EveryInputPointIsUsedMergedOrRemovedExactlyOnce) {
+    dtm::TriangulateResult result;
+    result.tin = tilted_square(1.0, 0.0, 0.0, 0.0);
+    result.tin.vertices.push_back({5.0, 5.0, 0.0});  // vertex 4: in no triangle (outside)
+    // Inputs: 0..3 survey points on the square corners, 4 a duplicate of 0, 5 outside,
+    // then line vertices 6 (corner 2) and 7 (duplicate of 6).
+    result.input_to_vertex = {0, 1, 2, 3, 0, 4, 2, 2};
+    result.merges.push_back({0, 4, {}, {}});
+    result.merges.push_back({6, 7, {}, {}});
+    const dtm::InputAccounting a = dtm::account_inputs(result, 6);
+    EXPECT_EQ(a.survey_points.total, 6u);
+    EXPECT_EQ(a.survey_points.used, 4u);
+    EXPECT_EQ(a.survey_points.merged, 1u);
+    EXPECT_EQ(a.survey_points.removed, 1u);
+    EXPECT_EQ(a.line_vertices.total, 2u);
+    EXPECT_EQ(a.line_vertices.used, 1u);
+    EXPECT_EQ(a.line_vertices.merged, 1u);
+    EXPECT_EQ(a.line_vertices.removed, 0u);
+}
+
+}  // namespace
