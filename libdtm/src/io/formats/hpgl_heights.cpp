@@ -51,21 +51,18 @@ std::size_t find_crosses(Plot& plot, double radius)
         const auto& pts = plot.lines[i].points;
         if (pts.size() == 2 && distance(pts[0], pts[1]) <= 2.0 * radius) strokes.push_back({i, pts[0], pts[1]});
     }
-    PointGrid grid(radius);
-    for (std::size_t i = 0; i < strokes.size(); ++i) {
-        const Point2 mid{(strokes[i].a.x + strokes[i].b.x) / 2, (strokes[i].a.y + strokes[i].b.y) / 2};
-        grid.insert(mid, static_cast<std::uint32_t>(i));
-    }
+    std::vector<Point2> middles;
+    for (const Stroke& s : strokes) middles.push_back({(s.a.x + s.b.x) / 2, (s.a.y + s.b.y) / 2});
+    const PointGrid grid(middles, radius);
     std::vector<bool> used(strokes.size(), false), consumed(plot.lines.size(), false);
     std::size_t found = 0;
     for (std::size_t i = 0; i < strokes.size(); ++i) {
         if (used[i]) continue;
         const Stroke& s = strokes[i];
-        const Point2 mid{(s.a.x + s.b.x) / 2, (s.a.y + s.b.y) / 2};
         const double ls = distance(s.a, s.b);
         std::size_t best = strokes.size();
         double best_score = 1.0, best_u = 0.0;
-        grid.near(mid, [&](std::uint32_t j) {
+        grid.near(middles[i], radius, [&](std::uint32_t j, double) {
             if (j == i || used[j]) return;
             const Stroke& t = strokes[j];
             const double lt = distance(t.a, t.b);
@@ -113,8 +110,9 @@ void add_point_markers(const Plot& plot, const HpglOptions& options, std::vector
 void match_labels(const Plot& plot, const HpglOptions& options, double radius, TerrainPlan& plan)
 {
     const auto& markers = plot.markers;
-    PointGrid grid(radius);
-    for (std::size_t i = 0; i < markers.size(); ++i) grid.insert(markers[i].at, static_cast<std::uint32_t>(i));
+    std::vector<Point2> places;
+    for (const PlotMarker& m : markers) places.push_back(m.at);
+    const PointGrid grid(places, radius);
     std::vector<std::tuple<double, std::size_t, std::size_t>> pairs;  // distance, spot, marker
     for (std::size_t i = 0; i < plot.labels.size(); ++i) {
         const PlotLabel& label = plot.labels[i];
@@ -124,10 +122,7 @@ void match_labels(const Plot& plot, const HpglOptions& options, double radius, T
         if (!z) continue;
         const std::size_t spot = plan.spots.size();
         plan.spots.push_back({label.at, *z, i, false});
-        grid.near(label.at, [&](std::uint32_t m) {
-            const double d = distance(label.at, markers[m].at);
-            if (d <= radius) pairs.emplace_back(d, spot, m);
-        });
+        grid.near(label.at, radius, [&](std::uint32_t m, double d) { pairs.emplace_back(d, spot, m); });
     }
     std::sort(pairs.begin(), pairs.end());
     std::vector<bool> taken(markers.size(), false);

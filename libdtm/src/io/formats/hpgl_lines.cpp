@@ -26,15 +26,13 @@ namespace {
 constexpr double closing_tolerance = 0.01;  // plotter units
 const double unknown = std::numeric_limits<double>::quiet_NaN();
 
-/// Nearest spot height to any point: rings of grid cells, brute force when far away.
+/// Spot heights near a point (grid) and nearest to any point (x-sorted sweep).
 class NearestSpot {
 public:
-    explicit NearestSpot(const std::vector<SpotHeight>& spots, double cell) : spots_(spots), grid_(cell), cell_(cell)
+    explicit NearestSpot(const std::vector<SpotHeight>& spots, double cell)
+        : spots_(spots), places_(positions(spots)), grid_(places_, cell), cell_(cell)
     {
-        for (std::size_t i = 0; i < spots.size(); ++i) {
-            grid_.insert(spots[i].at, static_cast<std::uint32_t>(i));
-            by_x_.push_back(i);
-        }
+        for (std::size_t i = 0; i < spots.size(); ++i) by_x_.push_back(i);
         std::sort(by_x_.begin(), by_x_.end(), [&](std::size_t a, std::size_t b) {
             return spots[a].at.x < spots[b].at.x || (spots[a].at.x == spots[b].at.x && a < b);
         });
@@ -44,9 +42,8 @@ public:
     [[nodiscard]] long within(Point2 p, double radius) const
     {
         long best = -1;
-        double best_d = radius;
-        grid_.near(p, [&](std::uint32_t i) {
-            const double d = distance(p, spots_[i].at);
+        double best_d = std::numeric_limits<double>::infinity();
+        grid_.near(p, radius, [&](std::uint32_t i, double d) {
             if (d < best_d || (d == best_d && (best < 0 || i < best))) {
                 best_d = d;
                 best = static_cast<long>(i);
@@ -87,7 +84,15 @@ public:
     }
 
 private:
+    static std::vector<Point2> positions(const std::vector<SpotHeight>& spots)
+    {
+        std::vector<Point2> out;
+        for (const SpotHeight& s : spots) out.push_back(s.at);
+        return out;
+    }
+
     const std::vector<SpotHeight>& spots_;
+    std::vector<Point2> places_;
     PointGrid grid_;
     double cell_;
     std::vector<std::size_t> by_x_;
@@ -105,7 +110,7 @@ void interpolate(std::vector<Point3>& pts, bool closed)
     const auto step = [&](std::size_t i) {
         const Point3& a = pts[i % n];
         const Point3& b = pts[(i + 1) % n];
-        return std::hypot(b.x - a.x, b.y - a.y);
+        return distance({a.x, a.y}, {b.x, b.y});
     };
     const auto fill = [&](std::size_t from, std::size_t to) {  // from < to, indices modulo n
         double total = 0.0;
