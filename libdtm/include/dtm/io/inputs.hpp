@@ -31,7 +31,13 @@ struct LoadOptions {
     std::vector<InputFile> files;
     std::string crs;         ///< --crs: CRS of inputs that carry none (EPSG:xxxx, WKT, PROJ)
     std::string target_crs;  ///< --target-crs: reproject everything into this CRS
-    bool skip_bad_lines = false;
+    bool skip_bad_lines = false;  ///< --skip-bad-lines: count bad text lines instead of failing
+    /// --columns: names of the text columns in order ("id,y,x,z,code"; "-" skips a column).
+    /// Empty: map by header names, or guess (x,y,z) when there is no header.
+    std::string columns;
+    std::string layer;    ///< --layer: OGR layer name; empty = every layer
+    std::string where;    ///< --where: OGR attribute filter (SQL WHERE clause)
+    std::string z_field;  ///< --z-field: OGR attribute holding the height (points, contours)
     HpglOptions hpgl;  ///< options of the HPGL plan reader
 };
 
@@ -52,8 +58,16 @@ struct InputSummary {
     std::vector<std::string> warnings;
 };
 
+/// Identifiers and codes of survey points, parallel to TerrainInput::points (empty strings
+/// where a reader had none; both vectors empty when no input carried any).
+struct PointLabels {
+    std::vector<std::string> ids;
+    std::vector<std::string> codes;
+};
+
 struct LoadedInputs {
     TerrainInput terrain;
+    PointLabels labels;          ///< point ids and codes (text point lists)
     std::string crs_wkt;         ///< CRS of terrain (after any projection); empty if unknown
     std::optional<Tin> tin;      ///< set when the (single) input is a dtm PLY TIN
     std::vector<InputSummary> summaries;

@@ -20,6 +20,7 @@ struct ReadResult {
     TerrainInput terrain;
     std::string crs_wkt;   ///< CRS found in the file (.prj, GeoPackage, ...); empty if none
     InputSummary summary;  ///< filled by the reader (counts, warnings, skipped lines)
+    PointLabels labels;    ///< point ids/codes parallel to terrain.points, or empty
 };
 
 using ReadFn = ReadResult (*)(const InputFile& file, const LoadOptions& options,

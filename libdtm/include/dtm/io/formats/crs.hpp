@@ -1,0 +1,56 @@
+// SPDX-License-Identifier: MIT
+/// @file
+/// @brief Coordinate reference systems of inputs: naming them, S-JTSK (Y, X) to Krovak
+/// East-North, projecting geographic coordinates to UTM (GeographicLib) and transforming between
+/// CRSs (GDAL/PROJ). Axis order is always x = easting/longitude, y = northing/latitude.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "dtm/core/terrain.hpp"
+
+class OGRSpatialReference;
+
+namespace dtm::io {
+
+/// WKT (WKT2) of a CRS given by the user: "EPSG:5514", WKT, PROJ string, ...
+/// @throws UsageError naming @p what (e.g. "--crs") if GDAL/PROJ does not know it.
+[[nodiscard]] std::string crs_to_wkt(std::string_view definition, std::string_view what);
+
+/// WKT2 of an OGR spatial reference.
+[[nodiscard]] std::string srs_to_wkt(const OGRSpatialReference& srs);
+
+/// "EPSG:5514" when the CRS matches an EPSG entry (also for ESRI .prj text), else its name;
+/// empty for an empty @p wkt.
+[[nodiscard]] std::string crs_label(const std::string& wkt);
+
+[[nodiscard]] bool crs_is_geographic(const std::string& wkt);
+/// True for S-JTSK / Krovak (EPSG:5514 and its variants).
+[[nodiscard]] bool crs_is_sjtsk(const std::string& wkt);
+[[nodiscard]] bool crs_equivalent(const std::string& a, const std::string& b);
+
+/// Rewrites every vertex with positive x and y, taken as the traditional S-JTSK (Y, X) in either
+/// column order (Y < X over the whole Czech Republic), as Krovak East-North: E = -Y, N = -X.
+/// @returns how many vertices were rewritten.
+std::size_t sjtsk_to_east_north(TerrainInput& terrain);
+
+struct UtmZone {
+    int zone = 0;  ///< 1..60
+    bool north = true;
+    [[nodiscard]] int epsg() const noexcept { return (north ? 32600 : 32700) + zone; }
+};
+
+/// Standard UTM zone (GeographicLib rules, incl. Norway/Svalbard) of a longitude/latitude.
+[[nodiscard]] UtmZone utm_zone_for(double lon, double lat);
+
+/// Projects longitude/latitude (WGS84 degrees, x = lon) to @p zone with GeographicLib.
+/// @throws InputError if a latitude is outside [-90, 90] or a longitude outside [-180, 360].
+void project_to_utm(TerrainInput& terrain, UtmZone zone, const std::string& source_name);
+
+/// Transforms every vertex and seed from @p from_wkt to @p to_wkt with GDAL/PROJ.
+/// @throws InputError naming @p source_name if a point cannot be transformed.
+void transform_terrain(TerrainInput& terrain, const std::string& from_wkt,
+                       const std::string& to_wkt, const std::string& source_name);
+
+}  // namespace dtm::io

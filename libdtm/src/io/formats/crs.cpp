@@ -1,0 +1,193 @@
+// SPDX-License-Identifier: MIT
+// CRS handling for inputs. GDAL/PROJ identifies and transforms CRSs (always in the traditional
+// GIS axis order, x = easting/longitude); GeographicLib (Karney 2011, "Transverse Mercator with
+// an accuracy of a few nanometers", J. Geodesy 85:475-485) projects WGS84 longitude/latitude to
+// UTM when no target CRS is given. S-JTSK: surveyors write positive (Y, X) with Y pointing west
+// and X south; EPSG:5514 (Krovak East-North) is E = -Y, N = -X.
+#include "dtm/io/formats/crs.hpp"
+
+#include <GeographicLib/UTMUPS.hpp>
+#include <ogr_spatialref.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <string>
+
+#include "dtm/core/error.hpp"
+
+namespace dtm::io {
+namespace {
+
+OGRSpatialReference from_wkt(const std::string& wkt)
+{
+    OGRSpatialReference srs;
+    srs.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+    if (srs.SetFromUserInput(wkt.c_str()) != OGRERR_NONE) {
+        throw Error("unknown coordinate reference system: " + wkt.substr(0, 80));
+    }
+    return srs;
+}
+
+template <class F>
+void for_each_vertex(TerrainInput& t, F&& f)
+{
+    for (Point3& p : t.points) f(p.x, p.y);
+    for (auto* lines : {&t.breaklines, &t.soft_breaklines, &t.boundaries, &t.holes}) {
+        for (Polyline& line : *lines) {
+            for (Point3& p : line.points) f(p.x, p.y);
+        }
+    }
+    for (Point2& p : t.hole_seeds) f(p.x, p.y);
+}
+
+}  // namespace
+
+std::string srs_to_wkt(const OGRSpatialReference& srs)
+{
+    char* text = nullptr;
+    const char* const options[] = {"FORMAT=WKT2_2018", nullptr};
+    if (srs.exportToWkt(&text, options) != OGRERR_NONE || text == nullptr) {
+        CPLFree(text);
+        return {};
+    }
+    std::string wkt(text);
+    CPLFree(text);
+    return wkt;
+}
+
+std::string crs_to_wkt(std::string_view definition, std::string_view what)
+{
+    OGRSpatialReference srs;
+    srs.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+    const std::string def(definition);
+    if (srs.SetFromUserInput(def.c_str()) != OGRERR_NONE) {
+        throw UsageError(std::string(what) + ": expected a CRS (EPSG:xxxx, WKT or PROJ), found '" +
+                         def + "'");
+    }
+    return srs_to_wkt(srs);
+}
+
+std::string crs_label(const std::string& wkt)
+{
+    if (wkt.empty()) return {};
+    OGRSpatialReference srs = from_wkt(wkt);
+    const char* node = srs.IsProjected() ? "PROJCS" : (srs.IsGeographic() ? "GEOGCS" : nullptr);
+    const char* name = srs.GetAuthorityName(node);
+    const char* code = srs.GetAuthorityCode(node);
+    if (name != nullptr && code != nullptr) return std::string(name) + ":" + code;
+    int count = 0;
+    int* confidence = nullptr;
+    OGRSpatialReferenceH* matches = srs.FindMatches(nullptr, &count, &confidence);
+    std::string label;
+    for (int i = 0; i < count && label.empty(); ++i) {
+        if (confidence[i] < 70) continue;
+        const auto* m = OGRSpatialReference::FromHandle(matches[i]);
+        const char* mnode = m->IsProjected() ? "PROJCS" : "GEOGCS";
+        if (m->GetAuthorityName(mnode) && m->GetAuthorityCode(mnode))
+            label = std::string(m->GetAuthorityName(mnode)) + ":" + m->GetAuthorityCode(mnode);
+    }
+    OSRFreeSRSArray(matches);
+    CPLFree(confidence);
+    if (!label.empty()) return label;
+    const char* own = srs.GetName();
+    return own != nullptr ? own : "unnamed CRS";
+}
+
+bool crs_is_geographic(const std::string& wkt)
+{
+    return !wkt.empty() && from_wkt(wkt).IsGeographic();
+}
+
+bool crs_is_sjtsk(const std::string& wkt)
+{
+    if (wkt.empty()) return false;
+    const OGRSpatialReference srs = from_wkt(wkt);
+    if (!srs.IsProjected()) return false;
+    const char* method = srs.GetAttrValue("PROJECTION");
+    const std::string label = crs_label(wkt);
+    return label == "EPSG:5514" || label == "EPSG:5513" ||
+           (method != nullptr && std::string(method).find("Krovak") != std::string::npos);
+}
+
+bool crs_equivalent(const std::string& a, const std::string& b)
+{
+    if (a == b) return true;
+    if (a.empty() || b.empty()) return false;
+    const OGRSpatialReference sa = from_wkt(a);
+    const OGRSpatialReference sb = from_wkt(b);
+    return sa.IsSame(&sb) != 0;
+}
+
+std::size_t sjtsk_to_east_north(TerrainInput& terrain)
+{
+    std::size_t count = 0;
+    for_each_vertex(terrain, [&count](double& x, double& y) {
+        if (x <= 0.0 || y <= 0.0) return;
+        const double y_west = std::min(x, y);
+        const double x_south = std::max(x, y);
+        x = -y_west;
+        y = -x_south;
+        ++count;
+    });
+    return count;
+}
+
+UtmZone utm_zone_for(double lon, double lat)
+{
+    int zone = GeographicLib::UTMUPS::StandardZone(lat, lon, GeographicLib::UTMUPS::UTM);
+    if (zone < 1) zone = std::clamp(static_cast<int>(std::floor((lon + 180.0) / 6.0)) % 60 + 1, 1, 60);
+    return {zone, lat >= 0.0};
+}
+
+void project_to_utm(TerrainInput& terrain, UtmZone zone, const std::string& source_name)
+{
+    for_each_vertex(terrain, [&](double& x, double& y) {
+        const double lon = x;
+        const double lat = y;
+        if (!(lat >= -90.0 && lat <= 90.0 && lon >= -180.0 && lon <= 360.0)) {
+            throw InputError(source_name, 0, 0,
+                             "expected longitude/latitude in degrees, found (" +
+                                 std::to_string(lon) + ", " + std::to_string(lat) + ")");
+        }
+        int out_zone = 0;
+        bool north = true;
+        double e = 0, n = 0, gamma = 0, k = 0;
+        try {
+            GeographicLib::UTMUPS::Forward(lat, lon, out_zone, north, e, n, gamma, k, zone.zone);
+        } catch (const GeographicLib::GeographicErr& err) {
+            throw InputError(source_name, 0, 0,
+                             std::string("cannot project to UTM zone ") +
+                                 std::to_string(zone.zone) + ": " + err.what());
+        }
+        if (north && !zone.north) n += 10'000'000.0;
+        if (!north && zone.north) n -= 10'000'000.0;
+        x = e;
+        y = n;
+    });
+}
+
+void transform_terrain(TerrainInput& terrain, const std::string& source_wkt,
+                       const std::string& target_wkt, const std::string& source_name)
+{
+    OGRSpatialReference from = from_wkt(source_wkt);
+    OGRSpatialReference to = from_wkt(target_wkt);
+    std::unique_ptr<OGRCoordinateTransformation> ct(OGRCreateCoordinateTransformation(&from, &to));
+    if (!ct) {
+        throw InputError(source_name, 0, 0,
+                         "cannot transform from " + crs_label(source_wkt) + " to " +
+                             crs_label(target_wkt));
+    }
+    for_each_vertex(terrain, [&](double& x, double& y) {
+        double tx = x, ty = y;
+        if (!ct->Transform(1, &tx, &ty) || !std::isfinite(tx) || !std::isfinite(ty)) {
+            throw InputError(source_name, 0, 0,
+                             "cannot transform the point (" + std::to_string(x) + ", " +
+                                 std::to_string(y) + ") to " + crs_label(target_wkt));
+        }
+        x = tx;
+        y = ty;
+    });
+}
+
+}  // namespace dtm::io

@@ -1,0 +1,273 @@
+// SPDX-License-Identifier: MIT
+// Delimited text reader: one pass over the text held in one buffer, std::from_chars for the
+// numbers, no per-line allocation (fields are views into the buffer). The layout comes from
+// csv_layout.cpp. Rows become points, or polyline vertices grouped by a line-id column
+// (pputils "shapeid,x,y[,z]"), or hole seeds.
+#include "dtm/io/formats/csv.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <string>
+
+#include "csv_detail.hpp"
+#include "dtm/core/error.hpp"
+#include "dtm/io/formats/ogr.hpp"
+
+namespace dtm::io {
+namespace {
+
+using csv::Cell;
+using csv::Field;
+
+constexpr double no_z = std::numeric_limits<double>::quiet_NaN();
+constexpr std::size_t max_listed_warnings = 20;
+
+class CsvReader {
+public:
+    CsvReader(std::string_view text, const InputFile& file, const LoadOptions& options,
+              const Progress& progress)
+        : text_(text), file_(file), options_(options), progress_(progress),
+          polyline_(file.role != InputRole::points),
+          layout_(csv::detect_layout(text, file.path.string(), options.columns, polyline_))
+    {
+        x_ = csv::column_of(layout_, Field::x);
+        y_ = csv::column_of(layout_, Field::y);
+        z_ = csv::column_of(layout_, Field::z);
+        if (x_ < 0 || y_ < 0) {
+            x_ = csv::column_of(layout_, Field::lon);
+            y_ = csv::column_of(layout_, Field::lat);
+            geographic_ = true;
+        }
+        id_ = csv::column_of(layout_, Field::id);
+        code_ = csv::column_of(layout_, Field::code);
+        line_ = polyline_ ? csv::column_of(layout_, Field::line_id) : -1;
+        seeds_ = file.role == InputRole::holes && line_ < 0;
+        for (int c : {x_, y_, z_, id_, code_, line_}) needed_ = std::max(needed_, c + 1);
+    }
+
+    ReadResult run();
+
+private:
+    void read_row(std::string_view line, std::size_t number);
+    bool number_at(int column, double& value, std::size_t number);
+    void bad(std::size_t line, std::size_t column, const std::string& what);
+    void add_vertex(const Point3& p, std::string_view id, std::size_t number);
+    void flush_line();
+    [[nodiscard]] std::string column_name(int column) const;
+
+    std::string_view text_;
+    const InputFile& file_;
+    const LoadOptions& options_;
+    const Progress& progress_;
+    bool polyline_;
+    csv::Layout layout_;
+    int x_ = -1, y_ = -1, z_ = -1, id_ = -1, code_ = -1, line_ = -1, needed_ = 0;
+    bool geographic_ = false;
+    bool seeds_ = false;
+    std::vector<Cell> cells_;
+    ReadResult result_;
+    Polyline current_;
+    std::string current_id_;
+    std::size_t rows_ = 0;
+};
+
+std::string CsvReader::column_name(int column) const
+{
+    const auto c = static_cast<std::size_t>(column);
+    if (c < layout_.names.size()) return "column '" + layout_.names[c] + "'";
+    return "field " + std::to_string(c + 1);
+}
+
+void CsvReader::bad(std::size_t line, std::size_t column, const std::string& what)
+{
+    if (!options_.skip_bad_lines) throw InputError(file_.path, line, column, what);
+    ++result_.summary.skipped_lines;
+    if (result_.summary.warnings.size() < max_listed_warnings) {
+        result_.summary.warnings.push_back("skipped line " + std::to_string(line) + ":" +
+                                           std::to_string(column) + ": " + what);
+    }
+}
+
+bool CsvReader::number_at(int column, double& value, std::size_t number)
+{
+    const Cell& cell = cells_[static_cast<std::size_t>(column)];
+    if (csv::parse_number(cell.text, layout_.decimal_comma, value)) return true;
+    const std::string shown(cell.text.substr(0, 40));
+    bad(number, cell.column,
+        "expected a number for " + column_name(column) + ", found '" + shown + "'");
+    return false;
+}
+
+void CsvReader::read_row(std::string_view line, std::size_t number)
+{
+    if (!csv::split_fields(line, layout_.delimiter, cells_)) {
+        bad(number, line.find('"') + 1, "expected a closing quote");
+        return;
+    }
+    if (cells_.size() < static_cast<std::size_t>(needed_)) {
+        bad(number, line.size() + 1,
+            "expected at least " + std::to_string(needed_) + " fields, found " +
+                std::to_string(cells_.size()) + " in '" + std::string(line.substr(0, 60)) + "'");
+        return;
+    }
+    Point3 p{0.0, 0.0, no_z};
+    if (!number_at(x_, p.x, number) || !number_at(y_, p.y, number)) return;
+    if (z_ >= 0 && !number_at(z_, p.z, number)) return;
+    ++rows_;
+    const std::string_view id = line_ >= 0 ? cells_[static_cast<std::size_t>(line_)].text
+                                           : std::string_view{};
+    add_vertex(p, id, number);
+}
+
+void CsvReader::add_vertex(const Point3& p, std::string_view id, std::size_t number)
+{
+    TerrainInput& t = result_.terrain;
+    if (seeds_) {
+        t.hole_seeds.push_back(p.xy());
+        return;
+    }
+    if (!polyline_) {
+        t.points.push_back(p);
+        if (id_ >= 0 || code_ >= 0) {
+            result_.labels.ids.emplace_back(
+                id_ >= 0 ? cells_[static_cast<std::size_t>(id_)].text : std::string_view{});
+            result_.labels.codes.emplace_back(
+                code_ >= 0 ? cells_[static_cast<std::size_t>(code_)].text : std::string_view{});
+        }
+        return;
+    }
+    if (!current_.points.empty() && line_ >= 0 && id != current_id_) flush_line();
+    if (current_.points.empty()) {
+        current_id_ = std::string(id);
+        current_.source = file_.path.string() + ":" + std::to_string(number);
+    }
+    current_.points.push_back(p);
+}
+
+void CsvReader::flush_line()
+{
+    if (current_.points.empty()) return;
+    Polyline line = std::move(current_);
+    current_ = Polyline{};
+    const bool ring = file_.role == InputRole::boundary || file_.role == InputRole::holes;
+    const std::size_t n = line.points.size();
+    if (n >= 3 && line.points.front() == line.points.back()) {
+        line.points.pop_back();
+        line.closed = true;
+    }
+    if (ring) line.closed = true;
+    if (line.points.size() < (ring ? 3u : 2u)) {
+        result_.summary.warnings.push_back(line.source + ": a " +
+                                           (ring ? std::string("ring") : std::string("line")) +
+                                           " of " + std::to_string(n) +
+                                           " vertices is too short and was not used");
+        return;
+    }
+    TerrainInput& t = result_.terrain;
+    switch (file_.role) {
+        case InputRole::breaklines: t.breaklines.push_back(std::move(line)); break;
+        case InputRole::soft_breaklines: t.soft_breaklines.push_back(std::move(line)); break;
+        case InputRole::boundary: t.boundaries.push_back(std::move(line)); break;
+        case InputRole::holes: t.holes.push_back(std::move(line)); break;
+        case InputRole::points: break;
+    }
+}
+
+ReadResult CsvReader::run()
+{
+    result_.summary.path = file_.path;
+    result_.summary.format = "text";
+    if (!polyline_ && z_ < 0) {
+        throw InputError(file_.path, layout_.header_line, 0,
+                         "expected a z column for points (z, elev, elevation, height, h, alt; "
+                         "or --columns)");
+    }
+    csv::LineCursor cursor(text_);
+    cursor.seek(layout_.data_offset, layout_.data_line);
+    std::string_view line;
+    std::size_t next_report = 1u << 16;
+    while (cursor.next(line)) {
+        if (csv::is_blank(line)) {
+            if (polyline_ && line_ < 0) flush_line();
+            continue;
+        }
+        if (csv::is_comment(line)) continue;
+        read_row(line, cursor.line_number());
+        if (cursor.line_number() >= next_report) {
+            next_report += 1u << 16;
+            progress_.report(static_cast<double>(cursor.offset()) /
+                             static_cast<double>(cursor.size()));
+        }
+    }
+    flush_line();
+    if (layout_.count_line > 0 && layout_.declared_count != rows_) {
+        result_.summary.warnings.push_back(
+            "line " + std::to_string(layout_.count_line) + " declares " +
+            std::to_string(layout_.declared_count) + " points, the file has " +
+            std::to_string(rows_));
+    }
+    if (geographic_) {
+        result_.crs_wkt = "EPSG:4326";
+        result_.summary.crs = "EPSG:4326";
+    }
+    return std::move(result_);
+}
+
+}  // namespace
+
+ReadResult parse_csv_text(std::string_view text, const InputFile& file,
+                          const LoadOptions& options, const Progress& progress)
+{
+    CsvReader reader(text, file, options, progress);
+    return reader.run();
+}
+
+bool csv_has_geometry_column(std::string_view text)
+{
+    csv::LineCursor cursor(text);
+    std::string_view line;
+    while (cursor.next(line)) {
+        if (csv::is_blank(line) || csv::is_comment(line)) continue;
+        std::vector<Cell> cells;
+        const char delimiter = line.find(';') != std::string_view::npos ? ';' : ',';
+        if (!csv::split_fields(line, delimiter, cells)) return false;
+        for (const Cell& c : cells) {
+            std::string name;
+            for (char ch : c.text)
+                name += static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+            if (name == "wkt" || name == "geometry" || name == "the_geom" || name == "geom" ||
+                name == "wkt_geom")
+                return true;
+        }
+        return false;
+    }
+    return false;
+}
+
+ReadResult read_csv(const InputFile& file, const LoadOptions& options, const Progress& progress)
+{
+    std::ifstream in(file.path, std::ios::binary);
+    if (!in) throw InputError(file.path, 0, 0, "cannot open the file");
+    std::error_code ec;
+    const auto size = std::filesystem::file_size(file.path, ec);
+    std::string text;
+    if (!ec) {
+        text.resize(static_cast<std::size_t>(size));
+        in.read(text.data(), static_cast<std::streamsize>(size));
+        text.resize(static_cast<std::size_t>(in.gcount()));
+    } else {
+        text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    }
+    if (csv_has_geometry_column(text)) {
+        ReadResult r = read_ogr(file, options, progress);
+        r.summary.format = "text (OGR, geometry column)";
+        return r;
+    }
+    return parse_csv_text(text, file, options, progress);
+}
+
+}  // namespace dtm::io

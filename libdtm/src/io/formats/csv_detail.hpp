@@ -1,0 +1,84 @@
+// SPDX-License-Identifier: MIT
+/// @file
+/// @brief Internals of the delimited-text reader: line scanning, field splitting, number parsing
+/// and layout detection (shared by csv_layout.cpp and csv.cpp).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace dtm::io::csv {
+
+/// What one column holds.
+enum class Field : std::uint8_t { skip, x, y, z, id, code, line_id, lat, lon };
+
+/// One field of a line: its text (quotes removed) and its 1-based column in the line.
+struct Cell {
+    std::string_view text;
+    std::size_t column = 0;
+};
+
+/// Walks a text buffer line by line; strips a BOM, CR before LF, counts lines from 1.
+class LineCursor {
+public:
+    explicit LineCursor(std::string_view text);
+    /// Next line (without its end); false at the end of the text.
+    bool next(std::string_view& line);
+    /// Continue at byte @p offset (a line start) as if @p line_number lines were read.
+    void seek(std::size_t offset, std::size_t line_number) noexcept
+    {
+        if (offset > 0) pos_ = offset;
+        line_number_ = line_number;
+    }
+    [[nodiscard]] std::size_t line_number() const noexcept { return line_number_; }
+    [[nodiscard]] std::size_t offset() const noexcept { return pos_; }
+    [[nodiscard]] std::size_t size() const noexcept { return text_.size(); }
+
+private:
+    std::string_view text_;
+    std::size_t pos_ = 0;
+    std::size_t line_number_ = 0;
+};
+
+/// True for lines with only blanks, or starting (after blanks) with '#' or "//".
+[[nodiscard]] bool is_blank(std::string_view line) noexcept;
+[[nodiscard]] bool is_comment(std::string_view line) noexcept;
+
+/// Splits @p line at @p delimiter (' ' means runs of spaces/tabs), trimming blanks around fields
+/// and removing surrounding double quotes. Returns false on an unterminated quote.
+bool split_fields(std::string_view line, char delimiter, std::vector<Cell>& cells);
+
+/// Parses a finite decimal number (leading '+' allowed; ',' as decimal mark if
+/// @p decimal_comma). False if the text is not exactly one finite number.
+[[nodiscard]] bool parse_number(std::string_view text, bool decimal_comma, double& value) noexcept;
+
+/// The detected or given shape of a text file.
+struct Layout {
+    char delimiter = ' ';
+    bool decimal_comma = false;
+    std::size_t header_line = 0;  ///< 1-based line of the header, 0 if none
+    std::size_t count_line = 0;   ///< 1-based line of a point-count first line, 0 if none
+    std::size_t declared_count = 0;
+    std::vector<Field> fields;    ///< role of each column
+    std::vector<std::string> names;  ///< header names (empty without a header)
+    std::size_t data_offset = 0;     ///< byte offset where data lines start
+    std::size_t data_line = 0;       ///< line number before the first data line
+};
+
+/// Role named by a header or --columns word ("east", "elevation", "shapeid", ...); skip if none.
+/// @p polyline: "id" groups polyline vertices instead of naming points.
+[[nodiscard]] Field field_from_name(std::string_view name, bool polyline);
+
+/// Detects the layout of @p text. @p columns is LoadOptions::columns (may be empty).
+/// @throws InputError (located at @p file) for an empty file, an unknown --columns word or a
+///         header without the needed columns.
+[[nodiscard]] Layout detect_layout(std::string_view text, const std::string& file,
+                                   const std::string& columns, bool polyline);
+
+/// Index of the first column with role @p f, or -1.
+[[nodiscard]] int column_of(const Layout& layout, Field f) noexcept;
+
+}  // namespace dtm::io::csv

@@ -1,0 +1,271 @@
+// SPDX-License-Identifier: MIT
+// Loading every input of a subcommand into one TerrainInput in one planar CRS:
+//   1. each file goes to its reader (registry.cpp; .ply positional inputs are dtm TINs);
+//   2. its CRS is the one the file carries, else --crs; S-JTSK positive (Y, X) become
+//      Krovak East-North; the summary is taken here, in the input's own CRS;
+//   3. the output CRS is --target-crs, else the first input's CRS; a geographic output CRS is
+//      replaced by the UTM zone of the data (GeographicLib); every input is transformed into it;
+//   4. polyline vertices without a height (2-D lines, rings) take the z of a survey point at
+//      exactly the same xy; hard breakline, boundary and hole vertices left without one are an
+//      error, soft breakline vertices keep NaN (the triangulator computes them).
+#include "dtm/io/inputs.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <unordered_map>
+
+#include "dtm/core/error.hpp"
+#include "dtm/io/formats/crs.hpp"
+#include "dtm/io/reader.hpp"
+#include "dtm/io/tin_file.hpp"
+
+namespace dtm::io {
+namespace {
+
+struct Loaded {
+    ReadResult result;
+    std::string crs_wkt;  ///< after --crs
+};
+
+bool is_ply(const std::filesystem::path& path)
+{
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return ext == ".ply";
+}
+
+void summarize(InputSummary& s, const TerrainInput& t)
+{
+    s.points = t.points.size();
+    s.breaklines = t.breaklines.size() + t.soft_breaklines.size();
+    s.breakline_vertices = 0;
+    for (const auto* lines : {&t.breaklines, &t.soft_breaklines}) {
+        for (const Polyline& l : *lines) s.breakline_vertices += l.points.size();
+    }
+    s.boundaries = t.boundaries.size();
+    s.holes = t.holes.size() + t.hole_seeds.size();
+    Box2 box;
+    double zmin = std::numeric_limits<double>::infinity();
+    double zmax = -zmin;
+    const auto add = [&](const Point3& p) {
+        box.add(p);
+        if (std::isfinite(p.z)) {
+            zmin = std::min(zmin, p.z);
+            zmax = std::max(zmax, p.z);
+        }
+    };
+    for (const Point3& p : t.points) add(p);
+    for (const auto* lines : {&t.breaklines, &t.soft_breaklines, &t.boundaries, &t.holes}) {
+        for (const Polyline& l : *lines) std::for_each(l.points.begin(), l.points.end(), add);
+    }
+    for (const Point2& p : t.hole_seeds) box.add(p);
+    if (!box.empty()) s.bbox = {box.xmin, box.ymin, box.xmax, box.ymax};
+    if (zmin <= zmax) s.z_range = {zmin, zmax};
+    std::vector<Point2> xy;
+    xy.reserve(t.points.size());
+    for (const Point3& p : t.points) xy.push_back(p.xy());
+    std::sort(xy.begin(), xy.end(), [](const Point2& a, const Point2& b) {
+        return a.x < b.x || (a.x == b.x && a.y < b.y);
+    });
+    s.duplicates = 0;
+    for (std::size_t i = 1; i < xy.size(); ++i) s.duplicates += xy[i] == xy[i - 1] ? 1u : 0u;
+}
+
+Loaded read_one(const InputFile& file, const LoadOptions& options, const Progress& progress,
+                std::optional<Tin>& tin)
+{
+    Loaded loaded;
+    if (file.role == InputRole::points && is_ply(file.path)) {
+        LoadedTin t = read_tin_ply(file.path);
+        loaded.result.terrain.points = t.tin.vertices;
+        loaded.result.crs_wkt = t.crs_wkt;
+        loaded.result.summary.path = file.path;
+        loaded.result.summary.format = "dtm PLY TIN";
+        if (tin) {
+            loaded.result.summary.warnings.push_back(
+                "only the first PLY TIN is used as a TIN; this one adds its vertices as points");
+        } else {
+            tin = std::move(t.tin);
+        }
+    } else {
+        loaded.result = find_reader(file.path).read(file, options, progress);
+    }
+    loaded.crs_wkt = loaded.result.crs_wkt;
+    if (loaded.crs_wkt.empty() && !options.crs.empty()) {
+        loaded.crs_wkt = crs_to_wkt(options.crs, "--crs");
+    }
+    InputSummary& s = loaded.result.summary;
+    s.path = file.path;
+    s.crs = crs_label(loaded.crs_wkt);
+    if (crs_is_sjtsk(loaded.crs_wkt)) {
+        const std::size_t n = sjtsk_to_east_north(loaded.result.terrain);
+        if (n > 0) {
+            s.warnings.push_back(std::to_string(n) +
+                                 " positive S-JTSK (Y, X) coordinates converted to Krovak "
+                                 "East-North (E = -Y, N = -X)");
+        }
+    }
+    summarize(s, loaded.result.terrain);
+    return loaded;
+}
+
+/// Output CRS (step 3) and the UTM zone when geographic inputs are projected by GeographicLib.
+struct Target {
+    std::string wkt;
+    std::optional<UtmZone> utm;
+};
+
+Target choose_target(const LoadOptions& options, const std::vector<Loaded>& loaded)
+{
+    Target target;
+    if (!options.target_crs.empty()) {
+        target.wkt = crs_to_wkt(options.target_crs, "--target-crs");
+        return target;
+    }
+    for (const Loaded& l : loaded) {
+        if (l.crs_wkt.empty()) continue;
+        if (!crs_is_geographic(l.crs_wkt)) {
+            target.wkt = l.crs_wkt;
+            return target;
+        }
+        const auto& b = l.result.summary.bbox;
+        UtmZone zone = utm_zone_for((b[0] + b[2]) / 2.0, (b[1] + b[3]) / 2.0);
+        target.utm = zone;
+        target.wkt = crs_to_wkt("EPSG:" + std::to_string(zone.epsg()), "UTM zone");
+        return target;
+    }
+    return target;
+}
+
+bool wgs84_like(const std::string& wkt)
+{
+    const std::string label = crs_label(wkt);
+    return label == "EPSG:4326" || label == "EPSG:4258" || label == "EPSG:4979" ||
+           label == "EPSG:4937" || label == "OGC:CRS84";
+}
+
+void to_target(Loaded& l, const Target& target)
+{
+    const std::string name = l.result.summary.path.string();
+    if (l.crs_wkt.empty() || target.wkt.empty()) {
+        if (!target.wkt.empty()) {
+            l.result.summary.warnings.push_back(
+                "no CRS in the file and no --crs: taken to be in the output CRS");
+        }
+        return;
+    }
+    if (crs_equivalent(l.crs_wkt, target.wkt)) return;
+    if (target.utm && crs_is_geographic(l.crs_wkt)) {
+        if (!wgs84_like(l.crs_wkt)) {
+            transform_terrain(l.result.terrain, l.crs_wkt, crs_to_wkt("EPSG:4326", "WGS84"), name);
+        }
+        project_to_utm(l.result.terrain, *target.utm, name);
+        return;
+    }
+    transform_terrain(l.result.terrain, l.crs_wkt, target.wkt, name);
+}
+
+struct XyHash {
+    std::size_t operator()(const Point2& p) const noexcept
+    {
+        const std::size_t a = std::hash<double>{}(p.x);
+        return a ^ (std::hash<double>{}(p.y) + 0x9e3779b97f4a7c15ULL + (a << 6) + (a >> 2));
+    }
+};
+
+void fill_heights(TerrainInput& t)
+{
+    std::unordered_map<Point2, double, XyHash> z_at;
+    const auto missing = [](const std::vector<Polyline>& lines) {
+        return std::any_of(lines.begin(), lines.end(), [](const Polyline& l) {
+            return std::any_of(l.points.begin(), l.points.end(),
+                               [](const Point3& p) { return std::isnan(p.z); });
+        });
+    };
+    if (!missing(t.breaklines) && !missing(t.boundaries) && !missing(t.holes) &&
+        !missing(t.soft_breaklines))
+        return;
+    z_at.reserve(t.points.size());
+    for (const Point3& p : t.points) z_at.emplace(p.xy(), p.z);
+    const auto fill = [&](std::vector<Polyline>& lines, const char* kind, bool required) {
+        for (Polyline& l : lines) {
+            for (Point3& p : l.points) {
+                if (!std::isnan(p.z)) continue;
+                const auto it = z_at.find(p.xy());
+                if (it != z_at.end()) {
+                    p.z = it->second;
+                } else if (required) {
+                    throw InputError(l.source + ": " + kind + " vertex (" + std::to_string(p.x) +
+                                     ", " + std::to_string(p.y) +
+                                     ") has no height: expected a z column/geometry z, --z-field, "
+                                     "or a survey point at that position (2-D lines: use "
+                                     "--soft-breaklines)");
+                }
+            }
+        }
+    };
+    fill(t.breaklines, "breakline", true);
+    fill(t.boundaries, "boundary", false);
+    fill(t.holes, "hole", false);
+    fill(t.soft_breaklines, "soft breakline", false);
+}
+
+template <class T>
+void append(std::vector<T>& to, std::vector<T>& from)
+{
+    to.insert(to.end(), std::make_move_iterator(from.begin()), std::make_move_iterator(from.end()));
+}
+
+void merge(LoadedInputs& out, Loaded& l)
+{
+    TerrainInput& t = l.result.terrain;
+    const std::size_t before = out.terrain.points.size();
+    const bool labelled = !l.result.labels.ids.empty() || !out.labels.ids.empty();
+    if (labelled) {
+        out.labels.ids.resize(before);
+        out.labels.codes.resize(before);
+        append(out.labels.ids, l.result.labels.ids);
+        append(out.labels.codes, l.result.labels.codes);
+        out.labels.ids.resize(before + t.points.size());
+        out.labels.codes.resize(before + t.points.size());
+    }
+    append(out.terrain.points, t.points);
+    append(out.terrain.breaklines, t.breaklines);
+    append(out.terrain.soft_breaklines, t.soft_breaklines);
+    append(out.terrain.boundaries, t.boundaries);
+    append(out.terrain.holes, t.holes);
+    append(out.terrain.hole_seeds, t.hole_seeds);
+    out.skipped_lines += l.result.summary.skipped_lines;
+    out.summaries.push_back(std::move(l.result.summary));
+}
+
+}  // namespace
+
+LoadedInputs load_inputs(const LoadOptions& options, const Progress& progress)
+{
+    if (options.files.empty()) throw UsageError("expected at least one input file");
+    LoadedInputs out;
+    std::vector<Loaded> loaded;
+    const double n = static_cast<double>(options.files.size());
+    std::size_t tin_input = options.files.size();
+    for (std::size_t i = 0; i < options.files.size(); ++i) {
+        const double at = static_cast<double>(i);
+        const bool had_tin = out.tin.has_value();
+        loaded.push_back(read_one(options.files[i], options, progress.sub(at / n, (at + 1) / n),
+                                  out.tin));
+        if (!had_tin && out.tin) tin_input = i;
+    }
+    const Target target = choose_target(options, loaded);
+    for (std::size_t i = 0; i < loaded.size(); ++i) {
+        to_target(loaded[i], target);
+        if (i == tin_input) out.tin->vertices = loaded[i].result.terrain.points;
+        merge(out, loaded[i]);
+    }
+    out.crs_wkt = target.wkt;
+    fill_heights(out.terrain);
+    return out;
+}
+
+}  // namespace dtm::io

@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: MIT
+// The input options every terrain-reading subcommand takes (positional INPUTS, --breaklines,
+// --soft-breaklines, --boundary, --holes, CRS and reader options).
+#include "input_args.hpp"
+
+namespace dtm::cli {
+
+void add_input_options(CLI::App& app, InputArgs& args)
+{
+    app.add_option("inputs", args.inputs,
+                   "Survey points: text (x y z, id;Y;X;Z, lat/lon...), OGR vector files (shp, gpkg, "
+                   "geojson, dxf...: points, lines become breaklines), or a dtm .ply TIN")
+        ->check(CLI::ExistingPath);
+    const auto files = [&app](const char* name, std::vector<std::string>& into, const char* what) {
+        app.add_option(name, into, what)->check(CLI::ExistingPath)->allow_extra_args(false);
+    };
+    files("--breaklines", args.breaklines,
+          "Hard 3-D breaklines (OGR lines/polygons, or shapeid,x,y,z text); repeatable");
+    files("--soft-breaklines", args.soft_breaklines,
+          "Soft 2-D breaklines: edges whose heights come from the surface; repeatable");
+    files("--boundary", args.boundaries,
+          "Outer boundary: polygons (inner rings are holes) or closed lines; repeatable");
+    files("--holes", args.holes,
+          "Holes: polygons or closed lines, or points as hole seeds; repeatable");
+    io::LoadOptions& o = args.load;
+    app.add_option("--crs", o.crs, "CRS of inputs that carry none (EPSG:5514, WKT, PROJ)");
+    app.add_option("--target-crs", o.target_crs,
+                   "Transform every input into this CRS (default: the first input's CRS; "
+                   "geographic inputs go to their UTM zone)");
+    app.add_option("--columns", o.columns,
+                   "Text column names in order, e.g. id,y,x,z,code (- skips a column)");
+    app.add_option("--layer", o.layer, "OGR layer to read (default: every layer)");
+    app.add_option("--where", o.where, "OGR attribute filter, e.g. \"type = 'edge'\"");
+    app.add_option("--z-field", o.z_field,
+                   "OGR attribute holding the height (points, or one height per line)");
+    app.add_flag("--skip-bad-lines", o.skip_bad_lines,
+                 "Skip and count malformed text lines instead of failing");
+}
+
+io::LoadOptions to_load_options(const InputArgs& args)
+{
+    io::LoadOptions options = args.load;
+    options.files.clear();
+    const auto add = [&options](const std::vector<std::string>& paths, io::InputRole role) {
+        for (const std::string& p : paths) options.files.push_back({p, role});
+    };
+    add(args.inputs, io::InputRole::points);
+    add(args.breaklines, io::InputRole::breaklines);
+    add(args.soft_breaklines, io::InputRole::soft_breaklines);
+    add(args.boundaries, io::InputRole::boundary);
+    add(args.holes, io::InputRole::holes);
+    return options;
+}
+
+}  // namespace dtm::cli
