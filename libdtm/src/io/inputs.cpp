@@ -6,8 +6,11 @@
 //   3. the output CRS is --target-crs, else the first input's CRS; a geographic output CRS is
 //      replaced by the UTM zone of the data (GeographicLib); every input is transformed into it;
 //   4. polyline vertices without a height (2-D lines, rings) take the z of a survey point at
-//      exactly the same xy; hard breakline, boundary and hole vertices left without one are an
-//      error, soft breakline vertices keep NaN (the triangulator computes them).
+//      exactly the same xy; hard breakline vertices left without one are an error; boundary and
+//      hole vertices left without one take the height of the surface (linear interpolation in
+//      the Delaunay TIN of the points and hard breaklines, built without the rings; nearest
+//      vertex outside its hull); soft breakline vertices keep NaN (the triangulator computes
+//      them).
 #include "dtm/io/inputs.hpp"
 
 #include <algorithm>
@@ -15,7 +18,9 @@
 #include <string>
 #include <unordered_map>
 
+#include "dtm/algo/triangulate.hpp"
 #include "dtm/core/error.hpp"
+#include "dtm/geom/predicates.hpp"
 #include "dtm/io/formats/crs.hpp"
 #include "dtm/io/reader.hpp"
 #include "dtm/io/tin_file.hpp"
@@ -212,6 +217,71 @@ void fill_heights(TerrainInput& t)
     fill(t.soft_breaklines, "soft breakline", false);
 }
 
+/// Linear height of the TIN at @p q by a visibility walk from @p start; nearest vertex when q
+/// is outside the hull (or the walk does not settle).
+double surface_z(const Tin& tin, const Point3& q, TriangleIndex& start)
+{
+    TriangleIndex t = start < tin.triangles.size() ? start : 0;
+    for (std::size_t steps = 0; steps < 4 * tin.triangles.size() + 8; ++steps) {
+        const Triangle& tri = tin.triangles[t];
+        int out = -1;
+        for (int i = 0; i < 3 && out < 0; ++i) {
+            const Point3& a = tin.vertex(tri.v[static_cast<std::size_t>((i + 1) % 3)]);
+            const Point3& b = tin.vertex(tri.v[static_cast<std::size_t>((i + 2) % 3)]);
+            if (geom::orient2d(a, b, q) < 0) out = i;
+        }
+        if (out < 0) {
+            start = t;
+            const Point3& a = tin.vertex(tri.v[0]);
+            const Point3& b = tin.vertex(tri.v[1]);
+            const Point3& c = tin.vertex(tri.v[2]);
+            const double d = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
+            const double u = ((b.x - q.x) * (c.y - q.y) - (c.x - q.x) * (b.y - q.y)) / d;
+            const double v = ((c.x - q.x) * (a.y - q.y) - (a.x - q.x) * (c.y - q.y)) / d;
+            return u * a.z + v * b.z + (1.0 - u - v) * c.z;
+        }
+        const TriangleIndex next = tri.n[static_cast<std::size_t>(out)];
+        if (next == no_triangle) break;
+        t = next;
+    }
+    const auto nearest = std::min_element(
+        tin.vertices.begin(), tin.vertices.end(), [&q](const Point3& a, const Point3& b) {
+            return std::hypot(a.x - q.x, a.y - q.y) < std::hypot(b.x - q.x, b.y - q.y);
+        });
+    return nearest->z;
+}
+
+/// Step 4 for rings: heights of boundary/hole vertices from the surface of the other inputs.
+void rings_from_surface(TerrainInput& t, std::vector<std::string>& warnings)
+{
+    std::size_t missing = 0;
+    for (const auto* rings : {&t.boundaries, &t.holes}) {
+        for (const Polyline& l : *rings) {
+            missing += static_cast<std::size_t>(std::count_if(
+                l.points.begin(), l.points.end(), [](const Point3& p) { return std::isnan(p.z); }));
+        }
+    }
+    if (missing == 0) return;
+    TerrainInput surface;
+    surface.points = t.points;
+    surface.breaklines = t.breaklines;
+    if (surface.points.size() < 3) {
+        throw InputError("boundary/hole vertices have no heights and there are fewer than 3 "
+                         "survey points to take them from");
+    }
+    const Tin tin = triangulate(surface).tin;
+    TriangleIndex start = 0;
+    for (auto* rings : {&t.boundaries, &t.holes}) {
+        for (Polyline& l : *rings) {
+            for (Point3& p : l.points) {
+                if (std::isnan(p.z)) p.z = surface_z(tin, p, start);
+            }
+        }
+    }
+    warnings.push_back(std::to_string(missing) +
+                       " boundary/hole vertices without height took the height of the surface");
+}
+
 template <class T>
 void append(std::vector<T>& to, std::vector<T>& from)
 {
@@ -265,6 +335,13 @@ LoadedInputs load_inputs(const LoadOptions& options, const Progress& progress)
     }
     out.crs_wkt = target.wkt;
     fill_heights(out.terrain);
+    std::vector<std::string> notes;
+    rings_from_surface(out.terrain, notes);
+    for (const std::string& note : notes) {
+        for (InputSummary& s : out.summaries) {
+            if (s.boundaries > 0 || s.holes > 0) s.warnings.push_back(note);
+        }
+    }
     return out;
 }
 
