@@ -96,6 +96,16 @@ void add_signed(const BigInt& a, const BigInt& b, int s, BigInt& r) noexcept
     }
 }
 
+bool all_finite(const double* v, int n) noexcept
+{
+    for (int i = 0; i < n; ++i) {
+        if (!std::isfinite(v[i])) {
+            return false;
+        }
+    }
+    return true;
+}
+
 }  // namespace
 
 int common_exponent(const double* values, int n) noexcept
@@ -118,8 +128,7 @@ int common_exponent(const double* values, int n) noexcept
 BigInt bigint_from_double(double v, int base_exponent) noexcept
 {
     BigInt r;
-    r.limb.fill(0);
-    if (v == 0.0) {
+    if (v == 0.0 || !std::isfinite(v)) {
         return r;
     }
     int e = 0;
@@ -176,6 +185,9 @@ void bigint_mul(const BigInt& a, const BigInt& b, BigInt& r) noexcept
 int orient2d_bigint(double ax, double ay, double bx, double by, double cx, double cy) noexcept
 {
     const double v[6] = {ax, ay, bx, by, cx, cy};
+    if (!all_finite(v, 6)) {
+        return 0;  // outside the contract (finite input); never read garbage
+    }
     const int base = common_exponent(v, 6);
     BigInt acx;
     BigInt acy;
@@ -219,6 +231,9 @@ int incircle_bigint(double ax, double ay, double bx, double by, double cx, doubl
                     double dx, double dy) noexcept
 {
     const double v[8] = {ax, ay, bx, by, cx, cy, dx, dy};
+    if (!all_finite(v, 8)) {
+        return 0;  // outside the contract (finite input); never read garbage
+    }
     const int base = common_exponent(v, 8);
     const BigInt idx = bigint_from_double(dx, base);
     const BigInt idy = bigint_from_double(dy, base);

@@ -56,12 +56,9 @@ inline constexpr double incircle_underflow_guard = 0x1p-500;
     const double det = detleft - detright;
     const double detsum = std::abs(detleft) + std::abs(detright);
     const double bound = detail::orient_bound_a * (detsum + detail::orient_underflow_guard);
-    // NaN/inf from overflow fail both tests and go to the exact path.
-    if (det > bound) {
-        return 1;
-    }
-    if (-det > bound) {
-        return -1;
+    // NaN/inf from overflow fail the test and go to the exact path.
+    if (std::abs(det) > bound) [[likely]] {
+        return (det > 0.0) - (det < 0.0);
     }
     return detail::orient2d_adaptive(ax, ay, bx, by, cx, cy, detsum);
 }
@@ -98,11 +95,8 @@ inline constexpr double incircle_underflow_guard = 0x1p-500;
                              (std::abs(cdxady) + std::abs(adxcdy) + g) * (blift + g) +
                              (std::abs(adxbdy) + std::abs(bdxady) + g) * (clift + g);
     const double bound = detail::incircle_bound_a * permanent;
-    if (det > bound) {
-        return 1;
-    }
-    if (-det > bound) {
-        return -1;
+    if (std::abs(det) > bound) [[likely]] {
+        return (det > 0.0) - (det < 0.0);
     }
     return detail::incircle_adaptive(ax, ay, bx, by, cx, cy, dx, dy, permanent);
 }

@@ -17,7 +17,7 @@ namespace dtm::geom::detail {
 /// Signed magnitude integer with 32-bit limbs, least significant first. No allocation.
 struct BigInt {
     static constexpr int capacity = 272;  // 8704 bits: room for incircle's degree-4 terms
-    std::array<std::uint32_t, capacity> limb;
+    std::array<std::uint32_t, capacity> limb{};
     int size = 0;  ///< limbs in use; 0 means the value is zero
     int sign = 0;  ///< -1, 0, +1
 };
