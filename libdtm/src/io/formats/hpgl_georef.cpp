@@ -65,6 +65,7 @@ std::vector<ControlPoint> read_control_points(const std::filesystem::path& file)
     std::string line;
     std::vector<double> values;
     std::size_t number = 0;
+    bool header = false;
     while (std::getline(in, line)) {
         ++number;
         if (number == 1 && line.size() >= 3 && line.compare(0, 3, "\xEF\xBB\xBF") == 0) line.erase(0, 3);
@@ -72,7 +73,10 @@ std::vector<ControlPoint> read_control_points(const std::filesystem::path& file)
         if (first == std::string::npos || line[first] == '#') continue;
         std::size_t column = 0;
         if (!split_numbers(line, values, column)) {
-            if (points.empty() && number == 1) continue;  // header
+            if (points.empty() && !header) {  // one header line before the data
+                header = true;
+                continue;
+            }
             throw InputError(file, number, column, "expected four numbers px,py,E,N");
         }
         if (values.size() != 4) {
