@@ -23,6 +23,7 @@
 #include <limits>
 #include <string>
 
+#include "algo/detail/constraint_batch.hpp"
 #include "algo/detail/delaunay_dc.hpp"
 #include "algo/detail/input_merge.hpp"
 #include "algo/detail/mesh_edit.hpp"
@@ -88,16 +89,13 @@ Kernel build_kernel(const MergedInput& in, bool with_soft, const TriangulateOpti
 
     start = std::chrono::steady_clock::now();
     detail::MeshEditor editor(k.mesh, k.slots, k.z, options.z_tolerance);
-    const Progress constrain = progress.sub(0.7, 1.0);
-    for (std::size_t s = 0; s < in.segments.size(); ++s) {
-        const detail::InputSegment& seg = in.segments[s];
+    std::vector<detail::InputSegment> segments;
+    segments.reserve(in.segments.size());
+    for (const detail::InputSegment& seg : in.segments) {
         if (!with_soft && seg.bits == detail::constraint_soft) continue;
-        editor.insert_segment(kernel_of[seg.a], kernel_of[seg.b], seg.bits);
-        if ((s & 1023u) == 0) {
-            constrain.report(static_cast<double>(s) / static_cast<double>(in.segments.size()),
-                             "inserting breaklines");
-        }
+        segments.push_back({kernel_of[seg.a], kernel_of[seg.b], seg.bits});
     }
+    detail::insert_segments(editor, k.mesh, segments, progress.sub(0.7, 1.0));
     const auto first_added = static_cast<VertexIndex>(in.vertices.size());
     for (std::size_t v = points.size(); v < k.mesh.points.size(); ++v) {
         k.vertex_of_kernel.push_back(first_added + static_cast<VertexIndex>(v - points.size()));

@@ -20,6 +20,7 @@
 #pragma once
 
 #include <cstdint>
+#include <stdexcept>
 #include <vector>
 
 #include "dtm/core/point.hpp"
@@ -100,8 +101,10 @@ struct EdgeMesh {
         if (!slots.free.empty()) {
             s = slots.free.back();
             slots.free.pop_back();
-        } else {
+        } else if (slots.next < slots.end) {
             s = slots.next++;
+        } else {
+            throw std::logic_error("edge mesh: no free edge slot (internal error)");
         }
         const EdgeId e = 2 * s;
         org[e] = a;

@@ -90,13 +90,13 @@ VertexId MeshEditor::add_vertex(Point2 p, double z)
     return static_cast<VertexId>(mesh_.points.size() - 1);
 }
 
-void MeshEditor::delete_edge(EdgeId e)
+void MeshEditor::delete_edge(EdgeId e, EdgeSlots& slots)
 {
     for (const EdgeId d : {e, EdgeMesh::sym(e)}) {
         const VertexId v = mesh_.org[d];
         if (vertex_edge_[v] == d) vertex_edge_[v] = mesh_.onext[d] != d ? mesh_.onext[d] : no_edge;
     }
-    mesh_.delete_edge(slots_, e);
+    mesh_.delete_edge(slots, e);
 }
 
 void MeshEditor::flip(EdgeId e)
@@ -164,7 +164,7 @@ VertexId MeshEditor::insert_point(Point2 p, double z, EdgeId hint)
         split_a = m.org[e];
         split_b = m.dest(e);
         const EdgeId t = m.oprev[e];
-        delete_edge(e);
+        delete_edge(e, slots_);
         e = t;
     }
     const VertexId v = add_vertex(p, z);

@@ -46,6 +46,29 @@ public:
 
     [[nodiscard]] const std::vector<Crossing>& crossings() const noexcept { return crossings_; }
 
+    /// One piece of a segment: from a vertex to the next vertex reached along it.
+    struct PiecePlan {
+        VertexId from = 0;
+        VertexId to = 0;                      ///< the segment's end, or a vertex exactly on it
+        EdgeId along = no_edge;               ///< an existing edge from -> to
+        EdgeId crossed_constraint = no_edge;  ///< the walk met this constrained edge
+        std::vector<EdgeId> crossed;          ///< edges the piece crosses (the cavity)
+        std::vector<EdgeId> right_chain;      ///< cavity boundary right of the piece, from -> to
+        std::vector<EdgeId> left_chain;       ///< cavity boundary left of it, to -> from
+    };
+    /// The whole insertion of a segment, planned on the current mesh without changing it.
+    struct SegmentPlan {
+        std::vector<PiecePlan> pieces;
+        std::vector<VertexId> vertices;  ///< every vertex whose edges the insertion changes
+        bool crosses_constraint = false; ///< must go through insert_segment instead
+    };
+
+    /// Read-only: plans the insertion of a-b. Safe to call from several threads at once.
+    [[nodiscard]] SegmentPlan plan_segment(VertexId a, VertexId b) const;
+    /// Applies a plan made on the current mesh, allocating edges from @p slots (the plan's own
+    /// deleted edges suffice). Plans whose vertex sets are disjoint may be applied concurrently.
+    void apply_segment(const SegmentPlan& plan, std::uint8_t bits, EdgeSlots& slots);
+
 private:
     struct Work {
         VertexId a;
@@ -60,13 +83,15 @@ private:
     [[nodiscard]] EdgeId find_edge(VertexId a, VertexId b) const;
     void ensure_slots(std::size_t count);
     VertexId add_vertex(Point2 p, double z);
-    void delete_edge(EdgeId e);
+    void delete_edge(EdgeId e, EdgeSlots& slots);
     void flip(EdgeId e);
     void legalize(EdgeId e);
+    [[nodiscard]] PiecePlan plan_piece(VertexId u, VertexId w) const;
+    void apply_piece(const PiecePlan& plan, std::uint8_t bits, EdgeSlots& slots);
     void insert_piece(const Work& work, std::vector<Work>& stack);
     void cross_constraint(VertexId u, VertexId w, std::uint8_t bits, EdgeId f,
                           std::vector<Work>& stack);
-    void fill_cavity(EdgeId base, std::vector<EdgeId>& edges);
+    void fill_cavity(EdgeId base, const std::vector<EdgeId>& edges, EdgeSlots& slots);
 
     EdgeMesh& mesh_;
     EdgeSlots& slots_;

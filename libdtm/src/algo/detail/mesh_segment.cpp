@@ -21,12 +21,13 @@ bool same_direction(const Point2& a, const Point2& b, const Point2& q)
 
 }  // namespace
 
-void MeshEditor::insert_piece(const Work& work, std::vector<Work>& stack)
+MeshEditor::PiecePlan MeshEditor::plan_piece(VertexId u, VertexId w) const
 {
-    EdgeMesh& m = mesh_;
-    const VertexId u = work.a;
-    const VertexId w = work.b;
+    const EdgeMesh& m = mesh_;
     const auto side = [&](VertexId v) { return orient(u, w, v); };
+    PiecePlan plan;
+    plan.from = u;
+    plan.to = w;
 
     // 1. Find the edge along u->w, or the triangle at u that the segment enters.
     const EdgeId start = vertex_edge_[u];
@@ -36,9 +37,9 @@ void MeshEditor::insert_piece(const Work& work, std::vector<Work>& stack)
     do {
         const VertexId p = m.dest(e);
         if (side_e == 0 && same_direction(m.p(u), m.p(w), m.p(p))) {
-            m.constrained[e >> 1] |= work.bits;
-            stack.push_back({p, w, work.bits, false});
-            return;
+            plan.along = e;
+            plan.to = p;
+            return plan;
         }
         const EdgeId next = m.onext[e];
         const int side_next = side(m.dest(next));
@@ -52,48 +53,91 @@ void MeshEditor::insert_piece(const Work& work, std::vector<Work>& stack)
     if (sector == no_edge) throw Error("triangulation: breakline leaves the triangulated hull");
 
     // 2. Walk through the crossed triangles, collecting crossed edges and the cavity boundary.
-    std::vector<EdgeId> crossed;
-    std::vector<EdgeId> right_chain{sector};                         // u -> ... -> end
-    std::vector<EdgeId> left_chain{m.lnext(m.lnext(sector))};        // reversed: ... -> u
+    plan.right_chain.push_back(sector);                  // u -> ... -> to
+    plan.left_chain.push_back(m.lnext(m.lnext(sector)));  // reversed: ... -> u
     EdgeId f = m.lnext(sector);  // from the right side to the left side of u->w
-    VertexId end = no_edge;
     for (;;) {
         if (m.is_constrained(f)) {
-            cross_constraint(u, w, work.bits, f, stack);
-            return;
+            plan.crossed_constraint = f;
+            return plan;
         }
-        crossed.push_back(f);
+        plan.crossed.push_back(f);
         const EdgeId g = m.oprev[f];  // p -> v, v the apex beyond f
         const VertexId v = m.dest(g);
         const int s = v == w ? 0 : side(v);
         if (s == 0) {
-            right_chain.push_back(g);
-            left_chain.push_back(m.lnext(g));
-            end = v;
+            plan.right_chain.push_back(g);
+            plan.left_chain.push_back(m.lnext(g));
+            plan.to = v;
             break;
         }
         if (s < 0) {
-            right_chain.push_back(g);
+            plan.right_chain.push_back(g);
             f = m.lnext(g);
         } else {
-            left_chain.push_back(m.lnext(g));
+            plan.left_chain.push_back(m.lnext(g));
             f = g;
         }
     }
-    std::reverse(left_chain.begin(), left_chain.end());
-
-    // 3. Replace the crossed edges by the segment and retriangulate both sides.
-    for (const EdgeId c : crossed) delete_edge(c);
-    ensure_slots(crossed.size() + 4);
-    const EdgeId segment = m.connect(slots_, left_chain.back(), left_chain.front());
-    m.constrained[segment >> 1] = work.bits;
-    vertex_edge_[u] = segment;
-    fill_cavity(segment, left_chain);
-    fill_cavity(EdgeMesh::sym(segment), right_chain);
-    if (end != w) stack.push_back({end, w, work.bits, false});
+    std::reverse(plan.left_chain.begin(), plan.left_chain.end());
+    return plan;
 }
 
-void MeshEditor::fill_cavity(EdgeId first_base, std::vector<EdgeId>& edges)
+void MeshEditor::apply_piece(const PiecePlan& plan, std::uint8_t bits, EdgeSlots& slots)
+{
+    EdgeMesh& m = mesh_;
+    if (plan.along != no_edge) {
+        m.constrained[plan.along >> 1] |= bits;
+        return;
+    }
+    // Replace the crossed edges by the segment and retriangulate both sides.
+    for (const EdgeId c : plan.crossed) delete_edge(c, slots);
+    const EdgeId segment = m.connect(slots, plan.left_chain.back(), plan.left_chain.front());
+    m.constrained[segment >> 1] = bits;
+    vertex_edge_[plan.from] = segment;
+    fill_cavity(segment, plan.left_chain, slots);
+    fill_cavity(EdgeMesh::sym(segment), plan.right_chain, slots);
+}
+
+void MeshEditor::insert_piece(const Work& work, std::vector<Work>& stack)
+{
+    const PiecePlan plan = plan_piece(work.a, work.b);
+    if (plan.crossed_constraint != no_edge) {
+        cross_constraint(work.a, work.b, work.bits, plan.crossed_constraint, stack);
+        return;
+    }
+    ensure_slots(plan.crossed.size() + 4);
+    apply_piece(plan, work.bits, slots_);
+    if (plan.to != work.b) stack.push_back({plan.to, work.b, work.bits, false});
+}
+
+MeshEditor::SegmentPlan MeshEditor::plan_segment(VertexId a, VertexId b) const
+{
+    SegmentPlan plan;
+    VertexId u = a;
+    while (u != b) {
+        PiecePlan piece = plan_piece(u, b);
+        if (piece.crossed_constraint != no_edge) {
+            plan.crosses_constraint = true;
+            return plan;
+        }
+        plan.vertices.push_back(piece.from);
+        plan.vertices.push_back(piece.to);
+        for (const EdgeId e : piece.right_chain) plan.vertices.push_back(mesh_.dest(e));
+        for (const EdgeId e : piece.left_chain) plan.vertices.push_back(mesh_.org[e]);
+        u = piece.to;
+        plan.pieces.push_back(std::move(piece));
+    }
+    return plan;
+}
+
+void MeshEditor::apply_segment(const SegmentPlan& plan, std::uint8_t bits, EdgeSlots& slots)
+{
+    for (const PiecePlan& piece : plan.pieces) apply_piece(piece, bits, slots);
+}
+
+void MeshEditor::fill_cavity(EdgeId first_base, const std::vector<EdgeId>& edges,
+                             EdgeSlots& slots)
 {
     // Explicit stack of sub-polygons: base edge plus a range of boundary edges in `edges`
     // (boundary ccw from dest(base) back to org(base), polygon on the left of each).
@@ -118,11 +162,11 @@ void MeshEditor::fill_cavity(EdgeId first_base, std::vector<EdgeId>& edges)
         }
         EdgeId into_c = edges[best - 1];
         if (best > piece.lo + 1) {
-            into_c = m.connect(slots_, piece.base, edges[best]);
+            into_c = m.connect(slots, piece.base, edges[best]);
             pieces.push_back({EdgeMesh::sym(into_c), piece.lo, best});
         }
         if (best < piece.hi - 1) {
-            const EdgeId c_to_u = m.connect(slots_, into_c, piece.base);
+            const EdgeId c_to_u = m.connect(slots, into_c, piece.base);
             pieces.push_back({EdgeMesh::sym(c_to_u), best, piece.hi});
         }
     }

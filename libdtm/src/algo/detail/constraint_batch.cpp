@@ -1,0 +1,213 @@
+// SPDX-License-Identifier: MIT
+//
+// Parallel constraint insertion by deterministic reservations.
+//
+// Segments that touch no other segment (except at shared endpoints) never create vertices and
+// never meet a constrained edge of another segment while they are inserted, so the only way two
+// of them interact is through the triangles they cross. Each is planned on the current mesh
+// without changing it (the walk along the segment: crossed edges and cavity chains, see
+// mesh_segment.cpp); every vertex whose ring a plan would change is reserved with the segment's
+// priority (its input index, by an atomic minimum); a plan that holds all its reservations is
+// applied, concurrently with the other winners, whose vertex sets are disjoint from it; the rest
+// try again in the next round on the updated mesh. A plan whose vertices are disjoint from every
+// earlier pending plan cannot be changed by them, so the result equals sequential insertion in
+// input order whatever the schedule (Blelloch, Fineman, Gibbons, Shun, "Internally deterministic
+// parallel algorithms can be fast", PPoPP 2012); the priority order is a fixed hash of the input
+// index, so polyline chains do not serialise the rounds. Segments that cross, overlap or touch others
+// are inserted afterwards one by one in input order, which keeps the vertices added at
+// crossings numbered the same way for every tile and thread count.
+#include "algo/detail/constraint_batch.hpp"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <memory>
+
+#include "dtm/geom/predicates.hpp"
+
+namespace dtm::detail {
+namespace {
+
+bool between(const Point2& a, const Point2& b, const Point2& q)
+{
+    return std::min(a.x, b.x) <= q.x && q.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= q.y &&
+           q.y <= std::max(a.y, b.y);
+}
+
+/// Segments s and t (kernel vertex ids) meet anywhere but at one shared endpoint.
+bool touch(const EdgeMesh& m, const InputSegment& s, const InputSegment& t)
+{
+    const VertexId shared = s.a == t.a || s.a == t.b ? s.a : (s.b == t.a || s.b == t.b ? s.b : no_edge);
+    if (shared != no_edge) {
+        if ((s.a == t.a && s.b == t.b) || (s.a == t.b && s.b == t.a)) return true;
+        const VertexId x = s.a == shared ? s.b : s.a;
+        const VertexId y = t.a == shared ? t.b : t.a;
+        if (geom::orient2d(m.p(shared), m.p(x), m.p(y)) != 0) return false;
+        // Collinear: they overlap unless they leave the shared endpoint in opposite directions.
+        const Point2 &c = m.p(shared), &px = m.p(x), &py = m.p(y);
+        return ((px.x > c.x) == (py.x > c.x)) && ((px.x < c.x) == (py.x < c.x)) &&
+               ((px.y > c.y) == (py.y > c.y)) && ((px.y < c.y) == (py.y < c.y));
+    }
+    const Point2 &a = m.p(s.a), &b = m.p(s.b), &c = m.p(t.a), &d = m.p(t.b);
+    const int o1 = geom::orient2d(a, b, c);
+    const int o2 = geom::orient2d(a, b, d);
+    const int o3 = geom::orient2d(c, d, a);
+    const int o4 = geom::orient2d(c, d, b);
+    if (o1 * o2 < 0 && o3 * o4 < 0) return true;
+    return (o1 == 0 && between(a, b, c)) || (o2 == 0 && between(a, b, d)) ||
+           (o3 == 0 && between(c, d, a)) || (o4 == 0 && between(c, d, b));
+}
+
+}  // namespace
+
+std::vector<bool> find_free_segments(const EdgeMesh& m, const std::vector<InputSegment>& segments)
+{
+    const std::size_t count = segments.size();
+    std::vector<bool> free(count, true);
+    if (count < 2) return free;
+    // Uniform grid over the segments' extent, about one cell per segment; each segment is
+    // listed in every cell its bounding box covers, and pairs sharing a cell are tested.
+    Box2 box;
+    double total_length = 0.0;
+    for (const InputSegment& s : segments) {
+        box.add(m.p(s.a));
+        box.add(m.p(s.b));
+        total_length += std::abs(m.p(s.a).x - m.p(s.b).x) + std::abs(m.p(s.a).y - m.p(s.b).y);
+    }
+    const double extent = std::max(box.xmax - box.xmin, box.ymax - box.ymin);
+    const double cell = std::max({total_length / static_cast<double>(count), extent / 4096.0,
+                                  extent * 1e-12, 1e-300});
+    const auto cols = static_cast<std::size_t>((box.xmax - box.xmin) / cell) + 1;
+    const auto rows = static_cast<std::size_t>((box.ymax - box.ymin) / cell) + 1;
+    const auto cell_of = [&](double v, double lo, std::size_t n) {
+        return std::min(static_cast<std::size_t>((v - lo) / cell), n - 1);
+    };
+    std::vector<std::pair<std::size_t, std::uint32_t>> entries;  // (cell, segment)
+    entries.reserve(2 * count);
+    for (std::size_t i = 0; i < count; ++i) {
+        const Point2 &a = m.p(segments[i].a), &b = m.p(segments[i].b);
+        const std::size_t c0 = cell_of(std::min(a.x, b.x), box.xmin, cols);
+        const std::size_t c1 = cell_of(std::max(a.x, b.x), box.xmin, cols);
+        const std::size_t r0 = cell_of(std::min(a.y, b.y), box.ymin, rows);
+        const std::size_t r1 = cell_of(std::max(a.y, b.y), box.ymin, rows);
+        for (std::size_t r = r0; r <= r1; ++r) {
+            for (std::size_t c = c0; c <= c1; ++c) {
+                entries.emplace_back(r * cols + c, static_cast<std::uint32_t>(i));
+            }
+        }
+    }
+    std::sort(entries.begin(), entries.end());
+    for (std::size_t lo = 0; lo < entries.size();) {
+        std::size_t hi = lo;
+        while (hi < entries.size() && entries[hi].first == entries[lo].first) ++hi;
+        for (std::size_t i = lo; i < hi; ++i) {
+            for (std::size_t j = i + 1; j < hi; ++j) {
+                const std::uint32_t s = entries[i].second;
+                const std::uint32_t t = entries[j].second;
+                if ((free[s] || free[t]) && touch(m, segments[s], segments[t])) {
+                    free[s] = false;
+                    free[t] = false;
+                }
+            }
+        }
+        lo = hi;
+    }
+    return free;
+}
+
+void insert_segments(MeshEditor& editor, const EdgeMesh& mesh,
+                     const std::vector<InputSegment>& segments, const Progress& progress)
+{
+    const std::vector<bool> free = find_free_segments(mesh, segments);
+    std::vector<std::uint32_t> pending;
+    std::vector<std::uint32_t> later;
+    for (std::size_t i = 0; i < segments.size(); ++i) {
+        (free[i] ? pending : later).push_back(static_cast<std::uint32_t>(i));
+    }
+    // Priorities: a fixed pseudo-random permutation of the free segments. Input order would chain
+    // the consecutive segments of a polyline (each shares a vertex with the next, so only one of
+    // them could win per round); a hashed order breaks such chains in a few rounds. The result
+    // equals sequential insertion in this order, whatever the thread count.
+    const auto priority = [](std::uint64_t i) {
+        i += 0x9e3779b97f4a7c15ull;
+        i = (i ^ (i >> 30)) * 0xbf58476d1ce4e5b9ull;
+        i = (i ^ (i >> 27)) * 0x94d049bb133111ebull;
+        return i ^ (i >> 31);
+    };
+    std::sort(pending.begin(), pending.end(), [&](std::uint32_t a, std::uint32_t b) {
+        const std::uint64_t pa = priority(a), pb = priority(b);
+        return pa < pb || (pa == pb && a < b);
+    });
+    const std::size_t total = segments.size();
+    std::size_t done = 0;
+    // The rounds run the same way with one thread or many: same rounds, same result.
+    if (!pending.empty()) {
+        constexpr std::uint32_t unreserved = 0xffffffffu;
+        const std::size_t vertex_count = mesh.points.size();
+        std::unique_ptr<std::atomic<std::uint32_t>[]> reserve(
+            new std::atomic<std::uint32_t>[vertex_count]);
+        for (std::size_t v = 0; v < vertex_count; ++v) reserve[v].store(unreserved);
+        const std::size_t window_size = 8192;
+        std::vector<MeshEditor::SegmentPlan> plans;
+        std::vector<char> applied;
+        std::vector<std::uint32_t> next;
+        std::size_t first = 0;  // pending[first..] are not yet inserted
+        while (first < pending.size()) {
+            const std::size_t window = std::min(window_size, pending.size() - first);
+            plans.assign(window, {});
+            applied.assign(window, 0);
+            tbb::parallel_for(std::size_t{0}, window, [&](std::size_t k) {
+                const InputSegment& s = segments[pending[first + k]];
+                plans[k] = editor.plan_segment(s.a, s.b);
+                if (plans[k].crosses_constraint) return;
+                for (const VertexId v : plans[k].vertices) {
+                    std::uint32_t cur = reserve[v].load(std::memory_order_relaxed);
+                    const auto mine = static_cast<std::uint32_t>(k);
+                    while (mine < cur && !reserve[v].compare_exchange_weak(cur, mine)) {
+                    }
+                }
+            });
+            tbb::parallel_for(std::size_t{0}, window, [&](std::size_t k) {
+                if (plans[k].crosses_constraint) return;
+                for (const VertexId v : plans[k].vertices) {
+                    if (reserve[v].load(std::memory_order_relaxed) != k) return;
+                }
+                EdgeSlots slots;  // the cavity's own deleted edges are reused
+                editor.apply_segment(plans[k], segments[pending[first + k]].bits, slots);
+                applied[k] = 1;
+            });
+            tbb::parallel_for(std::size_t{0}, window, [&](std::size_t k) {
+                for (const VertexId v : plans[k].vertices) reserve[v].store(unreserved);
+            });
+            // Losers keep their order at the front; segments that met a constraint wait.
+            next.clear();
+            for (std::size_t k = 0; k < window; ++k) {
+                if (applied[k]) {
+                    ++done;
+                } else if (plans[k].crosses_constraint) {
+                    later.push_back(pending[first + k]);
+                } else {
+                    next.push_back(pending[first + k]);
+                }
+            }
+            first += window;
+            std::copy(next.begin(), next.end(), pending.begin() + static_cast<std::ptrdiff_t>(first - next.size()));
+            first -= next.size();
+            progress.report(static_cast<double>(done) / static_cast<double>(total),
+                            "inserting breaklines");
+        }
+    }
+    std::sort(later.begin(), later.end());
+    for (std::size_t k = 0; k < later.size(); ++k) {
+        const InputSegment& s = segments[later[k]];
+        editor.insert_segment(s.a, s.b, s.bits);
+        if ((k & 1023u) == 0) {
+            progress.report(static_cast<double>(done + k) / static_cast<double>(total),
+                            "inserting breaklines");
+        }
+    }
+}
+
+}  // namespace dtm::detail

@@ -1,0 +1,27 @@
+// SPDX-License-Identifier: MIT
+/// @file
+/// @brief Inserting many constraint segments: in parallel where they cannot interfere, with a
+/// result that never depends on the thread count.
+#pragma once
+
+#include <vector>
+
+#include "algo/detail/input_merge.hpp"
+#include "algo/detail/mesh_edit.hpp"
+#include "dtm/core/progress.hpp"
+
+namespace dtm::detail {
+
+/// For each segment (kernel vertex ids): true when it touches no other segment except at a
+/// shared endpoint (no crossing, no overlap, no T-junction). Exact predicates only.
+[[nodiscard]] std::vector<bool> find_free_segments(const EdgeMesh& mesh,
+                                                   const std::vector<InputSegment>& segments);
+
+/// Inserts @p segments (kernel vertex ids). Free segments go first, by deterministic
+/// reservations (rounds of plan -> reserve vertices by priority -> apply the winners in
+/// parallel), which gives exactly the result of inserting them one by one in input order; the
+/// others (crossings, overlaps) follow one by one in input order.
+void insert_segments(MeshEditor& editor, const EdgeMesh& mesh,
+                     const std::vector<InputSegment>& segments, const Progress& progress);
+
+}  // namespace dtm::detail
