@@ -147,7 +147,7 @@ TEST(HpglLineHeights, BreaklineWithoutSpotHeightsBecomesSoft)
     const auto plan = plan_of("IN;SP1;PA0,0;CI10;PA40,40;LB10.0\x03SP2;PU5000,5000;PD6000,5000;", options);
     ASSERT_EQ(plan.lines.size(), 1u);
     EXPECT_EQ(plan.lines[0].role, PenRole::soft_breakline);
-    EXPECT_EQ(plan.lines[0].points[0].z, 10.0);  // provisional: the nearest spot height
+    EXPECT_TRUE(std::isnan(plan.lines[0].points[0].z));  // no height: the triangulator computes it
     EXPECT_TRUE(has_warning(plan, "made soft"));
 }
 
@@ -160,6 +160,7 @@ TEST(HpglLineHeights, OpenBoundaryIsClosedWithAWarningAndUnnamedPensAreCounted)
     EXPECT_TRUE(plan.lines[0].closed);
     EXPECT_TRUE(has_warning(plan, "not a closed ring"));
     EXPECT_TRUE(has_warning(plan, "no spot height on its vertices"));
+    EXPECT_TRUE(std::isnan(plan.lines[0].points[0].z));
     EXPECT_EQ(plan.ignored_lines, 1u);
     EXPECT_TRUE(has_warning(plan, "pen:lines 6:1"));
 }

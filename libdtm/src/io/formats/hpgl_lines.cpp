@@ -8,9 +8,9 @@
 // spot height takes that height (the nearest one); the others are interpolated linearly in
 // distance along the line between such vertices (around the ring for closed lines) and keep the
 // nearest end's height beyond the first or last one. A breakline with no such vertex becomes a
-// soft breakline. Soft lines, and boundaries or holes without any height, carry a provisional z:
-// the height of the nearest spot height (0 when the plan has none); the triangulator replaces
-// soft heights from the surface.
+// soft breakline. Soft lines, and boundaries or holes without any height, carry z = NaN, the
+// project's "no height" (io::load_inputs gives such rings the height of the surface of the other
+// inputs; the triangulator computes soft breakline heights).
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -26,16 +26,12 @@ namespace {
 constexpr double closing_tolerance = 0.01;  // plotter units
 const double unknown = std::numeric_limits<double>::quiet_NaN();
 
-/// Spot heights near a point (grid) and nearest to any point (x-sorted sweep).
+/// The spot height nearest to a point within a radius.
 class NearestSpot {
 public:
     explicit NearestSpot(const std::vector<SpotHeight>& spots, double cell)
-        : spots_(spots), places_(positions(spots)), grid_(places_, cell), cell_(cell)
+        : places_(positions(spots)), grid_(places_, cell)
     {
-        for (std::size_t i = 0; i < spots.size(); ++i) by_x_.push_back(i);
-        std::sort(by_x_.begin(), by_x_.end(), [&](std::size_t a, std::size_t b) {
-            return spots[a].at.x < spots[b].at.x || (spots[a].at.x == spots[b].at.x && a < b);
-        });
     }
 
     /// Index of the spot height within @p radius of @p p that is nearest, or -1.
@@ -52,37 +48,6 @@ public:
         return best;
     }
 
-    /// Height of the nearest spot height; 0 when there is none. Walks outwards from the query's
-    /// place in the x-sorted spot heights and stops once |dx| alone exceeds the best distance.
-    [[nodiscard]] double z_near(Point2 p) const
-    {
-        if (spots_.empty()) return 0.0;
-        const long close = within(p, cell_);
-        if (close >= 0) return spots_[static_cast<std::size_t>(close)].z;
-        const auto start = std::lower_bound(by_x_.begin(), by_x_.end(), p.x,
-                                            [&](std::size_t i, double x) { return spots_[i].at.x < x; }) -
-                           by_x_.begin();
-        double best_d = std::numeric_limits<double>::infinity(), z = 0.0;
-        const auto consider = [&](std::size_t i) {
-            const double d = distance(p, spots_[i].at);
-            if (d < best_d) {
-                best_d = d;
-                z = spots_[i].z;
-            }
-        };
-        for (auto i = start; i < static_cast<long>(by_x_.size()); ++i) {
-            const std::size_t s = by_x_[static_cast<std::size_t>(i)];
-            if (spots_[s].at.x - p.x > best_d) break;
-            consider(s);
-        }
-        for (auto i = start - 1; i >= 0; --i) {
-            const std::size_t s = by_x_[static_cast<std::size_t>(i)];
-            if (p.x - spots_[s].at.x > best_d) break;
-            consider(s);
-        }
-        return z;
-    }
-
 private:
     static std::vector<Point2> positions(const std::vector<SpotHeight>& spots)
     {
@@ -91,11 +56,8 @@ private:
         return out;
     }
 
-    const std::vector<SpotHeight>& spots_;
     std::vector<Point2> places_;
     PointGrid grid_;
-    double cell_;
-    std::vector<std::size_t> by_x_;
 };
 
 /// Fills unknown z by linear interpolation along the line (cyclic when closed).
@@ -181,10 +143,8 @@ void assign_line_roles(const Plot& plot, const HpglOptions& options, double radi
                 ++made_soft;
             } else if (role != PenRole::soft_breakline) {
                 plan.warnings.push_back(describe(out) +
-                                        " has no spot height on its vertices: provisional heights from the "
-                                        "nearest spot heights");
+                                        " has no spot height on its vertices: heights left to the surface");
             }
-            for (Point3& p : out.points) p.z = spots.z_near({p.x, p.y});
         }
         plan.lines.push_back(std::move(out));
     }
