@@ -67,7 +67,8 @@ void summarize(InputSummary& s, const TerrainInput& t)
     }
     for (const Point2& p : t.hole_seeds) box.add(p);
     if (!box.empty()) s.bbox = {box.xmin, box.ymin, box.xmax, box.ymax};
-    if (zmin <= zmax) s.z_range = {zmin, zmax};
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    s.z_range = zmin <= zmax ? std::array<double, 2>{zmin, zmax} : std::array<double, 2>{nan, nan};
     std::vector<Point2> xy;
     xy.reserve(t.points.size());
     for (const Point3& p : t.points) xy.push_back(p.xy());
@@ -334,6 +335,7 @@ LoadedInputs load_inputs(const LoadOptions& options, const Progress& progress)
         merge(out, loaded[i]);
     }
     out.crs_wkt = target.wkt;
+    if (!options.resolve_heights) return out;
     fill_heights(out.terrain);
     std::vector<std::string> notes;
     rings_from_surface(out.terrain, notes);

@@ -8,8 +8,8 @@
 //   - the first line is a header if it has a field that is not a number and either a field
 //     names a known column or the next line has fewer non-numbers;
 //   - columns are mapped by header name, or by --columns, or guessed: "x y [z]"; for points,
-//     "id x y z [code]" when the first column holds distinct integers and the coordinates do
-//     not; for polylines, "line_id x y [z]" when the first column holds integers.
+//     "id x y z [code]" when the first of 4+ columns holds integers and the next two do not;
+//     for polylines, "line_id x y [z]" when the first of 3+ columns holds integers.
 #include <algorithm>
 #include <cctype>
 #include <charconv>
@@ -272,10 +272,8 @@ std::vector<Field> guess_fields(const std::vector<std::vector<Cell>>& rows, bool
     bool first_is_id = false;
     if (polyline) {
         first_is_id = n >= 3 && all_integer(0);
-    } else if (n >= 4 && all_integer(0) && !(all_integer(1) && all_integer(2))) {
-        std::set<std::string_view> distinct;
-        for (const auto& r : rows) distinct.insert(r[0].text);
-        first_is_id = distinct.size() == rows.size();
+    } else {
+        first_is_id = n >= 4 && all_integer(0) && !(all_integer(1) && all_integer(2));
     }
     const std::size_t c0 = first_is_id ? 1 : 0;
     if (first_is_id) fields[0] = polyline ? Field::line_id : Field::id;
