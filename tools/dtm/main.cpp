@@ -15,7 +15,8 @@ int main(int argc, char** argv)
     CLI::App app{"dtm: survey points and breaklines to a constrained Delaunay TIN, DEMs, contours "
                  "and 3-D surfaces"};
     app.set_version_flag("--version", std::string("dtm ") + DTM_VERSION);
-    app.require_subcommand(1);
+    app.require_subcommand(0, 1);  // at most one; "none" is reported below, so that an unknown
+                                   // word or option is named in the error instead
 
     const std::vector<Command> commands{tin_command(), info_command(), grid_command(),
                                         contour_command(), build_command()};
@@ -29,7 +30,13 @@ int main(int argc, char** argv)
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
-        return app.exit(e) == 0 ? 0 : 2;
+        if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+        std::cerr << "dtm: " << e.what() << "\nRun 'dtm --help' for more information.\n";
+        return 2;
+    }
+    if (!run) {
+        std::cerr << "dtm: a subcommand is required\n" << app.help();
+        return 2;
     }
     try {
         return run ? run() : 0;
