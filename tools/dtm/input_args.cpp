@@ -3,6 +3,8 @@
 // --soft-breaklines, --boundary, --holes, CRS and reader options).
 #include "input_args.hpp"
 
+#include "hpgl_args.hpp"
+
 namespace dtm::cli {
 
 void add_input_options(CLI::App& app, InputArgs& args)
@@ -35,6 +37,7 @@ void add_input_options(CLI::App& app, InputArgs& args)
                    "OGR attribute holding the height (points, or one height per line)");
     app.add_flag("--skip-bad-lines", o.skip_bad_lines,
                  "Skip and count malformed text lines instead of failing");
+    add_hpgl_options(app, o.hpgl);
 }
 
 io::LoadOptions to_load_options(const InputArgs& args)

@@ -9,6 +9,7 @@
 
 #include "dtm/core/error.hpp"
 #include "dtm/io/formats/csv.hpp"
+#include "dtm/io/formats/hpgl.hpp"
 #include "dtm/io/formats/ogr.hpp"
 #include "dtm/io/reader.hpp"
 
@@ -19,8 +20,11 @@ constexpr std::array<std::string_view, 5> csv_ext{"csv", "txt", "xyz", "pts", "a
 constexpr std::array<std::string_view, 14> ogr_ext{"shp",  "gpkg", "geojson", "json", "dxf",
                                                    "kml",  "gml",  "sqlite",  "fgb",  "gpx",
                                                    "tab",  "mif",  "vfk",     "gdb"};
-constexpr std::array<ReaderInfo, 2> reader_table{{
+constexpr std::array<std::string_view, 5> hpgl_ext{"hpgl", "plt", "hgl", "hpg", "prn"};
+constexpr std::array<ReaderInfo, 3> reader_table{{
     {"csv", "Delimited text points or shapeid,x,y[,z] polylines", csv_ext, &read_csv},
+    {"hpgl", "HP-GL/HP-GL2 plotter plans: spot heights, breaklines by pen", hpgl_ext,
+     &read_hpgl},
     {"ogr", "Any OGR vector source: points, lines, polygons", ogr_ext, &read_ogr},
 }};
 
