@@ -27,15 +27,21 @@
 // References: J. Pineda, "A parallel algorithm for polygon rasterization", SIGGRAPH 1988 (edge
 // functions, top-left rule); J. R. Shewchuk, "Adaptive precision floating-point arithmetic and
 // fast robust geometric predicates", 1997 (orient2d).
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 #include <tbb/parallel_pipeline.h>
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <array>
+#include <cstdint>
 #include <cmath>
 #include <limits>
+#include <string>
 #include <vector>
 
 #include "dtm/algo/rasterize.hpp"
+#include "dtm/core/error.hpp"
 #include "dtm/geom/predicates.hpp"
 
 namespace dtm {
@@ -47,6 +53,7 @@ struct Buckets {
     std::size_t band_count = 0;
     std::vector<std::size_t> offsets;  ///< band_count + 1
     std::vector<TriangleIndex> triangles;
+    std::vector<std::array<std::int32_t, 2>> rows;  ///< per triangle: first and last row touched
 };
 
 /// Conservative range of rows whose centre line may meet [ylo, yhi]; empty when first > last.
@@ -83,17 +90,27 @@ Buckets make_buckets(const Tin& tin, const GridSpec& spec, std::size_t band_rows
     buckets.band_rows = band_rows;
     buckets.band_count = (spec.rows + band_rows - 1) / band_rows;
     buckets.offsets.assign(buckets.band_count + 1, 0);
-    std::vector<RowRange> ranges(tin.triangles.size());
+    buckets.rows.resize(tin.triangles.size());
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tin.triangles.size(), 1 << 14),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+                          for (std::size_t i = range.begin(); i != range.end(); ++i) {
+                              const RowRange r = triangle_rows(tin, tin.triangles[i], spec);
+                              buckets.rows[i] = {static_cast<std::int32_t>(r.first),
+                                                 static_cast<std::int32_t>(r.last)};
+                          }
+                      });
+    const auto each_band = [&](std::size_t i, auto&& fn) {
+        const auto [first, last] = buckets.rows[i];
+        if (first > last) {
+            return;
+        }
+        for (std::size_t b = static_cast<std::size_t>(first) / band_rows;
+             b <= static_cast<std::size_t>(last) / band_rows; ++b) {
+            fn(b);
+        }
+    };
     for (std::size_t i = 0; i < tin.triangles.size(); ++i) {
-        ranges[i] = triangle_rows(tin, tin.triangles[i], spec);
-        if (ranges[i].first > ranges[i].last) {
-            continue;
-        }
-        const auto b0 = static_cast<std::size_t>(ranges[i].first) / band_rows;
-        const auto b1 = static_cast<std::size_t>(ranges[i].last) / band_rows;
-        for (std::size_t b = b0; b <= b1; ++b) {
-            ++buckets.offsets[b + 1];
-        }
+        each_band(i, [&](std::size_t b) { ++buckets.offsets[b + 1]; });
     }
     for (std::size_t b = 0; b < buckets.band_count; ++b) {
         buckets.offsets[b + 1] += buckets.offsets[b];
@@ -101,14 +118,9 @@ Buckets make_buckets(const Tin& tin, const GridSpec& spec, std::size_t band_rows
     buckets.triangles.resize(buckets.offsets.back());
     std::vector<std::size_t> fill(buckets.offsets.begin(), buckets.offsets.end() - 1);
     for (std::size_t i = 0; i < tin.triangles.size(); ++i) {
-        if (ranges[i].first > ranges[i].last) {
-            continue;
-        }
-        const auto b0 = static_cast<std::size_t>(ranges[i].first) / band_rows;
-        const auto b1 = static_cast<std::size_t>(ranges[i].last) / band_rows;
-        for (std::size_t b = b0; b <= b1; ++b) {
+        each_band(i, [&](std::size_t b) {
             buckets.triangles[fill[b]++] = static_cast<TriangleIndex>(i);
-        }
+        });
     }
     return buckets;
 }
@@ -249,13 +261,13 @@ private:
 };
 
 /// Scan-converts one triangle over the rows [row0, row0 + row_count) into @p band.
-void scan_triangle(const Tin& tin, const Triangle& t, const GridSpec& spec, std::size_t row0,
-                   std::size_t row_count, std::span<float> band)
+void scan_triangle(const Tin& tin, const Triangle& t, std::array<std::int32_t, 2> rows,
+                   const GridSpec& spec, std::size_t row0, std::size_t row_count,
+                   std::span<float> band)
 {
-    const RowRange rows = triangle_rows(tin, t, spec);
-    const auto first = std::max<std::ptrdiff_t>(rows.first, static_cast<std::ptrdiff_t>(row0));
+    const auto first = std::max<std::ptrdiff_t>(rows[0], static_cast<std::ptrdiff_t>(row0));
     const auto last =
-        std::min<std::ptrdiff_t>(rows.last, static_cast<std::ptrdiff_t>(row0 + row_count) - 1);
+        std::min<std::ptrdiff_t>(rows[1], static_cast<std::ptrdiff_t>(row0 + row_count) - 1);
     if (first > last) {
         return;
     }
@@ -328,7 +340,8 @@ void run_pipeline(const Tin& tin, const GridSpec& spec, const RasterizeOptions& 
         const std::size_t row_count = std::min(buckets.band_rows, spec.rows - row0);
         Band band{b, std::vector<float>(row_count * spec.cols, options.nodata)};
         for (std::size_t k = buckets.offsets[b]; k < buckets.offsets[b + 1]; ++k) {
-            scan_triangle(tin, tin.triangles[buckets.triangles[k]], spec, row0, row_count,
+            const TriangleIndex t = buckets.triangles[k];
+            scan_triangle(tin, tin.triangles[t], buckets.rows[t], spec, row0, row_count,
                           band.values);
         }
         return band;
@@ -368,6 +381,11 @@ void rasterize(const Tin& tin, const GridSpec& spec, const RasterizeOptions& opt
 {
     if (spec.rows == 0 || spec.cols == 0) {
         return;
+    }
+    if (spec.rows > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()) ||
+        spec.cols > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max())) {
+        throw UsageError("rasterize: " + std::to_string(spec.cols) + " x " +
+                         std::to_string(spec.rows) + " cells is too large");
     }
     const Buckets buckets = make_buckets(tin, spec, choose_band_rows(spec, options));
     progress.report(0.0, "rasterize");

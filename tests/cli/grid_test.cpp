@@ -1,0 +1,151 @@
+// SPDX-License-Identifier: MIT
+// `dtm grid`: exit codes, a GeoTIFF that GDAL opens with the CRS, NoData outside the TIN, exact
+// values on a planar surface, --extent, other drivers by extension, gdaldem derivatives.
+#include <gdal_priv.h>
+#include <gtest/gtest.h>
+#include <ogr_spatialref.h>
+
+#include <cmath>
+#include <memory>
+#include <sstream>
+
+#include "support/test_support.hpp"
+
+namespace {
+
+struct Closer {
+    void operator()(GDALDataset* d) const { GDALClose(d); }
+};
+using Dataset = std::unique_ptr<GDALDataset, Closer>;
+
+double plane(double x, double y) { return 250.0 + 0.5 * (x + 750'000.0) - 0.25 * (y + 1'050'000.0); }
+
+/// A diamond of survey points at S-JTSK offsets on a plane: the TIN's linear interpolation of a
+/// plane is the plane itself, whatever the triangulation.
+std::filesystem::path write_diamond(const dtm::test::ScratchDir& dir)
+{
+    std::ostringstream csv;
+    csv << "x,y,z\n";
+    csv.precision(12);
+    for (int i = -10; i <= 10; ++i) {
+        for (int j = -10; j <= 10; ++j) {
+            if (std::abs(i) + std::abs(j) > 10) {
+                continue;
+            }
+            const double x = -750'000.0 + 10.0 + i + 0.01 * (j % 3);
+            const double y = -1'050'000.0 + 10.0 + j + 0.013 * (i % 2);
+            csv << x << ',' << y << ',' << plane(x, y) << '\n';
+        }
+    }
+    const auto path = dir / "points.csv";
+    dtm::test::write_file(path, csv.str());
+    return path;
+}
+
+Dataset open_raster(const std::filesystem::path& path)
+{
+    GDALAllRegister();
+    return Dataset(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY));
+}
+
+TEST(CliGrid, WritesGeoTiffWithCrsPlaneValuesAndNoDataOutsideTheTin)
+{
+    const dtm::test::ScratchDir dir;
+    const auto points = write_diamond(dir);
+    const auto r = dtm::test::run_dtm({"grid", points.string(), "-o", (dir / "dem.tif").string(),
+                                       "--cell", "0.5", "--crs", "EPSG:5514", "-q"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    Dataset ds = open_raster(dir / "dem.tif");
+    ASSERT_TRUE(ds);
+    ASSERT_NE(ds->GetSpatialRef(), nullptr);
+    OGRSpatialReference expected;
+    expected.importFromEPSG(5514);
+    EXPECT_TRUE(ds->GetSpatialRef()->IsSame(&expected));
+    double gt[6];
+    ASSERT_EQ(ds->GetGeoTransform(gt), CE_None);
+    EXPECT_EQ(gt[1], 0.5);
+    EXPECT_EQ(std::fmod(gt[0], 0.5), 0.0);  // snapped to the cell size
+    const int cols = ds->GetRasterXSize(), rows = ds->GetRasterYSize();
+    std::vector<float> v(static_cast<std::size_t>(cols * rows));
+    ASSERT_EQ(ds->GetRasterBand(1)->RasterIO(GF_Read, 0, 0, cols, rows, v.data(), cols, rows,
+                                             GDT_Float32, 0, 0, nullptr),
+              CE_None);
+    int has_nodata = 0;
+    const double nodata = ds->GetRasterBand(1)->GetNoDataValue(&has_nodata);
+    ASSERT_TRUE(has_nodata);
+    EXPECT_EQ(v[0], static_cast<float>(nodata));  // the corner is outside the diamond
+    std::size_t with_data = 0;
+    for (int row = 0; row < rows; ++row) {
+        for (int col = 0; col < cols; ++col) {
+            const float value = v[static_cast<std::size_t>(row * cols + col)];
+            if (value == static_cast<float>(nodata)) {
+                continue;
+            }
+            ++with_data;
+            const double x = gt[0] + (col + 0.5) * gt[1], y = gt[3] + (row + 0.5) * gt[5];
+            ASSERT_NEAR(value, plane(x, y), 1e-3) << row << "," << col;
+        }
+    }
+    EXPECT_GT(with_data, 600U);
+    EXPECT_LT(with_data, static_cast<std::size_t>(cols * rows) * 3 / 4);
+}
+
+TEST(CliGrid, ExtentGivesTheOuterEdgesAndAscPicksTheAsciiGridDriver)
+{
+    const dtm::test::ScratchDir dir;
+    const auto points = write_diamond(dir);
+    const auto r = dtm::test::run_dtm({"grid", points.string(), "-o", (dir / "dem.asc").string(),
+                                       "--cell", "1", "--extent",
+                                       "-750005,-1049995,-749985,-1049985", "--nodata", "-1",
+                                       "-q"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    Dataset ds = open_raster(dir / "dem.asc");
+    ASSERT_TRUE(ds);
+    EXPECT_STREQ(ds->GetDriver()->GetDescription(), "AAIGrid");
+    EXPECT_EQ(ds->GetRasterXSize(), 20);
+    EXPECT_EQ(ds->GetRasterYSize(), 10);
+    double gt[6];
+    ds->GetGeoTransform(gt);
+    EXPECT_EQ(gt[0], -750005.0);
+    EXPECT_EQ(gt[3], -1049985.0);
+    EXPECT_EQ(ds->GetRasterBand(1)->GetNoDataValue(), -1.0);
+}
+
+TEST(CliGrid, HillshadeSlopeAndAspectAreWrittenNextToTheDem)
+{
+    const dtm::test::ScratchDir dir;
+    const auto points = write_diamond(dir);
+    const auto r = dtm::test::run_dtm(
+        {"grid", points.string(), "-o", (dir / "dem.tif").string(), "--cell", "0.5", "--cog",
+         "--hillshade", (dir / "hs.tif").string(), "--slope", (dir / "slope.tif").string(),
+         "--aspect", (dir / "aspect.tif").string(), "-q"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    Dataset dem = open_raster(dir / "dem.tif");
+    ASSERT_TRUE(dem);
+    EXPECT_STREQ(dem->GetMetadataItem("LAYOUT", "IMAGE_STRUCTURE"), "COG");
+    for (const char* name : {"hs.tif", "slope.tif", "aspect.tif"}) {
+        EXPECT_TRUE(open_raster(dir / name)) << name;
+    }
+}
+
+TEST(CliGrid, BadUsageExitsWithTwoAndWritesNothing)
+{
+    const dtm::test::ScratchDir dir;
+    const auto points = write_diamond(dir);
+    const auto out = (dir / "dem.tif").string();
+    EXPECT_EQ(dtm::test::run_dtm({"grid", points.string(), "-o", out, "-q"}).exit_code, 2);  // no --cell
+    EXPECT_EQ(dtm::test::run_dtm({"grid", points.string(), "-o", out, "--cell", "-1", "-q"}).exit_code, 2);
+    EXPECT_EQ(dtm::test::run_dtm({"grid", points.string(), "-o", out, "--cell", "1", "--extent", "1,2,3", "-q"})
+                  .exit_code,
+              2);
+    EXPECT_EQ(dtm::test::run_dtm({"grid", points.string(), "-o", (dir / "dem.nosuch").string(),
+                                  "--cell", "1", "-q"})
+                  .exit_code,
+              2);
+    EXPECT_EQ(dtm::test::run_dtm({"grid", (dir / "missing.csv").string(), "-o", out, "--cell", "1", "-q"})
+                  .exit_code,
+              2);
+    EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+}  // namespace
