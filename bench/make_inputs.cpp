@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // make_inputs: deterministic benchmark inputs for bench/compare_cgal.sh.
 //
-//   make_inputs --kind uniform|gaussian|clustered|breaklines [--n N] [--seed S] --out DIR
+//   make_inputs --kind uniform|gaussian|clustered|breaklines|grid [--n N] [--seed S] --out DIR
 //
 // Writes DIR/points.xyz (text "x y z" per line, shortest round-trip doubles) with S-JTSK-like
 // coordinates (around -750000, -1050000, about one point per square metre), and for
@@ -9,7 +9,8 @@
 // "LINESTRING Z (x y z, ...)",id per row, readable by GDAL's CSV driver (GDAL 3.6 does not
 // open a CSV file with a single column, hence the id). The breaklines are many
 // long west-east polylines whose jitter stays below 0.3 of their spacing, so they never
-// cross or touch; together they have about N / 2 segments.
+// cross or touch; together they have about N / 2 segments. --kind grid writes a 1 m lattice
+// (integer coordinates, so every cell is exactly cocircular: the predicates' exact path).
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -38,7 +39,7 @@ struct Args {
 [[noreturn]] void usage(const std::string& why)
 {
     std::cerr << "make_inputs: " << why
-              << "\nusage: make_inputs --kind uniform|gaussian|clustered|breaklines [--n N] "
+              << "\nusage: make_inputs --kind uniform|gaussian|clustered|breaklines|grid [--n N] "
                  "[--seed S] --out DIR\n";
     std::exit(2);
 }
@@ -71,7 +72,7 @@ Args parse(int argc, char** argv)
         usage("--n must be at least 3");
     }
     if (a.kind != "uniform" && a.kind != "gaussian" && a.kind != "clustered" &&
-        a.kind != "breaklines") {
+        a.kind != "breaklines" && a.kind != "grid") {
         usage("unknown kind " + a.kind);
     }
     return a;
@@ -120,6 +121,10 @@ void write_points(const Args& a, Sampler& s)
         if (a.kind == "gaussian") {
             x = s.normal(s.side / 2, s.side / 6);
             y = s.normal(s.side / 2, s.side / 6);
+        } else if (a.kind == "grid") {  // 1 m lattice: every cell is exactly cocircular
+            const auto side = static_cast<std::int64_t>(s.side);
+            x = static_cast<double>(i % side);
+            y = static_cast<double>(i / side);
         } else if (a.kind == "clustered" && i % 10 != 0) {  // 10 % uniform background
             const auto c = 2 * static_cast<std::size_t>(s.rng() % (centres.size() / 2));
             x = s.normal(centres[c], s.side / 80);

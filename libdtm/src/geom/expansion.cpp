@@ -1,44 +1,12 @@
 // SPDX-License-Identifier: MIT
-// Expansion arithmetic: scale-expansion and fast expansion sum with zero elimination
-// (Shewchuk 1997, "Adaptive precision floating-point arithmetic and fast robust geometric
-// predicates", Theorems 13 and 19). Compiled with -ffp-contract=off (see libdtm/CMakeLists.txt).
+// Expansion arithmetic: fast expansion sum with zero elimination (Shewchuk 1997, "Adaptive
+// precision floating-point arithmetic and fast robust geometric predicates", Theorem 13);
+// scale-expansion (Theorem 19) is inline in geom/detail/expansion.hpp. Compiled with -ffp-contract=off (see libdtm/CMakeLists.txt).
 #include "geom/detail/expansion.hpp"
 
 #include <cmath>
 
 namespace dtm::geom::detail {
-
-int scale_expansion(int elen, const double* e, double b, double* h) noexcept
-{
-    double bhi = 0.0;
-    double blo = 0.0;
-    split(b, bhi, blo);
-    double q = 0.0;
-    double hh = 0.0;
-    int n = 0;
-    two_product_presplit(e[0], b, bhi, blo, q, hh);
-    if (hh != 0.0) {
-        h[n++] = hh;
-    }
-    for (int i = 1; i < elen; ++i) {
-        double p1 = 0.0;
-        double p0 = 0.0;
-        double sum = 0.0;
-        two_product_presplit(e[i], b, bhi, blo, p1, p0);
-        two_sum(q, p0, sum, hh);
-        if (hh != 0.0) {
-            h[n++] = hh;
-        }
-        fast_two_sum(p1, sum, q, hh);
-        if (hh != 0.0) {
-            h[n++] = hh;
-        }
-    }
-    if (q != 0.0 || n == 0) {
-        h[n++] = q;
-    }
-    return n;
-}
 
 int expansion_sum(int elen, const double* e, int flen, const double* f, double* h) noexcept
 {

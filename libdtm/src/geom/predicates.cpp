@@ -56,15 +56,12 @@ constexpr double orient_max_abs = 0x1p+500;
 constexpr double incircle_min_abs = 0x1p-200;
 constexpr double incircle_max_abs = 0x1p+250;
 
-}  // namespace
 
-int orient2d_adaptive(double ax, double ay, double bx, double by, double cx, double cy,
-                      double detsum) noexcept
+/// Stages B-D of orient2d (coordinates already checked to be in the expansion range).
+template <bool Fma>
+DTM_PREDICATES_INLINE int orient_stages(double ax, double ay, double bx, double by, double cx,
+                                        double cy, double detsum) noexcept
 {
-    const double v[6] = {ax, ay, bx, by, cx, cy};
-    if (!in_expansion_range(v, 6, orient_min_abs, orient_max_abs)) {
-        return orient2d_bigint(ax, ay, bx, by, cx, cy);
-    }
     const double acx = ax - cx;
     const double bcx = bx - cx;
     const double acy = ay - cy;
@@ -75,8 +72,8 @@ int orient2d_adaptive(double ax, double ay, double bx, double by, double cx, dou
     double l0 = 0.0;
     double r1 = 0.0;
     double r0 = 0.0;
-    two_product(acx, bcy, l1, l0);
-    two_product(acy, bcx, r1, r0);
+    two_product<Fma>(acx, bcy, l1, l0);
+    two_product<Fma>(acy, bcx, r1, r0);
     double b[4];
     two_two_diff(l1, l0, r1, r0, b);
     double det = estimate(4, b);
@@ -109,80 +106,134 @@ int orient2d_adaptive(double ax, double ay, double bx, double by, double cx, dou
     double s0 = 0.0;
     double t1 = 0.0;
     double t0 = 0.0;
-    two_product(acxt, bcy, s1, s0);
-    two_product(acyt, bcx, t1, t0);
+    two_product<Fma>(acxt, bcy, s1, s0);
+    two_product<Fma>(acyt, bcx, t1, t0);
     two_two_diff(s1, s0, t1, t0, u);
     const int c1len = expansion_sum(4, b, 4, u, c1);
-    two_product(acx, bcyt, s1, s0);
-    two_product(acy, bcxt, t1, t0);
+    two_product<Fma>(acx, bcyt, s1, s0);
+    two_product<Fma>(acy, bcxt, t1, t0);
     two_two_diff(s1, s0, t1, t0, u);
     const int c2len = expansion_sum(c1len, c1, 4, u, c2);
-    two_product(acxt, bcyt, s1, s0);
-    two_product(acyt, bcxt, t1, t0);
+    two_product<Fma>(acxt, bcyt, s1, s0);
+    two_product<Fma>(acyt, bcxt, t1, t0);
     two_two_diff(s1, s0, t1, t0, u);
     const int dlen = expansion_sum(c2len, c2, 4, u, d);
     return expansion_sign(dlen, d);
 }
 
-namespace {
-
 /// out = (px^2 + py^2) * bc for a scalar pair (px, py) and the 4-component expansion bc.
-int lift_times(const double* bc, double px, double py, double* out) noexcept
+template <bool Fma>
+DTM_PREDICATES_INLINE int lift_times(const double* bc, double px, double py, double* out) noexcept
 {
     double x1[8];
     double x2[16];
     double y1[8];
     double y2[16];
-    const int x1len = scale_expansion(4, bc, px, x1);
-    const int x2len = scale_expansion(x1len, x1, px, x2);
-    const int y1len = scale_expansion(4, bc, py, y1);
-    const int y2len = scale_expansion(y1len, y1, py, y2);
+    const int x1len = scale_expansion<Fma>(4, bc, px, x1);
+    const int x2len = scale_expansion<Fma>(x1len, x1, px, x2);
+    const int y1len = scale_expansion<Fma>(4, bc, py, y1);
+    const int y2len = scale_expansion<Fma>(y1len, y1, py, y2);
     return expansion_sum(x2len, x2, y2len, y2, out);
 }
 
 /// (p1 p0) * (q1 q0) - (r1 r0) * (s1 s0) for four scalars: the exact 2x2 minor.
-void exact_minor(double p, double q, double r, double s, double* out4) noexcept
+template <bool Fma>
+DTM_PREDICATES_INLINE void exact_minor(double p, double q, double r, double s, double* out4) noexcept
 {
     double m1 = 0.0;
     double m0 = 0.0;
     double n1 = 0.0;
     double n0 = 0.0;
-    two_product(p, q, m1, m0);
-    two_product(r, s, n1, n0);
+    two_product<Fma>(p, q, m1, m0);
+    two_product<Fma>(r, s, n1, n0);
     two_two_diff(m1, m0, n1, n0, out4);
 }
 
-}  // namespace
-
-int incircle_adaptive(double ax, double ay, double bx, double by, double cx, double cy,
-                      double dx, double dy, double permanent) noexcept
+/// Exact incircle of the differences when every product and sum of the determinant's
+/// lower levels happens to be exact in plain doubles, as on integer or binary-fraction grids
+/// (where exact cocircularity is common). Returns 2 when some step was inexact.
+template <bool Fma>
+DTM_PREDICATES_INLINE int incircle_short(double adx, double ady, double bdx, double bdy,
+                                         double cdx, double cdy) noexcept
 {
-    const double v[8] = {ax, ay, bx, by, cx, cy, dx, dy};
-    if (!in_expansion_range(v, 8, incircle_min_abs, incircle_max_abs)) {
-        return incircle_bigint(ax, ay, bx, by, cx, cy, dx, dy);
+    bool exact = true;
+    auto product = [&exact](double a, double b) noexcept {
+        double p = 0.0;
+        double e = 0.0;
+        two_product<Fma>(a, b, p, e);
+        exact = exact && e == 0.0;
+        return p;
+    };
+    auto sum = [&exact](double a, double b) noexcept {
+        double x = 0.0;
+        double e = 0.0;
+        two_sum(a, b, x, e);
+        exact = exact && e == 0.0;
+        return x;
+    };
+    const double ma = sum(product(bdx, cdy), -product(cdx, bdy));
+    const double mb = sum(product(cdx, ady), -product(adx, cdy));
+    const double mc = sum(product(adx, bdy), -product(bdx, ady));
+    const double la = sum(product(adx, adx), product(ady, ady));
+    const double lb = sum(product(bdx, bdx), product(bdy, bdy));
+    const double lc = sum(product(cdx, cdx), product(cdy, cdy));
+    if (!exact) {
+        return 2;
     }
+    double ta[2];
+    double tb[2];
+    double tc[2];
+    double tab[4];
+    double total[6];
+    two_product<Fma>(la, ma, ta[1], ta[0]);
+    two_product<Fma>(lb, mb, tb[1], tb[0]);
+    two_product<Fma>(lc, mc, tc[1], tc[0]);
+    const int ablen = expansion_sum(2, ta, 2, tb, tab);
+    return expansion_sign(expansion_sum(ablen, tab, 2, tc, total), total);
+}
+
+/// Stages B-D of incircle (coordinates already checked to be in the expansion range).
+template <bool Fma>
+DTM_PREDICATES_INLINE int incircle_stages(double ax, double ay, double bx, double by, double cx,
+                                          double cy, double dx, double dy,
+                                          double permanent) noexcept
+{
     const double adx = ax - dx;
     const double bdx = bx - dx;
     const double cdx = cx - dx;
     const double ady = ay - dy;
     const double bdy = by - dy;
     const double cdy = cy - dy;
+    const double adxt = two_diff_tail(ax, dx, adx);
+    const double adyt = two_diff_tail(ay, dy, ady);
+    const double bdxt = two_diff_tail(bx, dx, bdx);
+    const double bdyt = two_diff_tail(by, dy, bdy);
+    const double cdxt = two_diff_tail(cx, dx, cdx);
+    const double cdyt = two_diff_tail(cy, dy, cdy);
+    const bool exact_differences = adxt == 0.0 && bdxt == 0.0 && cdxt == 0.0 && adyt == 0.0 &&
+                                   bdyt == 0.0 && cdyt == 0.0;
+    if (exact_differences) {
+        const int s = incircle_short<Fma>(adx, ady, bdx, bdy, cdx, cdy);
+        if (s != 2) {
+            return s;
+        }
+    }
 
     // Stage B: the determinant of the rounded differences, exactly.
     double bc[4];
     double ca[4];
     double ab[4];
-    exact_minor(bdx, cdy, cdx, bdy, bc);
-    exact_minor(cdx, ady, adx, cdy, ca);
-    exact_minor(adx, bdy, bdx, ady, ab);
+    exact_minor<Fma>(bdx, cdy, cdx, bdy, bc);
+    exact_minor<Fma>(cdx, ady, adx, cdy, ca);
+    exact_minor<Fma>(adx, bdy, bdx, ady, ab);
     double adet[32];
     double bdet[32];
     double cdet[32];
     double abdet[64];
     double fin[96];
-    const int alen = lift_times(bc, adx, ady, adet);
-    const int blen = lift_times(ca, bdx, bdy, bdet);
-    const int clen = lift_times(ab, cdx, cdy, cdet);
+    const int alen = lift_times<Fma>(bc, adx, ady, adet);
+    const int blen = lift_times<Fma>(ca, bdx, bdy, bdet);
+    const int clen = lift_times<Fma>(ab, cdx, cdy, cdet);
     const int ablen = expansion_sum(alen, adet, blen, bdet, abdet);
     const int finlen = expansion_sum(ablen, abdet, clen, cdet, fin);
     double det = estimate(finlen, fin);
@@ -191,14 +242,7 @@ int incircle_adaptive(double ax, double ay, double bx, double by, double cx, dou
         return sign_of(det);
     }
 
-    const double adxt = two_diff_tail(ax, dx, adx);
-    const double adyt = two_diff_tail(ay, dy, ady);
-    const double bdxt = two_diff_tail(bx, dx, bdx);
-    const double bdyt = two_diff_tail(by, dy, bdy);
-    const double cdxt = two_diff_tail(cx, dx, cdx);
-    const double cdyt = two_diff_tail(cy, dy, cdy);
-    if (adxt == 0.0 && bdxt == 0.0 && cdxt == 0.0 && adyt == 0.0 && bdyt == 0.0 &&
-        cdyt == 0.0) {
+    if (exact_differences) {
         return expansion_sign(finlen, fin);  // exact differences: fin is the determinant
     }
 
@@ -217,6 +261,64 @@ int incircle_adaptive(double ax, double ay, double bx, double by, double cx, dou
         return sign_of(det);
     }
     return incircle_exact(ax, ay, bx, by, cx, cy, dx, dy);
+}
+
+// Without -mfma the library targets every x86-64, where std::fma is a slow software routine.
+// Most CPUs (since 2013) have the instruction, so the stages are compiled a second time for it
+// and chosen at run time. Both versions are exact; only their speed differs.
+#if (defined(__x86_64__) || defined(__i386__)) && (defined(__GNUC__) || defined(__clang__)) && \
+    !defined(__FMA__)
+#define DTM_PREDICATES_FMA_DISPATCH 1
+[[gnu::target("fma")]] int orient_stages_fma(double ax, double ay, double bx, double by,
+                                             double cx, double cy, double detsum) noexcept
+{
+    return orient_stages<true>(ax, ay, bx, by, cx, cy, detsum);
+}
+
+[[gnu::target("fma")]] int incircle_stages_fma(double ax, double ay, double bx, double by,
+                                               double cx, double cy, double dx, double dy,
+                                               double permanent) noexcept
+{
+    return incircle_stages<true>(ax, ay, bx, by, cx, cy, dx, dy, permanent);
+}
+
+/// Zero (the portable path) until initialised, so early static-initialisation callers stay exact.
+const bool cpu_has_fma = [] {
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("fma") != 0;
+}();
+#endif
+
+}  // namespace
+
+int orient2d_adaptive(double ax, double ay, double bx, double by, double cx, double cy,
+                      double detsum) noexcept
+{
+    const double v[6] = {ax, ay, bx, by, cx, cy};
+    if (!in_expansion_range(v, 6, orient_min_abs, orient_max_abs)) {
+        return orient2d_bigint(ax, ay, bx, by, cx, cy);
+    }
+#if defined(DTM_PREDICATES_FMA_DISPATCH)
+    if (cpu_has_fma) {
+        return orient_stages_fma(ax, ay, bx, by, cx, cy, detsum);
+    }
+#endif
+    return orient_stages<compile_time_fma>(ax, ay, bx, by, cx, cy, detsum);
+}
+
+int incircle_adaptive(double ax, double ay, double bx, double by, double cx, double cy,
+                      double dx, double dy, double permanent) noexcept
+{
+    const double v[8] = {ax, ay, bx, by, cx, cy, dx, dy};
+    if (!in_expansion_range(v, 8, incircle_min_abs, incircle_max_abs)) {
+        return incircle_bigint(ax, ay, bx, by, cx, cy, dx, dy);
+    }
+#if defined(DTM_PREDICATES_FMA_DISPATCH)
+    if (cpu_has_fma) {
+        return incircle_stages_fma(ax, ay, bx, by, cx, cy, dx, dy, permanent);
+    }
+#endif
+    return incircle_stages<compile_time_fma>(ax, ay, bx, by, cx, cy, dx, dy, permanent);
 }
 
 }  // namespace dtm::geom::detail

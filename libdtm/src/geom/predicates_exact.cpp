@@ -17,9 +17,9 @@ int multiply(int elen, const double* e, int flen, const double* f, double* h) no
 {
     double part[2 * 16];
     double acc[Cap];
-    int hlen = scale_expansion(elen, e, f[0], h);
+    int hlen = scale_expansion<compile_time_fma>(elen, e, f[0], h);
     for (int j = 1; j < flen; ++j) {
-        const int plen = scale_expansion(elen, e, f[j], part);
+        const int plen = scale_expansion<compile_time_fma>(elen, e, f[j], part);
         for (int i = 0; i < hlen; ++i) {
             acc[i] = h[i];
         }

@@ -16,10 +16,18 @@
 
 #include <cmath>
 
+/// Inline even into functions compiled for another target (the FMA dispatch in
+/// predicates.cpp), so the caller's instruction set is used.
+#if defined(__GNUC__) || defined(__clang__)
+#define DTM_PREDICATES_INLINE [[gnu::always_inline]] inline
+#else
+#define DTM_PREDICATES_INLINE inline
+#endif
+
 namespace dtm::geom::detail {
 
 /// x + y == a + b exactly, x = fl(a + b). Requires |a| >= |b| (or a == 0).
-inline void fast_two_sum(double a, double b, double& x, double& y) noexcept
+DTM_PREDICATES_INLINE void fast_two_sum(double a, double b, double& x, double& y) noexcept
 {
     x = a + b;
     const double b_virtual = x - a;
@@ -27,7 +35,7 @@ inline void fast_two_sum(double a, double b, double& x, double& y) noexcept
 }
 
 /// x + y == a + b exactly, x = fl(a + b). Knuth's branch-free six-operation form.
-inline void two_sum(double a, double b, double& x, double& y) noexcept
+DTM_PREDICATES_INLINE void two_sum(double a, double b, double& x, double& y) noexcept
 {
     x = a + b;
     const double b_virtual = x - a;
@@ -38,7 +46,7 @@ inline void two_sum(double a, double b, double& x, double& y) noexcept
 }
 
 /// The rounding error of x = fl(a - b): a - b == x + result exactly.
-inline double two_diff_tail(double a, double b, double x) noexcept
+DTM_PREDICATES_INLINE double two_diff_tail(double a, double b, double x) noexcept
 {
     const double b_virtual = a - x;
     const double a_virtual = x + b_virtual;
@@ -48,20 +56,21 @@ inline double two_diff_tail(double a, double b, double x) noexcept
 }
 
 /// x + y == a - b exactly, x = fl(a - b).
-inline void two_diff(double a, double b, double& x, double& y) noexcept
+DTM_PREDICATES_INLINE void two_diff(double a, double b, double& x, double& y) noexcept
 {
     x = a - b;
     y = two_diff_tail(a, b, x);
 }
 
+/// True when the compilation target itself has FMA (then every build uses it).
 #if defined(__FMA__) || defined(__FP_FAST_FMA)
-inline constexpr bool has_hardware_fma = true;
+inline constexpr bool compile_time_fma = true;
 #else
-inline constexpr bool has_hardware_fma = false;
+inline constexpr bool compile_time_fma = false;
 #endif
 
 /// Dekker's split: a == hi + lo, each with at most 26 significant bits.
-inline void split(double a, double& hi, double& lo) noexcept
+DTM_PREDICATES_INLINE void split(double a, double& hi, double& lo) noexcept
 {
     constexpr double splitter = 134217729.0;  // 2^27 + 1
     const double c = splitter * a;
@@ -70,12 +79,15 @@ inline void split(double a, double& hi, double& lo) noexcept
     lo = a - hi;
 }
 
-/// x + y == a * b exactly, x = fl(a * b); b is given pre-split (Dekker, Veltkamp).
-inline void two_product_presplit(double a, double b, double bhi, double blo, double& x,
-                                 double& y) noexcept
+/// x + y == a * b exactly, x = fl(a * b); b is given pre-split (Dekker, Veltkamp) for the
+/// non-FMA form. Fma = true uses one fused multiply-add: only instantiate it where the
+/// hardware instruction is available (otherwise std::fma is a slow library call).
+template <bool Fma>
+DTM_PREDICATES_INLINE void two_product_presplit(double a, double b, double bhi, double blo,
+                                                double& x, double& y) noexcept
 {
     x = a * b;
-    if constexpr (has_hardware_fma) {
+    if constexpr (Fma) {
         y = std::fma(a, b, -x);
     } else {
         double ahi = 0.0;
@@ -89,21 +101,19 @@ inline void two_product_presplit(double a, double b, double bhi, double blo, dou
 }
 
 /// x + y == a * b exactly, x = fl(a * b).
-inline void two_product(double a, double b, double& x, double& y) noexcept
+template <bool Fma>
+DTM_PREDICATES_INLINE void two_product(double a, double b, double& x, double& y) noexcept
 {
-    if constexpr (has_hardware_fma) {
-        x = a * b;
-        y = std::fma(a, b, -x);
-    } else {
-        double bhi = 0.0;
-        double blo = 0.0;
+    double bhi = 0.0;
+    double blo = 0.0;
+    if constexpr (!Fma) {
         split(b, bhi, blo);
-        two_product_presplit(a, b, bhi, blo, x, y);
     }
+    two_product_presplit<Fma>(a, b, bhi, blo, x, y);
 }
 
 /// (a1 + a0) - (b1 + b0) as the four-component expansion x[0..3] (zeros kept).
-inline void two_two_diff(double a1, double a0, double b1, double b0, double* x) noexcept
+DTM_PREDICATES_INLINE void two_two_diff(double a1, double a0, double b1, double b0, double* x) noexcept
 {
     double i = 0.0;
     double j = 0.0;
@@ -120,7 +130,40 @@ inline void two_two_diff(double a1, double a0, double b1, double b0, double* x) 
 }
 
 /// h = e * b. Returns the length of h (at most 2 * elen; zeros removed, at least 1).
-int scale_expansion(int elen, const double* e, double b, double* h) noexcept;
+template <bool Fma>
+DTM_PREDICATES_INLINE int scale_expansion(int elen, const double* e, double b, double* h) noexcept
+{
+    double bhi = 0.0;
+    double blo = 0.0;
+    if constexpr (!Fma) {
+        split(b, bhi, blo);
+    }
+    double q = 0.0;
+    double hh = 0.0;
+    int n = 0;
+    two_product_presplit<Fma>(e[0], b, bhi, blo, q, hh);
+    if (hh != 0.0) {
+        h[n++] = hh;
+    }
+    for (int i = 1; i < elen; ++i) {
+        double p1 = 0.0;
+        double p0 = 0.0;
+        double sum = 0.0;
+        two_product_presplit<Fma>(e[i], b, bhi, blo, p1, p0);
+        two_sum(q, p0, sum, hh);
+        if (hh != 0.0) {
+            h[n++] = hh;
+        }
+        fast_two_sum(p1, sum, q, hh);
+        if (hh != 0.0) {
+            h[n++] = hh;
+        }
+    }
+    if (q != 0.0 || n == 0) {
+        h[n++] = q;
+    }
+    return n;
+}
 
 /// h = e + f for strongly non-overlapping e, f. Returns the length (<= elen + flen, >= 1).
 int expansion_sum(int elen, const double* e, int flen, const double* f, double* h) noexcept;
