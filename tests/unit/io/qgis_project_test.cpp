@@ -98,10 +98,10 @@ TEST_F(QgisProjectXml, EveryTreeLayerHasAMapLayerWithSourceProviderAndCrs) {
     ASSERT_EQ(tree.size(), 4u);
     ASSERT_EQ(layers_.size(), 4u);
     const std::map<std::string, std::pair<std::string, std::string>> expected{
-        {"Contours", {"ogr", "contours.gpkg|layername=contours"}},
-        {"TIN (mesh)", {"mdal", "tin.2dm"}},
-        {"DEM", {"gdal", "dem.tif"}},
-        {"Hillshade", {"gdal", "hillshade.tif"}}};
+        {"Contours", {"ogr", "./contours.gpkg|layername=contours"}},
+        {"TIN (mesh)", {"mdal", "./tin.2dm"}},
+        {"DEM", {"gdal", "./dem.tif"}},
+        {"Hillshade", {"gdal", "./hillshade.tif"}}};
     for (const CPLXMLNode* entry : tree) {
         const std::string id = value_of(entry, "id");
         ASSERT_EQ(layers_.count(id), 1u) << id;

@@ -171,8 +171,16 @@ void write_spatialrefsys(XmlWriter& xml, const CrsInfo& crs) {
     xml.close("spatialrefsys");
 }
 
+std::string project_path(const std::filesystem::path& path) {
+    std::string text = path.generic_string();
+    if (path.is_relative() && text.rfind("./", 0) != 0 && text.rfind("../", 0) != 0) {
+        text.insert(0, "./");
+    }
+    return text;
+}
+
 std::string contours_source(const QgisProject& project) {
-    std::string source = project.contours.generic_string();
+    std::string source = project_path(project.contours);
     if (!project.contour_layer.empty()) {
         source += "|layername=" + project.contour_layer;
     }
@@ -183,6 +191,7 @@ std::string contours_source(const QgisProject& project) {
 
 namespace {
 
+using qgis::project_path;
 using qgis::XmlWriter;
 
 struct TreeEntry {
@@ -201,15 +210,15 @@ std::vector<TreeEntry> tree_entries(const QgisProject& project) {
             {qgis::contours_id, "Contours", qgis::contours_source(project), "ogr", true});
     }
     if (!project.mesh.empty()) {
-        entries.push_back({qgis::mesh_id, "TIN (mesh)", project.mesh.generic_string(), "mdal",
+        entries.push_back({qgis::mesh_id, "TIN (mesh)", project_path(project.mesh), "mdal",
                            project.mesh_visible});
     }
     if (!project.dem.empty()) {
-        entries.push_back({qgis::dem_id, "DEM", project.dem.generic_string(), "gdal", true});
+        entries.push_back({qgis::dem_id, "DEM", project_path(project.dem), "gdal", true});
     }
     if (!project.hillshade.empty()) {
         entries.push_back(
-            {qgis::hillshade_id, "Hillshade", project.hillshade.generic_string(), "gdal", true});
+            {qgis::hillshade_id, "Hillshade", project_path(project.hillshade), "gdal", true});
     }
     return entries;
 }

@@ -139,7 +139,7 @@ void write_dem_layer(XmlWriter& xml, const QgisProject& project, const CrsInfo& 
     const double z_min = project.z_min;
     const double z_max = project.z_max > project.z_min ? project.z_max : project.z_min + 1.0;
     open_maplayer(xml, "raster", "");
-    write_layer_head(xml, project, crs, dem_id, project.dem.generic_string(), "DEM", "gdal");
+    write_layer_head(xml, project, crs, dem_id, project_path(project.dem), "DEM", "gdal");
     xml.open("noData");
     xml.leaf("noDataList", {{"bandNo", "1"}, {"useSrcNoData", "1"}});
     xml.close("noData");
@@ -163,8 +163,8 @@ void write_dem_layer(XmlWriter& xml, const QgisProject& project, const CrsInfo& 
 
 void write_hillshade_layer(XmlWriter& xml, const QgisProject& project, const CrsInfo& crs) {
     open_maplayer(xml, "raster", "");
-    write_layer_head(xml, project, crs, hillshade_id, project.hillshade.generic_string(),
-                     "Hillshade", "gdal");
+    write_layer_head(xml, project, crs, hillshade_id, project_path(project.hillshade), "Hillshade",
+                     "gdal");
     xml.open("noData");
     xml.leaf("noDataList", {{"bandNo", "1"}, {"useSrcNoData", "1"}});
     xml.close("noData");

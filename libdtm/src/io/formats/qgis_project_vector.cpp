@@ -151,8 +151,7 @@ void write_contours_layer(XmlWriter& xml, const QgisProject& project, const CrsI
 
 void write_mesh_layer(XmlWriter& xml, const QgisProject& project, const CrsInfo& crs) {
     open_maplayer(xml, "mesh", "");
-    write_layer_head(xml, project, crs, mesh_id, project.mesh.generic_string(), "TIN (mesh)",
-                     "mdal");
+    write_layer_head(xml, project, crs, mesh_id, project_path(project.mesh), "TIN (mesh)", "mdal");
     xml.leaf("extra-datasets");
     xml.open("mesh-renderer-settings");
     xml.leaf("active-dataset-group", {{"scalar", "-1"}, {"vector", "-1"}});

@@ -57,6 +57,11 @@ inline constexpr std::string_view hillshade_id = "dtm_hillshade_layer";
 inline constexpr std::string_view contours_id = "dtm_contours_layer";
 inline constexpr std::string_view mesh_id = "dtm_tin_mesh_layer";
 
+/// A layer path as QGIS reads it: a relative path gets a leading "./" (QgsPathResolver resolves
+/// only "./" and "../" paths against the project folder; a bare name would be taken relative to
+/// the working directory of QGIS).
+[[nodiscard]] std::string project_path(const std::filesystem::path& path);
+
 /// The `datasource` of the contour layer ("file|layername=x" for a GeoPackage).
 [[nodiscard]] std::string contours_source(const QgisProject& project);
 

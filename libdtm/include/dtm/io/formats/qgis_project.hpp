@@ -12,8 +12,8 @@
 
 namespace dtm::io {
 
-/// What the project shows. Paths are written as given (relative paths are resolved by QGIS
-/// against the project file's folder, so `dtm build` passes bare file names).
+/// What the project shows. Relative paths are relative to the project file's folder and are
+/// written with a leading "./", the form QGIS resolves against the project folder.
 struct QgisProject {
     std::string title = "dtm";
     std::string crs_wkt;  ///< CRS of every layer and of the project; empty: left unknown
