@@ -286,6 +286,35 @@ TEST_F(BuildSample, QgisProjectOpensEveryProductInEpsg5514) {
     EXPECT_EQ(count, 4u);
 }
 
+TEST(BuildSampleData, FilesAgreeWithTheAnalyticTerrain) {
+    // The committed sample is what tools/dtm-sample generates from sample_terrain.hpp: every
+    // readable point and every check point lies on the analytic terrain (heights rounded to the
+    // millimetre in points.csv, to 0.1 mm in checkpoints.csv).
+    for (const auto& [name, tolerance] :
+         {std::pair<const char*, double>{"points.csv", 0.0005}, {"checkpoints.csv", 0.00005}}) {
+        std::ifstream file(sample_dir() / name);
+        ASSERT_TRUE(file) << name;
+        std::string line;
+        std::getline(file, line);  // header
+        std::size_t checked = 0;
+        while (std::getline(file, line)) {
+            std::stringstream fields(line);
+            std::string id, e, n, z;
+            std::getline(fields, id, ',');
+            std::getline(fields, e, ',');
+            std::getline(fields, n, ',');
+            if (!std::getline(fields, z, ',') || z == "n/a") {
+                continue;  // the two corrupt records
+            }
+            EXPECT_NEAR(std::stod(z), dtm::sample::true_z(std::stod(e), std::stod(n)),
+                        tolerance + 1e-9)
+                << name << ": " << id;
+            ++checked;
+        }
+        EXPECT_GT(checked, 100u) << name;
+    }
+}
+
 TEST(Build, FailedRunLeavesThePreviousProductsUntouched) {
     dtm::test::ScratchDir scratch;
     const fs::path out = scratch / "out";

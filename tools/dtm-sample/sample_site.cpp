@@ -147,8 +147,8 @@ void add_check_points(Survey& survey, const SurveyOptions& options, Random& rand
             distance_to_ring(building_local(), u, v) < 2.0) {
             continue;
         }
-        const double e = origin_e + u;
-        const double n = origin_n + v;
+        const double e = round_to(origin_e + u, 0.001);  // as written to checkpoints.csv
+        const double n = round_to(origin_n + v, 0.001);
         survey.check_points.push_back(
             {numbered("C", survey.check_points.size() + 1), e, n, true_z(e, n)});
     }

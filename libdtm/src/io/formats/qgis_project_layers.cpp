@@ -8,7 +8,7 @@
 // blendMode, where 6 is QgsPainting::BlendMultiply), QgsColorRampShader (colorrampshader/item),
 // QgsRuleBasedRenderer (renderer-v2 type="RuleRenderer", rules/rule, symbols/symbol/layer with
 // both the 3.26+ `Option` map and the older `prop` list), QgsPalLayerSettings (labeling
-// type="simple", settings/text-style fieldName, placement 2 = along the line, a data-defined
+// type="simple", settings/text-style fieldName, placement 3 = curved along the line, a data-defined
 // Show property restricting labels to index contours) and QgsMeshRendererSettings.
 #include <array>
 #include <cstdio>

@@ -119,7 +119,7 @@ void write_contour_labeling(XmlWriter& xml, const QgisProject& project) {
                              {"plussign", "0"},
                              {"wrapChar", ""},
                              {"multilineAlign", "0"}});
-    xml.leaf("placement", {{"placement", "2"},       // along the line
+    xml.leaf("placement", {{"placement", "3"},       // curved, following the line
                            {"placementFlags", "1"},  // on the line
                            {"repeatDistance", "80"},
                            {"repeatDistanceUnits", "MM"},
