@@ -12,6 +12,8 @@
 # cgal/dtm (> 1 means dtm is faster). dtm's time is seconds.triangulate + seconds.constrain
 # (reading and writing excluded); CGAL's is its insert calls (Delaunay_triangulation_2, or
 # Constrained_Delaunay_triangulation_2 with Exact_predicates_tag for breaklines), one thread.
+# Default kinds: uniform gaussian clustered breaklines; "grid" (1 m integer lattice, exactly
+# cocircular cells) can be added with --kinds.
 set -euo pipefail
 
 n=1000000
@@ -22,7 +24,7 @@ while [[ $# -gt 0 ]]; do
         --n) n="$2"; shift 2 ;;
         --out) out="$2"; shift 2 ;;
         --kinds) kinds="$2"; shift 2 ;;
-        -h|--help) sed -n '2,14p' "$0"; exit 0 ;;
+        -h|--help) sed -n '2,16p' "$0"; exit 0 ;;
         *) echo "compare_cgal.sh: unknown option '$1'" >&2; exit 2 ;;
     esac
 done
