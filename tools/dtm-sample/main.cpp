@@ -4,6 +4,8 @@
 //
 //   dtm-sample write samples/sjtsk        regenerate every sample file
 //   dtm-sample z -750200 -1050100 ...     true z at S-JTSK (E, N) pairs
+//   dtm-sample render OUT picture.png --breaklines samples/sjtsk/breaklines.shp
+//                                         the README picture from the products of `dtm build`
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
@@ -12,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "render.hpp"
 #include "sample_output.hpp"
 #include "sample_terrain.hpp"
 
@@ -71,12 +74,27 @@ int main(int argc, char** argv) {
     std::vector<double> coordinates;
     CLI::App* z = app.add_subcommand("z", "Print the true elevation at E N pairs (EPSG:5514)");
     z->add_option("coordinates", coordinates, "E N [E N ...]")->required();
+    std::string build_dir;
+    std::string png;
+    dtm::sample::RenderOptions render_options;
+    std::vector<std::string> render_lines;
+    CLI::App* render =
+        app.add_subcommand("render", "Render a picture of the products of `dtm build` in BUILD");
+    render->add_option("build", build_dir, "Output folder of dtm build")->required();
+    render->add_option("png", png, "Picture to write (.png)")->required();
+    render->add_option("--breaklines", render_lines, "Line files drawn in blue");
+    render->add_option("--z-factor", render_options.z_factor, "Hillshade exaggeration (4)");
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         return app.exit(e) == 0 ? 0 : 2;
     }
     try {
+        if (render->parsed()) {
+            render_options.breaklines.assign(render_lines.begin(), render_lines.end());
+            dtm::sample::render_picture(build_dir, png, render_options);
+            return 0;
+        }
         return write->parsed() ? write_sample(dir, spacing) : print_z(coordinates);
     } catch (const std::exception& e) {
         std::cerr << "dtm-sample: " << e.what() << '\n';
