@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <tuple>
 
 #include "io/formats/detail/hpgl_heights.hpp"
 
@@ -70,6 +71,25 @@ TEST(HpglSpotHeights, NearestMarkerWinsAndServesOneLabel)
     ASSERT_EQ(plan.spots.size(), 2u);
     EXPECT_EQ(plan.spots[0].at, (Point2{0, 0}));
     EXPECT_EQ(plan.spots[1].at, (Point2{100, 0}));
+}
+
+TEST(HpglSpotHeights, CrowdedMarkersFollowThePlansLabelOffset)
+{
+    // Every label 1 mm right, 0.5 mm up of its symbol (samples/sjtsk/plan_500.hpgl, byte 129834):
+    // the label of the symbol at 877,4918 is nearer to the symbol at 956,4937 than to its own.
+    std::string bytes = "IN;SP1;";
+    for (const auto& [x, y, z] : {std::tuple{956, 4937, "314.77"}, std::tuple{954, 5018, "314.78"},
+                                  std::tuple{877, 4918, "314.69"}, std::tuple{3000, 3000, "300.00"},
+                                  std::tuple{4000, 3000, "301.00"}}) {
+        bytes += "SM*;PU" + std::to_string(x) + "," + std::to_string(y) + ";SM;PU" + std::to_string(x + 40) + "," +
+                 std::to_string(y + 20) + ";LB" + z + "\x03";
+    }
+    const auto plan = plan_of(bytes);
+    ASSERT_EQ(plan.spots.size(), 5u);
+    EXPECT_EQ(plan.labels_without_marker, 0u);
+    EXPECT_EQ(plan.spots[0].at, (Point2{956, 4937}));
+    EXPECT_EQ(plan.spots[1].at, (Point2{954, 5018}));
+    EXPECT_EQ(plan.spots[2].at, (Point2{877, 4918}));
 }
 
 TEST(HpglSpotHeights, LabelWithoutMarkerKeepsItsPositionAndIsCounted)

@@ -7,8 +7,10 @@
 // role is "points". A label is a height when its whole text is a decimal number ("312.45",
 // "312,45"); integer labels (parcel numbers) only on --hpgl-height-pens. Every height label is
 // matched to the nearest free marker within the marker radius (pairs taken in increasing
-// distance, so a marker serves one label); without one, the label's own position is used and
-// counted in a warning. Grids keyed by the radius keep every step linear in the plot size.
+// distance, so a marker serves one label); when most labels sit at one offset from their marker
+// (a plan's house style), a second pass ranks the pairs by the distance from where that offset
+// puts the marker, which resolves crowded places; without a marker, the label's own position is
+// used and counted in a warning. Grids keyed by the radius keep every step linear in the plot size.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -107,13 +109,52 @@ void add_point_markers(const Plot& plot, const HpglOptions& options, std::vector
     }
 }
 
+using Pair = std::tuple<double, double, std::size_t, std::size_t>;  // key, distance, spot, marker
+
+/// Greedy matching in increasing key: each spot height and each marker used once.
+void assign_pairs(std::vector<Pair>& pairs, const std::vector<PlotMarker>& markers, std::vector<SpotHeight>& spots,
+                  std::vector<std::size_t>& marker_of)
+{
+    std::sort(pairs.begin(), pairs.end());
+    std::vector<bool> taken(markers.size(), false);
+    marker_of.assign(spots.size(), markers.size());
+    for (const auto& [key, d, spot, m] : pairs) {
+        if (marker_of[spot] != markers.size() || taken[m]) continue;
+        marker_of[spot] = m;
+        taken[m] = true;
+    }
+}
+
+/// The label-to-marker offset most labels share, if two thirds of them (at least 3) agree within
+/// 10 % of the radius (plans place height labels consistently, e.g. 1 mm right and 0.5 mm up).
+std::optional<Point2> common_offset(const std::vector<SpotHeight>& spots, const std::vector<PlotMarker>& markers,
+                                    const std::vector<std::size_t>& marker_of, double radius)
+{
+    std::vector<double> dx, dy;
+    for (std::size_t s = 0; s < spots.size(); ++s) {
+        if (marker_of[s] == markers.size()) continue;
+        dx.push_back(spots[s].at.x - markers[marker_of[s]].at.x);
+        dy.push_back(spots[s].at.y - markers[marker_of[s]].at.y);
+    }
+    if (dx.size() < 3) return std::nullopt;
+    const auto median = [](std::vector<double> v) {
+        std::nth_element(v.begin(), v.begin() + static_cast<long>(v.size() / 2), v.end());
+        return v[v.size() / 2];
+    };
+    const Point2 offset{median(dx), median(dy)};
+    std::size_t agree = 0;
+    for (std::size_t i = 0; i < dx.size(); ++i) agree += distance({dx[i], dy[i]}, offset) <= 0.1 * radius ? 1 : 0;
+    if (agree < 3 || agree * 3 < dx.size() * 2) return std::nullopt;
+    return offset;
+}
+
 void match_labels(const Plot& plot, const HpglOptions& options, double radius, TerrainPlan& plan)
 {
     const auto& markers = plot.markers;
     std::vector<Point2> places;
     for (const PlotMarker& m : markers) places.push_back(m.at);
     const PointGrid grid(places, radius);
-    std::vector<std::tuple<double, std::size_t, std::size_t>> pairs;  // distance, spot, marker
+    std::vector<Pair> pairs;
     for (std::size_t i = 0; i < plot.labels.size(); ++i) {
         const PlotLabel& label = plot.labels[i];
         const bool integers = std::find(options.height_pens.begin(), options.height_pens.end(), label.pen) !=
@@ -122,16 +163,23 @@ void match_labels(const Plot& plot, const HpglOptions& options, double radius, T
         if (!z) continue;
         const std::size_t spot = plan.spots.size();
         plan.spots.push_back({label.at, *z, i, false});
-        grid.near(label.at, radius, [&](std::uint32_t m, double d) { pairs.emplace_back(d, spot, m); });
+        grid.near(label.at, radius, [&](std::uint32_t m, double d) { pairs.emplace_back(d, d, spot, m); });
     }
-    std::sort(pairs.begin(), pairs.end());
-    std::vector<bool> taken(markers.size(), false);
-    for (const auto& [d, spot, m] : pairs) {
-        SpotHeight& s = plan.spots[spot];
-        if (s.on_marker || taken[m]) continue;
-        s.at = markers[m].at;
-        s.on_marker = true;
-        taken[m] = true;
+    // Pass 1: nearest first. Pass 2, when the plan has a house style: nearest to where that
+    // style puts the marker, so a neighbour's marker closer to a label does not steal it.
+    std::vector<std::size_t> marker_of;
+    assign_pairs(pairs, markers, plan.spots, marker_of);
+    if (const auto offset = common_offset(plan.spots, markers, marker_of, radius)) {
+        for (auto& [key, d, spot, m] : pairs) {
+            const Point2 expected{plan.spots[spot].at.x - offset->x, plan.spots[spot].at.y - offset->y};
+            key = distance(expected, markers[m].at);
+        }
+        assign_pairs(pairs, markers, plan.spots, marker_of);
+    }
+    for (std::size_t s = 0; s < plan.spots.size(); ++s) {
+        if (marker_of[s] == markers.size()) continue;
+        plan.spots[s].at = markers[marker_of[s]].at;
+        plan.spots[s].on_marker = true;
     }
     plan.height_labels = plan.spots.size();
     std::string first;
