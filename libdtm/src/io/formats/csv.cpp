@@ -155,7 +155,7 @@ void CsvReader::flush_line()
     current_ = Polyline{};
     const bool ring = file_.role == InputRole::boundary || file_.role == InputRole::holes;
     const std::size_t n = line.points.size();
-    if (n >= 3 && line.points.front() == line.points.back()) {
+    if (n >= 3 && line.points.front().xy() == line.points.back().xy()) {
         line.points.pop_back();
         line.closed = true;
     }

@@ -9,7 +9,7 @@
 //     names a known column or the next line has fewer non-numbers;
 //   - columns are mapped by header name, or by --columns, or guessed: "x y [z]"; for points,
 //     "id x y z [code]" when the first of 4+ columns holds integers and the next two do not;
-//     for polylines, "line_id x y [z]" when the first of 3+ columns holds integers.
+//     for polylines, "line_id x y [z]" when the first of 3+ columns does (pputils layout).
 #include <algorithm>
 #include <cctype>
 #include <charconv>
@@ -270,11 +270,7 @@ std::vector<Field> guess_fields(const std::vector<std::vector<Cell>>& rows, bool
         });
     };
     bool first_is_id = false;
-    if (polyline) {
-        first_is_id = n >= 3 && all_integer(0);
-    } else {
-        first_is_id = n >= 4 && all_integer(0) && !(all_integer(1) && all_integer(2));
-    }
+    first_is_id = n >= (polyline ? 3u : 4u) && all_integer(0) && !(all_integer(1) && all_integer(2));
     const std::size_t c0 = first_is_id ? 1 : 0;
     if (first_is_id) fields[0] = polyline ? Field::line_id : Field::id;
     fields[c0] = Field::x;
