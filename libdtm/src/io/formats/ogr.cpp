@@ -232,6 +232,11 @@ void read_layer(OGRLayer& layer, const InputFile& file, const LoadOptions& optio
     const int z_index = z_field_index(layer, options, file);
     layer.ResetReading();
     std::size_t count = 0;
+    CPLErrorReset();
+    CPLPushErrorHandler(CPLQuietErrorHandler);
+    struct PopHandler {
+        ~PopHandler() { CPLPopErrorHandler(); }
+    } pop;
     while (FeaturePtr f{layer.GetNextFeature()}) {
         if ((++count & 1023u) == 0) progress.check();
         const OGRGeometry* g = f->GetGeometryRef();
@@ -239,6 +244,12 @@ void read_layer(OGRLayer& layer, const InputFile& file, const LoadOptions& optio
         const std::string source = file.path.string() + ": layer '" + layer.GetName() +
                                    "' feature " + std::to_string(f->GetFID());
         collector.add(*g, feature_z(*f, z_index, file, source), source);
+    }
+    if (CPLGetLastErrorType() >= CE_Failure) {
+        throw InputError(file.path, 0, 0,
+                         std::string("reading layer '") + layer.GetName() + "' failed" +
+                             (options.where.empty() ? "" : " (check --where)") + ": " +
+                             last_gdal_error());
     }
 }
 
