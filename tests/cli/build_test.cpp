@@ -201,6 +201,8 @@ TEST_F(BuildSample, DemMatchesTheTrueTerrainAtTheCheckPoints) {
     }
     ASSERT_EQ(count, 200u);
     EXPECT_LT(sum / static_cast<double>(count), 0.005) << "worst " << worst;
+    RecordProperty("dem_error_worst_mm", std::to_string(worst * 1000.0));
+    RecordProperty("dem_error_mean_mm", std::to_string(sum / static_cast<double>(count) * 1000.0));
 }
 
 TEST_F(BuildSample, ReportAccountsForEveryInputPoint) {
