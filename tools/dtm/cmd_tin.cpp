@@ -1,12 +1,11 @@
 // SPDX-License-Identifier: MIT
 // `dtm tin`: read points and breaklines, build the constrained Delaunay TIN, write it by extension.
 // Thin: parse -> options -> io::load_inputs -> dtm::triangulate -> io::write_tin -> report.
+#include <charconv>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
-#include <iomanip>
 #include <iostream>
-#include <sstream>
 
 #include "command.hpp"
 #include "dtm/algo/triangulate.hpp"
@@ -37,11 +36,12 @@ double since(std::chrono::steady_clock::time_point t)
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 
+/// Shortest text that reads back to the same double.
 std::string number(double v)
 {
-    std::ostringstream s;
-    s << std::setprecision(17) << v;
-    return s.str();
+    char buffer[32];
+    const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, v);
+    return std::string(buffer, end);
 }
 
 void write_report(const std::string& path, const TriangulateResult& r)
@@ -71,11 +71,12 @@ void write_report(const std::string& path, const TriangulateResult& r)
     out.commit();
 }
 
-void check_tin(const Tin& tin, const TerrainInput& input)
+void check_tin(const TriangulateResult& result, const TerrainInput& input)
 {
+    const Tin& tin = result.tin;
     std::string problems;
     for (const CheckReport& r : {verify_topology(tin), verify_constrained_delaunay(tin),
-                                 verify_constraints(tin, input)}) {
+                                 verify_constraints(tin, input, result.input_to_vertex)}) {
         problems += r.text();
     }
     if (!problems.empty()) throw Error("the TIN failed its checks:\n" + problems);
@@ -94,7 +95,7 @@ int run_tin(const TinArgs& a)
     } else {
         result = triangulate(loaded.terrain, a.triangulate, progress.sub(0.2, 0.9));
     }
-    if (a.check) check_tin(result.tin, loaded.tin ? TerrainInput{} : loaded.terrain);
+    if (a.check) check_tin(result, loaded.tin ? TerrainInput{} : loaded.terrain);
 
     const auto write_start = std::chrono::steady_clock::now();
     io::TinWriteOptions write_options;

@@ -15,9 +15,11 @@ void add_tin_options(CLI::App& app, TriangulateOptions& options)
     app.add_option("--snap", options.snap_distance,
                    "Merge points closer than D in xy (default 0: exact duplicates only)")
         ->check(CLI::NonNegativeNumber);
-    app.add_option("--duplicates", options.duplicates,
-                   "z of merged duplicates: first|mean|min|max (default first)")
-        ->transform(CLI::CheckedTransformer(rules, CLI::ignore_case));
+    app.add_option_function<std::string>(
+           "--duplicates",
+           [&options, rules](const std::string& name) { options.duplicates = rules.at(name); },
+           "z of merged duplicates: first|mean|min|max (default first)")
+        ->check(CLI::IsMember({"first", "mean", "min", "max"}));
     app.add_option("--max-edge", options.max_edge,
                    "Trim border triangles with an outward edge longer than L (default 0: off)")
         ->check(CLI::NonNegativeNumber);

@@ -119,7 +119,8 @@ CheckReport verify_constrained_delaunay(const Tin& tin)
     return report;
 }
 
-CheckReport verify_constraints(const Tin& tin, const TerrainInput& input)
+CheckReport verify_constraints(const Tin& tin, const TerrainInput& input,
+                               std::span<const VertexIndex> input_to_vertex)
 {
     CheckReport report;
     std::unordered_map<std::pair<double, double>, VertexIndex, XyHash> at;
@@ -131,32 +132,44 @@ CheckReport verify_constraints(const Tin& tin, const TerrainInput& input)
         adjacent[c.a].push_back(c.b);
         adjacent[c.b].push_back(c.a);
     }
+    // Combined input numbering of triangulate(): points, breaklines, boundaries, holes, soft.
+    std::size_t next_input = input.points.size();
+    const auto vertex_of = [&](const Point3& p, std::size_t combined) -> VertexIndex {
+        if (!input_to_vertex.empty()) {
+            return combined < input_to_vertex.size() ? input_to_vertex[combined] : no_vertex;
+        }
+        const auto it = at.find({p.x, p.y});
+        return it == at.end() ? no_vertex : it->second;
+    };
     const auto check_lines = [&](const std::vector<Polyline>& lines, const char* what) {
-        for (const Polyline& line : lines) for (const Point3& p : line.points) given.insert({p.x, p.y});
         for (std::size_t k = 0; k < lines.size(); ++k) {
             const auto& pts = lines[k].points;
             const std::size_t count = pts.size();
+            const std::size_t base = next_input;
+            next_input += count;
             for (std::size_t i = 0; i + 1 < count + (lines[k].closed ? 1 : 0); ++i) {
-                const Point3& pa = pts[i];
-                const Point3& pb = pts[(i + 1) % count];
-                const auto ia = at.find({pa.x, pa.y});
-                const auto ib = at.find({pb.x, pb.y});
+                const std::size_t j = (i + 1) % count;
+                const VertexIndex va = vertex_of(pts[i], base + i);
+                const VertexIndex vb = vertex_of(pts[j], base + j);
                 const std::string name = std::string(what) + " " + std::to_string(k + 1) +
                                          " segment " + std::to_string(i + 1);
-                if (ia == at.end() || ib == at.end()) {
+                if (va == no_vertex || vb == no_vertex) {
                     add(report, name + ": endpoint is not a TIN vertex");
                     continue;
                 }
-                if (ia->second == ib->second) continue;
+                if (va == vb) continue;
+                const Point3& pa = tin.vertices[va];
+                const Point3& pb = tin.vertices[vb];
+
                 // Breadth-first search along constrained edges through allowed vertices.
-                std::set<VertexIndex> seen{ia->second};
-                std::vector<VertexIndex> frontier{ia->second};
+                std::set<VertexIndex> seen{va};
+                std::vector<VertexIndex> frontier{va};
                 bool found = false;
                 while (!frontier.empty() && !found) {
                     const VertexIndex v = frontier.back();
                     frontier.pop_back();
                     for (const VertexIndex w : adjacent[v]) {
-                        if (w == ib->second) {
+                        if (w == vb) {
                             found = true;
                             break;
                         }
@@ -177,9 +190,9 @@ CheckReport verify_constraints(const Tin& tin, const TerrainInput& input)
         for (const Polyline& line : *lines) for (const Point3& p : line.points) given.insert({p.x, p.y});
     }
     check_lines(input.breaklines, "breakline");
-    check_lines(input.soft_breaklines, "soft breakline");
     check_lines(input.boundaries, "boundary");
     check_lines(input.holes, "hole");
+    check_lines(input.soft_breaklines, "soft breakline");
     return report;
 }
 

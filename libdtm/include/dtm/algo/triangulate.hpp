@@ -36,7 +36,7 @@ struct TriangulateOptions {
 
 /// One merge of input points that share a position (or lie within snap_distance).
 struct DuplicateMerge {
-    std::size_t kept_input;    ///< index into the combined input (points, then breakline vertices)
+    std::size_t kept_input;    ///< index into the combined input (see input_to_vertex)
     std::size_t merged_input;  ///< the input point merged into it
     Point3 kept;               ///< position kept, with the z the rule gave
     Point3 merged;             ///< the merged point as given
@@ -64,8 +64,8 @@ struct TriangulateResult {
     TriangulateStats stats;
     std::vector<DuplicateMerge> merges;
     std::vector<ConstraintConflict> conflicts;
-    /// For every combined input point (points, then breakline, soft breakline, boundary, hole
-    /// vertices, in that order), the TIN vertex it became.
+    /// For every combined input point (points, then the vertices of breaklines, boundaries, holes
+    /// and soft breaklines, in that order), the TIN vertex it became.
     std::vector<VertexIndex> input_to_vertex;
 };
 

@@ -3,6 +3,7 @@
 /// @brief Invariant checkers for a Tin, used by tests and `dtm tin --check`.
 #pragma once
 
+#include <span>
 #include <string>
 #include <vector>
 
@@ -27,8 +28,11 @@ struct CheckReport {
 [[nodiscard]] CheckReport verify_constrained_delaunay(const Tin& tin);
 
 /// Every segment of every polyline of @p input (breaklines, soft breaklines, boundaries, holes) is
-/// present as a chain of constrained TIN edges along it.
-[[nodiscard]] CheckReport verify_constraints(const Tin& tin, const TerrainInput& input);
+/// present as a chain of constrained TIN edges along it. Polyline vertices are found by position,
+/// or through @p input_to_vertex (TriangulateResult::input_to_vertex) when given, which is needed
+/// when points were snapped.
+[[nodiscard]] CheckReport verify_constraints(const Tin& tin, const TerrainInput& input,
+                                             std::span<const VertexIndex> input_to_vertex = {});
 
 /// Sum of triangle areas in xy (compensated summation).
 [[nodiscard]] double tin_area(const Tin& tin);

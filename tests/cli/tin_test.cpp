@@ -1,0 +1,131 @@
+// SPDX-License-Identifier: MIT
+// `dtm tin` end to end: the real river survey with boundary and hole seeds, byte-identical output
+// for every thread and tile count, stats and reports, bad input (exit 2, nothing written).
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+#include "dtm/algo/validate.hpp"
+#include "dtm/io/tin_file.hpp"
+#include "support/terrain_fixtures.hpp"
+#include "support/test_support.hpp"
+
+namespace dtm {
+namespace {
+
+using test::run_dtm;
+using test::RunResult;
+using test::ScratchDir;
+
+bool contains(const std::string& text, const std::string& part)
+{
+    return text.find(part) != std::string::npos;
+}
+
+/// Writes random points (x y z per line, full precision) and returns the path.
+std::filesystem::path write_points(const ScratchDir& dir, std::size_t count, std::uint32_t seed)
+{
+    std::ostringstream text;
+    text << std::setprecision(17);
+    for (const Point3& p : test::random_points(count, seed, test::sjtsk_e, test::sjtsk_n)) {
+        text << p.x << ' ' << p.y << ' ' << p.z << '\n';
+    }
+    const auto path = dir / "points.xyz";
+    test::write_file(path, text.str());
+    return path;
+}
+
+TEST(TinCli, RiverSurveyWithBoundaryAndHoleSeedsMatchesTrianglesCounts)
+{
+    const std::string d = "points-breaklines-pputils-hurdville/";
+    if (!test::shared_data_available(d + "nodes.csv")) GTEST_SKIP() << "shared data absent";
+    ScratchDir dir;
+    const RunResult r = run_dtm({"tin", test::shared_data_path(d + "nodes.csv").string(),
+                                 "--soft-breaklines", test::shared_data_path(d + "lines.csv").string(),
+                                 "--boundary", test::shared_data_path(d + "boundary.csv").string(),
+                                 "--holes", test::shared_data_path(d + "holes.csv").string(),
+                                 "--snap", "0.001", "--check", "--stats", "-o", (dir / "h.ply").string()});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    // 5,552 points (124 duplicate positions) + 3,805 line + 1,417 boundary vertices snapped onto
+    // them: 5,428 distinct positions. Triangle's reference CDT of the same survey has 5,422
+    // vertices and 9,141 triangles; its pre-processing dropped 6 points that sit 2-6 mm from a
+    // line vertex, which accounts for the few extra triangles here.
+    EXPECT_TRUE(contains(r.out, "\"vertices\": 5428")) << r.out;
+    const io::LoadedTin tin = io::read_tin_ply(dir / "h.ply");
+    EXPECT_NEAR(static_cast<double>(tin.tin.triangles.size()), 9141.0, 20.0);
+    EXPECT_TRUE(verify_topology(tin.tin).ok()) << verify_topology(tin.tin).text();
+    EXPECT_TRUE(verify_constrained_delaunay(tin.tin).ok());
+}
+
+TEST(TinCli, OutputIsByteIdenticalForEveryThreadAndTileCount)
+{
+    ScratchDir dir;
+    const auto points = write_points(dir, 50000, 3);
+    std::string reference;
+    for (const char* tiles : {"1", "2", "7", "64"}) {
+        for (const char* threads : {"1", "2"}) {
+            const auto out = dir / (std::string("t") + tiles + "_" + threads + ".ply");
+            const RunResult r = run_dtm({"tin", points.string(), "-o", out.string(), "--tiles",
+                                         tiles, "--threads", threads, "-q"});
+            ASSERT_EQ(r.exit_code, 0) << r.err;
+            const std::string bytes = test::read_file(out);
+            if (reference.empty()) reference = bytes;
+            EXPECT_TRUE(bytes == reference) << "tiles " << tiles << " threads " << threads;
+        }
+    }
+}
+
+TEST(TinCli, StatsPrintOneJsonObjectWithCountsAndTimings)
+{
+    ScratchDir dir;
+    const auto points = write_points(dir, 1000, 4);
+    const RunResult r = run_dtm({"tin", points.string(), "-o", (dir / "t.ply").string(), "--stats"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    for (const char* key : {"\"points_in\": 1000", "\"duplicates_merged\": 0", "\"vertices\": 1000",
+                            "\"triangles\":", "\"constrained_edges\": 0", "\"intersections\": 0",
+                            "\"read\":", "\"triangulate\":", "\"constrain\":", "\"write\":",
+                            "\"total\":"}) {
+        EXPECT_TRUE(contains(r.out, key)) << key << " missing in " << r.out;
+    }
+}
+
+TEST(TinCli, ReportListsEveryMergedDuplicate)
+{
+    ScratchDir dir;
+    test::write_file(dir / "p.xyz", "0 0 1\n10 0 2\n0 10 3\n10 0 5\n10 10 4\n0 0 9\n");
+    const RunResult r = run_dtm({"tin", (dir / "p.xyz").string(), "-o", (dir / "t.ply").string(),
+                                 "--duplicates", "max", "--report", (dir / "r.json").string(), "-q"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const std::string report = test::read_file(dir / "r.json");
+    EXPECT_TRUE(contains(report, "\"duplicates_merged\": 2")) << report;
+    EXPECT_TRUE(contains(report, "\"kept_input\": 1, \"merged_input\": 3, \"kept\": [10, 0, 5]"))
+        << report;
+}
+
+TEST(TinCli, CollinearInputIsExitTwoAndWritesNothing)
+{
+    ScratchDir dir;
+    test::write_file(dir / "p.xyz", "0 0 1\n1 1 1\n2 2 1\n3 3 1\n");
+    const auto out = dir / "t.ply";
+    const RunResult r = run_dtm({"tin", (dir / "p.xyz").string(), "-o", out.string()});
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_TRUE(contains(r.err, "collinear")) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+TEST(TinCli, MalformedLineIsExitTwoNamingTheLineAndKeepsTheOldOutput)
+{
+    ScratchDir dir;
+    test::write_file(dir / "p.xyz", "0 0 1\n10 0 2\n0 10 abc\n10 10 4\n");
+    const auto out = dir / "t.ply";
+    test::write_file(out, "previous good file");
+    const RunResult r = run_dtm({"tin", (dir / "p.xyz").string(), "-o", out.string()});
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_TRUE(contains(r.err, "p.xyz:3")) << r.err;
+    EXPECT_EQ(test::read_file(out), "previous good file");
+}
+
+}  // namespace
+}  // namespace dtm
