@@ -15,6 +15,7 @@
 // an exact big-integer evaluation instead (predicates_bigint.cpp).
 // This file is compiled with -ffp-contract=off: the error-free transformations need every
 // product rounded separately.
+#include <atomic>
 #include <cmath>
 
 #include "dtm/geom/predicates.hpp"
@@ -266,30 +267,51 @@ DTM_PREDICATES_INLINE int incircle_stages(double ax, double ay, double bx, doubl
 // Without -mfma the library targets every x86-64, where std::fma is a slow software routine.
 // Most CPUs (since 2013) have the instruction, so the stages are compiled a second time for it
 // and chosen at run time. Both versions are exact; only their speed differs.
-#if (defined(__x86_64__) || defined(__i386__)) && (defined(__GNUC__) || defined(__clang__)) && \
-    !defined(__FMA__)
-#define DTM_PREDICATES_FMA_DISPATCH 1
-[[gnu::target("fma")]] int orient_stages_fma(double ax, double ay, double bx, double by,
-                                             double cx, double cy, double detsum) noexcept
+#if defined(__FMA__) || defined(__FP_FAST_FMA)
+#define DTM_PREDICATES_HAVE_FMA_STAGES 1
+#define DTM_PREDICATES_FMA_TARGET
+bool fma_available() noexcept { return true; }
+#elif (defined(__x86_64__) || defined(__i386__)) && (defined(__GNUC__) || defined(__clang__))
+#define DTM_PREDICATES_HAVE_FMA_STAGES 1
+#define DTM_PREDICATES_FMA_TARGET [[gnu::target("fma")]]
+bool fma_available() noexcept
+{
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("fma") != 0;
+}
+#else
+bool fma_available() noexcept { return false; }
+#endif
+
+#if defined(DTM_PREDICATES_HAVE_FMA_STAGES)
+DTM_PREDICATES_FMA_TARGET int orient_stages_fma(double ax, double ay, double bx, double by,
+                                                double cx, double cy, double detsum) noexcept
 {
     return orient_stages<true>(ax, ay, bx, by, cx, cy, detsum);
 }
 
-[[gnu::target("fma")]] int incircle_stages_fma(double ax, double ay, double bx, double by,
-                                               double cx, double cy, double dx, double dy,
-                                               double permanent) noexcept
+DTM_PREDICATES_FMA_TARGET int incircle_stages_fma(double ax, double ay, double bx, double by,
+                                                  double cx, double cy, double dx, double dy,
+                                                  double permanent) noexcept
 {
     return incircle_stages<true>(ax, ay, bx, by, cx, cy, dx, dy, permanent);
 }
-
-/// Zero (the portable path) until initialised, so early static-initialisation callers stay exact.
-const bool cpu_has_fma = [] {
-    __builtin_cpu_init();
-    return __builtin_cpu_supports("fma") != 0;
-}();
 #endif
 
+/// False (the portable stages) until initialised, so early static-initialisation callers
+/// stay exact. Relaxed atomic: a plain load on x86, and tests may switch it.
+std::atomic<bool> use_fma_stages{fma_available()};
+
 }  // namespace
+
+bool use_fma_in_adaptive_stages(bool fma) noexcept
+{
+    if (fma && !fma_available()) {
+        return false;
+    }
+    use_fma_stages.store(fma, std::memory_order_relaxed);
+    return true;
+}
 
 int orient2d_adaptive(double ax, double ay, double bx, double by, double cx, double cy,
                       double detsum) noexcept
@@ -298,12 +320,12 @@ int orient2d_adaptive(double ax, double ay, double bx, double by, double cx, dou
     if (!in_expansion_range(v, 6, orient_min_abs, orient_max_abs)) {
         return orient2d_bigint(ax, ay, bx, by, cx, cy);
     }
-#if defined(DTM_PREDICATES_FMA_DISPATCH)
-    if (cpu_has_fma) {
+#if defined(DTM_PREDICATES_HAVE_FMA_STAGES)
+    if (use_fma_stages.load(std::memory_order_relaxed)) {
         return orient_stages_fma(ax, ay, bx, by, cx, cy, detsum);
     }
 #endif
-    return orient_stages<compile_time_fma>(ax, ay, bx, by, cx, cy, detsum);
+    return orient_stages<false>(ax, ay, bx, by, cx, cy, detsum);
 }
 
 int incircle_adaptive(double ax, double ay, double bx, double by, double cx, double cy,
@@ -313,12 +335,12 @@ int incircle_adaptive(double ax, double ay, double bx, double by, double cx, dou
     if (!in_expansion_range(v, 8, incircle_min_abs, incircle_max_abs)) {
         return incircle_bigint(ax, ay, bx, by, cx, cy, dx, dy);
     }
-#if defined(DTM_PREDICATES_FMA_DISPATCH)
-    if (cpu_has_fma) {
+#if defined(DTM_PREDICATES_HAVE_FMA_STAGES)
+    if (use_fma_stages.load(std::memory_order_relaxed)) {
         return incircle_stages_fma(ax, ay, bx, by, cx, cy, dx, dy, permanent);
     }
 #endif
-    return incircle_stages<compile_time_fma>(ax, ay, bx, by, cx, cy, dx, dy, permanent);
+    return incircle_stages<false>(ax, ay, bx, by, cx, cy, dx, dy, permanent);
 }
 
 }  // namespace dtm::geom::detail

@@ -355,3 +355,67 @@ TEST(Incircle, StageDExpansionsAgreeWithBigIntegersWhenDifferencesAreInexact)
 }
 
 }  // namespace
+
+namespace {
+
+/// Near-degenerate and mixed-magnitude cases that reach stages B-D, against big integers.
+void check_adaptive_stages_against_bigint()
+{
+    std::mt19937_64 rng(21);
+    std::uniform_int_distribution<int> eighths(-8, 8);
+    std::uniform_int_distribution<int> mag(-60, 120);
+    std::uniform_int_distribution<int> ulps(-2, 2);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int k = 0; k < 30000; ++k) {
+        const int common = mag(rng);
+        double v[8];
+        for (double& x : v) {
+            x = std::ldexp(eighths(rng) / 8.0, k % 3 == 0 ? common : mag(rng));
+        }
+        for (int s = ulps(rng); s != 0; s += s > 0 ? -1 : 1) {
+            v[6] = s > 0 ? up(v[6]) : down(v[6]);
+        }
+        ASSERT_EQ(orient2d(v[0], v[1], v[2], v[3], v[6], v[7]),
+                  orient2d_bigint(v[0], v[1], v[2], v[3], v[6], v[7]));
+        ASSERT_EQ(incircle(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]),
+                  incircle_bigint(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]));
+    }
+    for (int k = 0; k < 20000; ++k) {
+        // Nearly cocircular at S-JTSK size: exact differences, inexact products.
+        const double r = 1.0 + 50.0 * unit(rng);
+        double v[8];
+        for (int m = 0; m < 4; ++m) {
+            const double t = 6.283185307179586 * unit(rng);
+            v[2 * m] = x0 + r * std::cos(t);
+            v[2 * m + 1] = y0 + r * std::sin(t);
+        }
+        ASSERT_EQ(incircle(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]),
+                  incircle_bigint(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]));
+    }
+    // Binary-fraction lattice: exactly cocircular cells (incircle's short route).
+    for (int i = 0; i < 20; ++i) {
+        const double ax = x0 + i * 0.375;
+        const double ay = y0 + i * 0.5;
+        ASSERT_EQ(incircle(ax, ay, ax + 1.5, ay, ax + 1.5, ay + 2.25, ax, ay + 2.25), 0);
+        ASSERT_EQ(incircle(ax, ay, ax + 1.5, ay, ax + 1.5, ay + 2.25, ax + 0.75, ay + 1.0), 1);
+        ASSERT_EQ(incircle(ax, ay, ax + 1.5, ay, ax + 1.5, ay + 2.25, ax - 0.25, ay), -1);
+        ASSERT_EQ(orient2d(ax, ay, ax + 1.5, ay + 2.25, ax + 3.0, ay + 4.5), 0);
+    }
+}
+
+TEST(AdaptiveStages, PortableTwoProductIsExact)
+{
+    ASSERT_TRUE(dtm::geom::detail::use_fma_in_adaptive_stages(false));
+    check_adaptive_stages_against_bigint();
+    dtm::geom::detail::use_fma_in_adaptive_stages(true);  // restore the default where possible
+}
+
+TEST(AdaptiveStages, FusedMultiplyAddTwoProductIsExact)
+{
+    if (!dtm::geom::detail::use_fma_in_adaptive_stages(true)) {
+        GTEST_SKIP() << "this CPU has no FMA instruction";
+    }
+    check_adaptive_stages_against_bigint();
+}
+
+}  // namespace

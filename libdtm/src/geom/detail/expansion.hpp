@@ -227,6 +227,11 @@ inline int expansion_sign(int n, const double* e) noexcept
     return 0;
 }
 
+/// Selects the two-product of the adaptive stages B-D: fused multiply-add (chosen by default
+/// when the CPU has it) or Dekker splitting (portable). For tests, so that both variants run on
+/// any machine. Returns false, changing nothing, if FMA is asked for but unavailable.
+bool use_fma_in_adaptive_stages(bool fma) noexcept;
+
 /// Exact incircle sign by full expansion arithmetic, tails included (stage D; in
 /// predicates_exact.cpp). Valid while the coordinates are in the expansion-safe range.
 [[nodiscard]] int incircle_exact(double ax, double ay, double bx, double by, double cx,
