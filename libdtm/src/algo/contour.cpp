@@ -17,11 +17,15 @@
 // are disjoint parallel segments, and every output point is computed from its edge alone.
 #include "dtm/algo/contour.hpp"
 
+#include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
 #include <tbb/parallel_pipeline.h>
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <array>
+#include <cstdint>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -66,24 +70,35 @@ struct LevelBuckets {
     std::vector<TriangleIndex> triangles;
 };
 
-std::pair<std::size_t, std::size_t> triangle_levels(const Tin& tin, const Triangle& t,
-                                                    const std::vector<double>& values)
-{
-    const double a = tin.vertices[t.v[0]].z, b = tin.vertices[t.v[1]].z,
-                 c = tin.vertices[t.v[2]].z;
-    const auto lo = std::upper_bound(values.begin(), values.end(), std::min({a, b, c}));
-    const auto hi = std::upper_bound(values.begin(), values.end(), std::max({a, b, c}));
-    return {static_cast<std::size_t>(lo - values.begin()),
-            static_cast<std::size_t>(hi - values.begin())};
-}
-
 LevelBuckets bucket_levels(const Tin& tin, const std::vector<double>& values)
 {
+    // Per vertex, the number of levels at or below its height (levels strictly above it start
+    // there); a triangle is crossed by the levels [min, max) of its three vertex numbers, since
+    // upper_bound is monotone. Both passes run in parallel; then a counting sort per level.
+    std::vector<std::uint32_t> vertex_level(tin.vertices.size());
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tin.vertices.size(), 1 << 14),
+                      [&](const tbb::blocked_range<std::size_t>& r) {
+                          for (std::size_t v = r.begin(); v != r.end(); ++v) {
+                              vertex_level[v] = static_cast<std::uint32_t>(
+                                  std::upper_bound(values.begin(), values.end(),
+                                                   tin.vertices[v].z) -
+                                  values.begin());
+                          }
+                      });
+    std::vector<std::array<std::uint32_t, 2>> ranges(tin.triangles.size());
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tin.triangles.size(), 1 << 14),
+                      [&](const tbb::blocked_range<std::size_t>& r) {
+                          for (std::size_t i = r.begin(); i != r.end(); ++i) {
+                              const auto& v = tin.triangles[i].v;
+                              const std::uint32_t a = vertex_level[v[0]], b = vertex_level[v[1]],
+                                                  c = vertex_level[v[2]];
+                              ranges[i] = {std::min({a, b, c}), std::max({a, b, c})};
+                          }
+                      });
     LevelBuckets buckets;
     buckets.offsets.assign(values.size() + 1, 0);
-    for (const Triangle& t : tin.triangles) {
-        const auto [lo, hi] = triangle_levels(tin, t, values);
-        for (std::size_t k = lo; k < hi; ++k) {
+    for (const auto& [lo, hi] : ranges) {
+        for (std::uint32_t k = lo; k < hi; ++k) {
             ++buckets.offsets[k + 1];
         }
     }
@@ -92,9 +107,8 @@ LevelBuckets bucket_levels(const Tin& tin, const std::vector<double>& values)
     }
     buckets.triangles.resize(buckets.offsets.back());
     std::vector<std::size_t> fill(buckets.offsets.begin(), buckets.offsets.end() - 1);
-    for (std::size_t i = 0; i < tin.triangles.size(); ++i) {
-        const auto [lo, hi] = triangle_levels(tin, tin.triangles[i], values);
-        for (std::size_t k = lo; k < hi; ++k) {
+    for (std::size_t i = 0; i < ranges.size(); ++i) {
+        for (std::uint32_t k = ranges[i][0]; k < ranges[i][1]; ++k) {
             buckets.triangles[fill[k]++] = static_cast<TriangleIndex>(i);
         }
     }

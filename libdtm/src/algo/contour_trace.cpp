@@ -27,6 +27,8 @@
 // convention is the one raster contourers (GDAL's contour generator) use as well.
 #include "algo/detail/contour_trace.hpp"
 
+#include <algorithm>
+
 namespace dtm::detail {
 namespace {
 
@@ -47,9 +49,10 @@ public:
     /// The edge of @p t crossed from below to above (entry, @p up) or above to below (exit).
     [[nodiscard]] int crossing_edge(TriangleIndex t, bool up) const
     {
+        const auto& v = tin_.triangles[t].v;
+        const bool is_above[3] = {above(v[0]), above(v[1]), above(v[2])};
         for (int e = 0; e < 3; ++e) {
-            const auto [a, b] = edge(t, e);
-            if (above(a) != up && above(b) == up) {
+            if (is_above[(e + 1) % 3] != up && is_above[(e + 2) % 3] == up) {
                 return e;
             }
         }
@@ -110,24 +113,6 @@ private:
     double level_;
 };
 
-/// Walks backwards from @p start to the first triangle of its chain; sets @p closed for a ring.
-TriangleIndex chain_start(const LevelView& view, TriangleIndex start, bool& closed)
-{
-    TriangleIndex first = start;
-    closed = false;
-    for (;;) {
-        const TriangleIndex m = view.neighbour(first, view.crossing_edge(first, true));
-        if (m == no_triangle) {
-            return first;
-        }
-        if (m == start) {
-            closed = true;
-            return start;
-        }
-        first = m;
-    }
-}
-
 void push_point(const LevelView& view, RawChain& chain, TriangleIndex t, int e)
 {
     std::array<VertexIndex, 2> ab = view.edge(t, e);
@@ -135,24 +120,62 @@ void push_point(const LevelView& view, RawChain& chain, TriangleIndex t, int e)
     chain.edges.push_back(ab);
 }
 
+void push_step(const LevelView& view, RawChain& chain, TriangleIndex t)
+{
+    chain.triangles.push_back(t);
+    chain.skip.push_back(view.duplicate_step(t) ? 1 : 0);
+}
+
+/// Walks forwards (entry to exit) from @p start; returns true when it comes back to @p start.
+bool walk_forward(const LevelView& view, TriangleIndex start, RawChain& chain,
+                  std::vector<std::uint8_t>& visited)
+{
+    push_point(view, chain, start, view.crossing_edge(start, true));
+    for (TriangleIndex cur = start;;) {
+        visited[cur] = 1;
+        const int out = view.crossing_edge(cur, false);
+        push_step(view, chain, cur);
+        push_point(view, chain, cur, out);
+        cur = view.neighbour(cur, out);
+        if (cur == no_triangle) {
+            return false;
+        }
+        if (cur == start) {
+            return true;
+        }
+    }
+}
+
+/// One chain through @p start: forwards to the end (or around a ring), then, for an open chain,
+/// backwards from @p start to the border, prepended. Each triangle is visited once.
 RawChain trace_chain(const LevelView& view, TriangleIndex start, std::vector<std::uint8_t>& visited)
 {
     RawChain chain;
-    const TriangleIndex first = chain_start(view, start, chain.closed);
-    TriangleIndex cur = first;
-    push_point(view, chain, cur, view.crossing_edge(cur, true));
-    for (;;) {
-        visited[cur] = 1;
-        const int out = view.crossing_edge(cur, false);
-        chain.triangles.push_back(cur);
-        chain.skip.push_back(view.duplicate_step(cur) ? 1 : 0);
-        push_point(view, chain, cur, out);
-        const TriangleIndex next = view.neighbour(cur, out);
-        if (next == no_triangle || next == first) {
-            break;
-        }
-        cur = next;
+    chain.closed = walk_forward(view, start, chain, visited);
+    if (chain.closed) {
+        return chain;
     }
+    RawChain back;  // points and steps before start, in reverse order
+    for (TriangleIndex cur = view.neighbour(start, view.crossing_edge(start, true));
+         cur != no_triangle;) {
+        visited[cur] = 1;
+        const int in = view.crossing_edge(cur, true);
+        push_step(view, back, cur);
+        push_point(view, back, cur, in);
+        cur = view.neighbour(cur, in);
+    }
+    if (back.triangles.empty()) {
+        return chain;
+    }
+    const auto prepend = [](auto& to, auto& from) {
+        std::reverse(from.begin(), from.end());
+        from.insert(from.end(), to.begin(), to.end());
+        to = std::move(from);
+    };
+    prepend(chain.points, back.points);
+    prepend(chain.edges, back.edges);
+    prepend(chain.triangles, back.triangles);
+    prepend(chain.skip, back.skip);
     return chain;
 }
 
