@@ -266,6 +266,36 @@ TEST_F(BuildSample, ReportAreasMatchTheSurveyedPolygon) {
     EXPECT_GT(z.GetDouble("max"), 325.0);
 }
 
+TEST_F(BuildSample, DefaultCellAndIntervalFollowTheDocumentedRules) {
+    // docs/products.md: cell = half the mean point spacing sqrt(area / vertices), interval = z
+    // range / 20, both rounded down to 1, 2, 2.5 or 5 x 10^k. On the sample: spacing 3.37 m ->
+    // 1.69 -> 1 m; relief 21.4 m -> 1.07 -> 1 m.
+    const CPLJSONObject r = report();
+    const double spacing = std::sqrt(r.GetObj("area").GetDouble("planimetric") /
+                                     static_cast<double>(r.GetObj("tin").GetLong("vertices")));
+    EXPECT_GT(spacing / 2.0, 1.0);
+    EXPECT_LT(spacing / 2.0, 2.0);
+    EXPECT_DOUBLE_EQ(r.GetObj("dem").GetDouble("cell"), 1.0);
+    const CPLJSONObject z = r.GetObj("z_range");
+    const double relief = z.GetDouble("max") - z.GetDouble("min");
+    EXPECT_GT(relief / 20.0, 1.0);
+    EXPECT_LT(relief / 20.0, 2.0);
+    EXPECT_DOUBLE_EQ(r.GetObj("contours").GetDouble("interval"), 1.0);
+    EXPECT_EQ(r.GetObj("contours").GetLong("index_every"), 5);
+
+    const Dataset dem = open(*out_ / "dem.tif", GDAL_OF_RASTER);
+    ASSERT_TRUE(dem);
+    double gt[6];
+    ASSERT_EQ(dem->GetGeoTransform(gt), CE_None);
+    EXPECT_DOUBLE_EQ(gt[1], 1.0);
+    EXPECT_EQ(dem->GetRasterXSize(), r.GetObj("dem").GetInteger("cols"));
+    // The grid covers the TIN and its edges are on whole cells.
+    const CPLJSONObject extent = r.GetObj("extent");
+    EXPECT_LE(gt[0], extent.GetDouble("xmin"));
+    EXPECT_GE(gt[0] + gt[1] * dem->GetRasterXSize(), extent.GetDouble("xmax"));
+    EXPECT_DOUBLE_EQ(gt[0], std::floor(gt[0]));
+}
+
 TEST_F(BuildSample, ContoursAndHillshadeOpenInEpsg5514) {
     const Dataset hillshade = open(*out_ / "hillshade.tif", GDAL_OF_RASTER);
     ASSERT_TRUE(hillshade);
