@@ -6,7 +6,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <string>
+#include <utility>
 
 #include "dtm/io/formats/hpgl.hpp"
 #include "support/hpgl_plan_generator.hpp"
@@ -182,6 +184,26 @@ TEST(HpglPlanReader, WithoutGeoreferencingCoordinatesArePlotterMillimetres)
                             [](const Point3& p) { return p.x == 50.0 && p.y == 50.0 && p.z == 300.0; }));
     const auto& w = result.summary.warnings;
     EXPECT_TRUE(std::any_of(w.begin(), w.end(), [](const std::string& s) { return s.find("not georeferenced") != s.npos; }));
+}
+
+}  // namespace
+
+namespace {
+
+// tests/data/hpgl holds the generated plan for the CLI and for users to try
+// (`dtm info tests/data/hpgl/plan_500_pcl_pe.plt --hpgl-pens 2=breakline,3=boundary,4=hole
+// --hpgl-scale 500 --hpgl-origin=-745000,-1045000`). DTM_UPDATE_GOLDEN=1 rewrites them.
+TEST(HpglPlanFixtures, CommittedFilesAreTheGeneratorsOutput)
+{
+    const auto plan = dtm::test::make_hpgl_plan();
+    const std::pair<const char*, const std::string*> files[] = {{"hpgl/plan_500_plain.plt", &plan.plain_hpgl},
+                                                                {"hpgl/plan_500_pcl_pe.plt", &plan.pcl_hpgl2},
+                                                                {"hpgl/plan_500_control.csv", &plan.control_csv}};
+    const bool update = std::getenv("DTM_UPDATE_GOLDEN") != nullptr;
+    for (const auto& [name, bytes] : files) {
+        if (update) dtm::test::write_file(dtm::test::data_path(name), *bytes);
+        EXPECT_EQ(dtm::test::read_file(dtm::test::data_path(name)), *bytes) << name;
+    }
 }
 
 }  // namespace
