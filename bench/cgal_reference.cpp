@@ -32,17 +32,15 @@ namespace {
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = K::Point_2;
 using Dt = CGAL::Delaunay_triangulation_2<K>;
-using Cdt = CGAL::Constrained_Delaunay_triangulation_2<K, CGAL::Default,
-                                                       CGAL::Exact_predicates_tag>;
+using Cdt =
+    CGAL::Constrained_Delaunay_triangulation_2<K, CGAL::Default, CGAL::Exact_predicates_tag>;
 
-[[noreturn]] void fail(const std::string& what)
-{
+[[noreturn]] void fail(const std::string& what) {
     std::cerr << "cgal_reference: " << what << '\n';
     std::exit(1);
 }
 
-std::string slurp(const std::string& path)
-{
+std::string slurp(const std::string& path) {
     std::ifstream f(path, std::ios::binary);
     if (!f) {
         fail("cannot open " + path);
@@ -53,8 +51,7 @@ std::string slurp(const std::string& path)
 }
 
 /// Parses a double at text[pos...], skipping spaces and tabs first; advances pos.
-bool next_number(std::string_view text, std::size_t& pos, double& v)
-{
+bool next_number(std::string_view text, std::size_t& pos, double& v) {
     while (pos < text.size() && (text[pos] == ' ' || text[pos] == '\t')) {
         ++pos;
     }
@@ -67,8 +64,7 @@ bool next_number(std::string_view text, std::size_t& pos, double& v)
     return true;
 }
 
-std::vector<Point> read_xyz(const std::string& path)
-{
+std::vector<Point> read_xyz(const std::string& path) {
     const std::string text = slurp(path);
     std::vector<Point> points;
     std::size_t line_start = 0;
@@ -100,8 +96,7 @@ struct Breaklines {
     std::vector<std::pair<std::size_t, std::size_t>> segments;
 };
 
-void parse_linestring(std::string_view row, const std::string& where, Breaklines& b)
-{
+void parse_linestring(std::string_view row, const std::string& where, Breaklines& b) {
     const std::size_t open = row.find('(');
     const std::size_t close = row.rfind(')');
     if (open == std::string_view::npos || close == std::string_view::npos || close < open) {
@@ -129,8 +124,7 @@ void parse_linestring(std::string_view row, const std::string& where, Breaklines
     }
 }
 
-Breaklines read_wkt_csv(const std::string& path)
-{
+Breaklines read_wkt_csv(const std::string& path) {
     const std::string text = slurp(path);
     Breaklines b;
     std::size_t line_start = text.find('\n');  // skip the header row
@@ -149,21 +143,18 @@ Breaklines read_wkt_csv(const std::string& path)
     return b;
 }
 
-double seconds_since(std::chrono::steady_clock::time_point t)
-{
+double seconds_since(std::chrono::steady_clock::time_point t) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 
-void print(const std::string& kind, std::size_t vertices, std::size_t faces, double seconds)
-{
+void print(const std::string& kind, std::size_t vertices, std::size_t faces, double seconds) {
     std::cout << "{\"engine\":\"cgal\",\"kind\":\"" << kind << "\",\"vertices\":" << vertices
               << ",\"faces\":" << faces << ",\"seconds\":" << seconds << "}" << std::endl;
 }
 
 }  // namespace
 
-int main(int argc, char** argv)
-{
+int main(int argc, char** argv) {
     std::string kind = "unknown";
     std::vector<std::string> files;
     for (int i = 1; i < argc; ++i) {
@@ -191,8 +182,7 @@ int main(int argc, char** argv)
     const auto start = std::chrono::steady_clock::now();
     Cdt cdt;
     cdt.insert(points.begin(), points.end());
-    cdt.insert_constraints(b.points.begin(), b.points.end(), b.segments.begin(),
-                           b.segments.end());
+    cdt.insert_constraints(b.points.begin(), b.points.end(), b.segments.begin(), b.segments.end());
     const double s = seconds_since(start);
     print(kind, cdt.number_of_vertices(), cdt.number_of_faces(), s);
     return 0;

@@ -36,16 +36,14 @@ struct Args {
     std::filesystem::path out;
 };
 
-[[noreturn]] void usage(const std::string& why)
-{
+[[noreturn]] void usage(const std::string& why) {
     std::cerr << "make_inputs: " << why
               << "\nusage: make_inputs --kind uniform|gaussian|clustered|breaklines|grid [--n N] "
                  "[--seed S] --out DIR\n";
     std::exit(2);
 }
 
-Args parse(int argc, char** argv)
-{
+Args parse(int argc, char** argv) {
     Args a;
     for (int i = 1; i < argc; ++i) {
         const std::string_view key = argv[i];
@@ -79,14 +77,12 @@ Args parse(int argc, char** argv)
 }
 
 /// A smooth hilly surface in metres, so z is plausible terrain.
-double terrain(double x, double y)
-{
+double terrain(double x, double y) {
     return 300.0 + 20.0 * std::sin(x / 150.0) * std::cos(y / 210.0) + 0.01 * (x - x0) * 0.05;
 }
 
 /// Appends the shortest round-trip text of v.
-void put(std::string& s, double v)
-{
+void put(std::string& s, double v) {
     char buf[32];
     const auto r = std::to_chars(buf, buf + sizeof buf, v);
     s.append(buf, r.ptr);
@@ -97,14 +93,12 @@ struct Sampler {
     double side;  ///< square extent in metres
 
     double uniform() { return std::uniform_real_distribution<double>(0.0, side)(rng); }
-    double normal(double mean, double sigma)
-    {
+    double normal(double mean, double sigma) {
         return std::normal_distribution<double>(mean, sigma)(rng);
     }
 };
 
-void write_points(const Args& a, Sampler& s)
-{
+void write_points(const Args& a, Sampler& s) {
     std::vector<double> centres;
     if (a.kind == "clustered") {
         for (int i = 0; i < 100; ++i) {
@@ -154,11 +148,10 @@ void write_points(const Args& a, Sampler& s)
 }
 
 /// About n / 2 segments in sqrt(n / 2) / 2 lines, each spanning the whole extent.
-void write_breaklines(const Args& a, Sampler& s)
-{
+void write_breaklines(const Args& a, Sampler& s) {
     const auto segments = a.n / 2;
-    const auto lines = std::max<std::int64_t>(1, static_cast<std::int64_t>(
-                                                     std::sqrt(static_cast<double>(segments)) / 2));
+    const auto lines = std::max<std::int64_t>(
+        1, static_cast<std::int64_t>(std::sqrt(static_cast<double>(segments)) / 2));
     const std::int64_t per_line = std::max<std::int64_t>(1, segments / lines);
     const double spacing = s.side / static_cast<double>(lines);
     const double step = s.side / static_cast<double>(per_line);
@@ -194,8 +187,7 @@ void write_breaklines(const Args& a, Sampler& s)
 
 }  // namespace
 
-int main(int argc, char** argv)
-{
+int main(int argc, char** argv) {
     const Args a = parse(argc, argv);
     std::filesystem::create_directories(a.out);
     Sampler s{std::mt19937_64(a.seed), std::sqrt(static_cast<double>(a.n))};

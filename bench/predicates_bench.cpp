@@ -21,8 +21,7 @@ constexpr double x0 = -750000.0;
 constexpr double y0 = -1050000.0;
 constexpr std::size_t count = 4096;  // points per pattern; fits in L1/L2
 
-std::vector<Point2> random_points()
-{
+std::vector<Point2> random_points() {
     std::mt19937_64 rng(1);
     std::uniform_real_distribution<double> u(0.0, 1000.0);
     std::vector<Point2> p(count + 3);
@@ -33,8 +32,7 @@ std::vector<Point2> random_points()
 }
 
 /// Consecutive triples exactly collinear (binary-fraction grid at S-JTSK size).
-std::vector<Point2> collinear_points()
-{
+std::vector<Point2> collinear_points() {
     std::vector<Point2> p(count + 3);
     for (std::size_t i = 0; i < p.size(); ++i) {
         const double t = static_cast<double>(i % 64) * 0.125;
@@ -44,8 +42,7 @@ std::vector<Point2> collinear_points()
 }
 
 /// Consecutive quadruples exactly cocircular: (5,0), (3,4), (-4,3), (0,-5) around moving centres.
-std::vector<Point2> cocircular_points()
-{
+std::vector<Point2> cocircular_points() {
     const Point2 offsets[4] = {{5, 0}, {3, 4}, {-4, 3}, {0, -5}};
     std::vector<Point2> p(count + 3);
     for (std::size_t i = 0; i < p.size(); ++i) {
@@ -56,8 +53,7 @@ std::vector<Point2> cocircular_points()
 }
 
 /// Millimetre grid: nearly (not exactly) collinear triples, no exact zeros.
-std::vector<Point2> millimetre_points()
-{
+std::vector<Point2> millimetre_points() {
     std::vector<Point2> p(count + 3);
     for (std::size_t i = 0; i < p.size(); ++i) {
         const double k = static_cast<double>(i % 97);
@@ -66,15 +62,13 @@ std::vector<Point2> millimetre_points()
     return p;
 }
 
-int naive_orient(const Point2& a, const Point2& b, const Point2& c)
-{
+int naive_orient(const Point2& a, const Point2& b, const Point2& c) {
     const double det = (a.x - c.x) * (b.y - c.y) - (a.y - c.y) * (b.x - c.x);
     return (det > 0) - (det < 0);
 }
 
 template <class F>
-void run_triples(benchmark::State& state, const std::vector<Point2>& p, F f)
-{
+void run_triples(benchmark::State& state, const std::vector<Point2>& p, F f) {
     for (auto _ : state) {
         int acc = 0;
         for (std::size_t i = 0; i < count; ++i) {
@@ -86,8 +80,7 @@ void run_triples(benchmark::State& state, const std::vector<Point2>& p, F f)
 }
 
 template <class F>
-void run_quads(benchmark::State& state, const std::vector<Point2>& p, std::size_t stride, F f)
-{
+void run_quads(benchmark::State& state, const std::vector<Point2>& p, std::size_t stride, F f) {
     for (auto _ : state) {
         int acc = 0;
         for (std::size_t i = 0; i < count; i += stride) {
@@ -110,14 +103,8 @@ void BM_Orient2dRandom(benchmark::State& s) { run_triples(s, random_points(), or
 void BM_Orient2dCollinear(benchmark::State& s) { run_triples(s, collinear_points(), orient); }
 void BM_Orient2dMillimetre(benchmark::State& s) { run_triples(s, millimetre_points(), orient); }
 void BM_IncircleRandom(benchmark::State& s) { run_quads(s, random_points(), 1, in_circle); }
-void BM_IncircleCocircular(benchmark::State& s)
-{
-    run_quads(s, cocircular_points(), 4, in_circle);
-}
-void BM_IncircleMillimetre(benchmark::State& s)
-{
-    run_quads(s, millimetre_points(), 1, in_circle);
-}
+void BM_IncircleCocircular(benchmark::State& s) { run_quads(s, cocircular_points(), 4, in_circle); }
+void BM_IncircleMillimetre(benchmark::State& s) { run_quads(s, millimetre_points(), 1, in_circle); }
 
 BENCHMARK(BM_Orient2dNaiveRandom);
 BENCHMARK(BM_Orient2dRandom);

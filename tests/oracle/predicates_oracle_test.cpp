@@ -3,9 +3,8 @@
 // `side_of_oriented_circle`, which are exact through interval filters and an exact fallback).
 // Millions of cases: random, one-ulp-perturbed collinear / cocircular, tilted grids,
 // S-JTSK magnitudes with millimetre spacing, and extreme magnitudes.
-#include <gtest/gtest.h>
-
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdint>
@@ -23,23 +22,20 @@ using P = K::Point_2;
 constexpr double x0 = -750000.0;
 constexpr double y0 = -1050000.0;
 
-int cgal_orient(double ax, double ay, double bx, double by, double cx, double cy)
-{
+int cgal_orient(double ax, double ay, double bx, double by, double cx, double cy) {
     return static_cast<int>(CGAL::orientation(P(ax, ay), P(bx, by), P(cx, cy)));
 }
 
-int cgal_incircle(double ax, double ay, double bx, double by, double cx, double cy, double dx,
-                  double dy)
-{
+int cgal_incircle(
+    double ax, double ay, double bx, double by, double cx, double cy, double dx, double dy) {
     return static_cast<int>(
         CGAL::side_of_oriented_circle(P(ax, ay), P(bx, by), P(cx, cy), P(dx, dy)));
 }
 
 /// Moves v by k ulps (k may be negative).
-double nudge(double v, int k)
-{
-    const double to = k > 0 ? std::numeric_limits<double>::infinity()
-                            : -std::numeric_limits<double>::infinity();
+double nudge(double v, int k) {
+    const double to =
+        k > 0 ? std::numeric_limits<double>::infinity() : -std::numeric_limits<double>::infinity();
     for (int i = 0; i < std::abs(k); ++i) {
         v = std::nextafter(v, to);
     }
@@ -51,8 +47,7 @@ struct Counts {
     std::int64_t zeros = 0;
 };
 
-void check_orient(const double* v, Counts& n)
-{
+void check_orient(const double* v, Counts& n) {
     const int ours = dtm::geom::orient2d(v[0], v[1], v[2], v[3], v[4], v[5]);
     const int ref = cgal_orient(v[0], v[1], v[2], v[3], v[4], v[5]);
     ASSERT_EQ(ours, ref) << std::hexfloat << v[0] << ' ' << v[1] << ' ' << v[2] << ' ' << v[3]
@@ -61,8 +56,7 @@ void check_orient(const double* v, Counts& n)
     n.zeros += ours == 0;
 }
 
-void check_incircle(const double* v, Counts& n)
-{
+void check_incircle(const double* v, Counts& n) {
     const int ours = dtm::geom::incircle(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]);
     const int ref = cgal_incircle(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]);
     ASSERT_EQ(ours, ref) << std::hexfloat << v[0] << ' ' << v[1] << ' ' << v[2] << ' ' << v[3]
@@ -71,8 +65,7 @@ void check_incircle(const double* v, Counts& n)
     n.zeros += ours == 0;
 }
 
-TEST(PredicatesOracle, RandomPointsAgreeWithCgal)
-{
+TEST(PredicatesOracle, RandomPointsAgreeWithCgal) {
     std::mt19937_64 rng(1);
     std::uniform_real_distribution<double> u(-1000.0, 1000.0);
     Counts o;
@@ -90,8 +83,7 @@ TEST(PredicatesOracle, RandomPointsAgreeWithCgal)
     }
 }
 
-TEST(PredicatesOracle, NearlyCollinearPointsAgreeWithCgal)
-{
+TEST(PredicatesOracle, NearlyCollinearPointsAgreeWithCgal) {
     std::mt19937_64 rng(2);
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     std::uniform_int_distribution<int> ulps(-3, 3);
@@ -108,7 +100,11 @@ TEST(PredicatesOracle, NearlyCollinearPointsAgreeWithCgal)
         const double bx = ox + s * u(rng);
         const double by = oy + s * u(rng);
         const double t = 4.0 * u(rng);
-        const double v[6] = {ax, ay, bx, by, nudge(ax + t * (bx - ax), ulps(rng)),
+        const double v[6] = {ax,
+                             ay,
+                             bx,
+                             by,
+                             nudge(ax + t * (bx - ax), ulps(rng)),
                              nudge(ay + t * (by - ay), ulps(rng))};
         check_orient(v, o);
         if (testing::Test::HasFatalFailure()) {
@@ -118,8 +114,7 @@ TEST(PredicatesOracle, NearlyCollinearPointsAgreeWithCgal)
     EXPECT_GT(o.zeros, 0);
 }
 
-TEST(PredicatesOracle, NearlyCocircularPointsAgreeWithCgal)
-{
+TEST(PredicatesOracle, NearlyCocircularPointsAgreeWithCgal) {
     std::mt19937_64 rng(3);
     std::uniform_real_distribution<double> u(0.0, 1.0);
     std::uniform_int_distribution<int> ulps(-2, 2);
@@ -143,8 +138,7 @@ TEST(PredicatesOracle, NearlyCocircularPointsAgreeWithCgal)
     }
 }
 
-TEST(PredicatesOracle, TiltedAndMillimetreGridsAgreeWithCgal)
-{
+TEST(PredicatesOracle, TiltedAndMillimetreGridsAgreeWithCgal) {
     // Grid p(i, j) = O + i u + j v. Tilted by 3-4-5 at exact eighths, and at S-JTSK size with
     // millimetre steps (not exact in binary, so "degenerate" cases are only nearly so).
     struct Grid {
@@ -183,8 +177,7 @@ TEST(PredicatesOracle, TiltedAndMillimetreGridsAgreeWithCgal)
     EXPECT_GT(c.zeros, 0);
 }
 
-TEST(PredicatesOracle, ExtremeMagnitudesAgreeWithCgal)
-{
+TEST(PredicatesOracle, ExtremeMagnitudesAgreeWithCgal) {
     std::mt19937_64 rng(5);
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     std::uniform_int_distribution<int> mag(-1074, 1023);

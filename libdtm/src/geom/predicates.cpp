@@ -15,10 +15,11 @@
 // an exact big-integer evaluation instead (predicates_bigint.cpp).
 // This file is compiled with -ffp-contract=off: the error-free transformations need every
 // product rounded separately.
+#include "dtm/geom/predicates.hpp"
+
 #include <atomic>
 #include <cmath>
 
-#include "dtm/geom/predicates.hpp"
 #include "geom/detail/bigint.hpp"
 #include "geom/detail/expansion.hpp"
 
@@ -39,8 +40,7 @@ int sign_of(double v) noexcept { return (v > 0.0) - (v < 0.0); }
 /// and tail is a multiple of 2^(k-52), so a degree-n product is a multiple of 2^(n(k-52)),
 /// which must stay above the smallest normal double 2^-1022; max_abs bounds the largest
 /// degree-n term, which must stay well below 2^1024.
-bool in_expansion_range(const double* v, int n, double min_abs, double max_abs) noexcept
-{
+bool in_expansion_range(const double* v, int n, double min_abs, double max_abs) noexcept {
     for (int i = 0; i < n; ++i) {
         const double a = std::abs(v[i]);
         if (!(a <= max_abs) || (a != 0.0 && a < min_abs)) {
@@ -57,12 +57,45 @@ constexpr double orient_max_abs = 0x1p+500;
 constexpr double incircle_min_abs = 0x1p-200;
 constexpr double incircle_max_abs = 0x1p+250;
 
+/// Stage D of orient2d: b (the exact determinant of the rounded differences) plus every
+/// product involving a tail, exactly.
+template <bool Fma>
+DTM_PREDICATES_INLINE int orient_stage_d(const double* b,
+                                         double acx,
+                                         double acy,
+                                         double bcx,
+                                         double bcy,
+                                         double acxt,
+                                         double acyt,
+                                         double bcxt,
+                                         double bcyt) noexcept {
+    double u[4];
+    double c1[8];
+    double c2[12];
+    double d[16];
+    double s1 = 0.0;
+    double s0 = 0.0;
+    double t1 = 0.0;
+    double t0 = 0.0;
+    two_product<Fma>(acxt, bcy, s1, s0);
+    two_product<Fma>(acyt, bcx, t1, t0);
+    two_two_diff(s1, s0, t1, t0, u);
+    const int c1len = expansion_sum(4, b, 4, u, c1);
+    two_product<Fma>(acx, bcyt, s1, s0);
+    two_product<Fma>(acy, bcxt, t1, t0);
+    two_two_diff(s1, s0, t1, t0, u);
+    const int c2len = expansion_sum(c1len, c1, 4, u, c2);
+    two_product<Fma>(acxt, bcyt, s1, s0);
+    two_product<Fma>(acyt, bcxt, t1, t0);
+    two_two_diff(s1, s0, t1, t0, u);
+    const int dlen = expansion_sum(c2len, c2, 4, u, d);
+    return expansion_sign(dlen, d);
+}
 
 /// Stages B-D of orient2d (coordinates already checked to be in the expansion range).
 template <bool Fma>
-DTM_PREDICATES_INLINE int orient_stages(double ax, double ay, double bx, double by, double cx,
-                                        double cy, double detsum) noexcept
-{
+DTM_PREDICATES_INLINE int orient_stages(
+    double ax, double ay, double bx, double by, double cx, double cy, double detsum) noexcept {
     const double acx = ax - cx;
     const double bcx = bx - cx;
     const double acy = ay - cy;
@@ -98,34 +131,12 @@ DTM_PREDICATES_INLINE int orient_stages(double ax, double ay, double bx, double 
         return sign_of(det);
     }
 
-    // Stage D: add every remaining product exactly.
-    double u[4];
-    double c1[8];
-    double c2[12];
-    double d[16];
-    double s1 = 0.0;
-    double s0 = 0.0;
-    double t1 = 0.0;
-    double t0 = 0.0;
-    two_product<Fma>(acxt, bcy, s1, s0);
-    two_product<Fma>(acyt, bcx, t1, t0);
-    two_two_diff(s1, s0, t1, t0, u);
-    const int c1len = expansion_sum(4, b, 4, u, c1);
-    two_product<Fma>(acx, bcyt, s1, s0);
-    two_product<Fma>(acy, bcxt, t1, t0);
-    two_two_diff(s1, s0, t1, t0, u);
-    const int c2len = expansion_sum(c1len, c1, 4, u, c2);
-    two_product<Fma>(acxt, bcyt, s1, s0);
-    two_product<Fma>(acyt, bcxt, t1, t0);
-    two_two_diff(s1, s0, t1, t0, u);
-    const int dlen = expansion_sum(c2len, c2, 4, u, d);
-    return expansion_sign(dlen, d);
+    return orient_stage_d<Fma>(b, acx, acy, bcx, bcy, acxt, acyt, bcxt, bcyt);
 }
 
 /// out = (px^2 + py^2) * bc for a scalar pair (px, py) and the 4-component expansion bc.
 template <bool Fma>
-DTM_PREDICATES_INLINE int lift_times(const double* bc, double px, double py, double* out) noexcept
-{
+DTM_PREDICATES_INLINE int lift_times(const double* bc, double px, double py, double* out) noexcept {
     double x1[8];
     double x2[16];
     double y1[8];
@@ -139,8 +150,8 @@ DTM_PREDICATES_INLINE int lift_times(const double* bc, double px, double py, dou
 
 /// (p1 p0) * (q1 q0) - (r1 r0) * (s1 s0) for four scalars: the exact 2x2 minor.
 template <bool Fma>
-DTM_PREDICATES_INLINE void exact_minor(double p, double q, double r, double s, double* out4) noexcept
-{
+DTM_PREDICATES_INLINE void exact_minor(
+    double p, double q, double r, double s, double* out4) noexcept {
     double m1 = 0.0;
     double m0 = 0.0;
     double n1 = 0.0;
@@ -154,9 +165,8 @@ DTM_PREDICATES_INLINE void exact_minor(double p, double q, double r, double s, d
 /// lower levels happens to be exact in plain doubles, as on integer or binary-fraction grids
 /// (where exact cocircularity is common). Returns 2 when some step was inexact.
 template <bool Fma>
-DTM_PREDICATES_INLINE int incircle_short(double adx, double ady, double bdx, double bdy,
-                                         double cdx, double cdy) noexcept
-{
+DTM_PREDICATES_INLINE int incircle_short(
+    double adx, double ady, double bdx, double bdy, double cdx, double cdy) noexcept {
     bool exact = true;
     auto product = [&exact](double a, double b) noexcept {
         double p = 0.0;
@@ -193,12 +203,54 @@ DTM_PREDICATES_INLINE int incircle_short(double adx, double ady, double bdx, dou
     return expansion_sign(expansion_sum(ablen, tab, 2, tc, total), total);
 }
 
+/// Stage B of incircle: the exact determinant of the rounded differences into fin[96].
+template <bool Fma>
+DTM_PREDICATES_INLINE int incircle_stage_b(
+    double adx, double ady, double bdx, double bdy, double cdx, double cdy, double* fin) noexcept {
+    double bc[4];
+    double ca[4];
+    double ab[4];
+    exact_minor<Fma>(bdx, cdy, cdx, bdy, bc);
+    exact_minor<Fma>(cdx, ady, adx, cdy, ca);
+    exact_minor<Fma>(adx, bdy, bdx, ady, ab);
+    double adet[32];
+    double bdet[32];
+    double cdet[32];
+    double abdet[64];
+    const int alen = lift_times<Fma>(bc, adx, ady, adet);
+    const int blen = lift_times<Fma>(ca, bdx, bdy, bdet);
+    const int clen = lift_times<Fma>(ab, cdx, cdy, cdet);
+    const int ablen = expansion_sum(alen, adet, blen, bdet, abdet);
+    return expansion_sum(ablen, abdet, clen, cdet, fin);
+}
+
+/// A coordinate difference (x, y) and its rounding errors (xt, yt).
+struct Rounded {
+    double x;
+    double y;
+    double xt;
+    double yt;
+};
+
+/// Stage C term of p: the part of lift(p) * cross(q, r) linear in the tails (Shewchuk 4.4).
+DTM_PREDICATES_INLINE double first_order(const Rounded& p,
+                                         const Rounded& q,
+                                         const Rounded& r) noexcept {
+    return (p.x * p.x + p.y * p.y) * ((q.x * r.yt + r.y * q.xt) - (q.y * r.xt + r.x * q.yt)) +
+           2.0 * (p.x * p.xt + p.y * p.yt) * (q.x * r.y - q.y * r.x);
+}
+
 /// Stages B-D of incircle (coordinates already checked to be in the expansion range).
 template <bool Fma>
-DTM_PREDICATES_INLINE int incircle_stages(double ax, double ay, double bx, double by, double cx,
-                                          double cy, double dx, double dy,
-                                          double permanent) noexcept
-{
+DTM_PREDICATES_INLINE int incircle_stages(double ax,
+                                          double ay,
+                                          double bx,
+                                          double by,
+                                          double cx,
+                                          double cy,
+                                          double dx,
+                                          double dy,
+                                          double permanent) noexcept {
     const double adx = ax - dx;
     const double bdx = bx - dx;
     const double cdx = cx - dx;
@@ -211,8 +263,8 @@ DTM_PREDICATES_INLINE int incircle_stages(double ax, double ay, double bx, doubl
     const double bdyt = two_diff_tail(by, dy, bdy);
     const double cdxt = two_diff_tail(cx, dx, cdx);
     const double cdyt = two_diff_tail(cy, dy, cdy);
-    const bool exact_differences = adxt == 0.0 && bdxt == 0.0 && cdxt == 0.0 && adyt == 0.0 &&
-                                   bdyt == 0.0 && cdyt == 0.0;
+    const bool exact_differences =
+        adxt == 0.0 && bdxt == 0.0 && cdxt == 0.0 && adyt == 0.0 && bdyt == 0.0 && cdyt == 0.0;
     if (exact_differences) {
         const int s = incircle_short<Fma>(adx, ady, bdx, bdy, cdx, cdy);
         if (s != 2) {
@@ -221,22 +273,8 @@ DTM_PREDICATES_INLINE int incircle_stages(double ax, double ay, double bx, doubl
     }
 
     // Stage B: the determinant of the rounded differences, exactly.
-    double bc[4];
-    double ca[4];
-    double ab[4];
-    exact_minor<Fma>(bdx, cdy, cdx, bdy, bc);
-    exact_minor<Fma>(cdx, ady, adx, cdy, ca);
-    exact_minor<Fma>(adx, bdy, bdx, ady, ab);
-    double adet[32];
-    double bdet[32];
-    double cdet[32];
-    double abdet[64];
     double fin[96];
-    const int alen = lift_times<Fma>(bc, adx, ady, adet);
-    const int blen = lift_times<Fma>(ca, bdx, bdy, bdet);
-    const int clen = lift_times<Fma>(ab, cdx, cdy, cdet);
-    const int ablen = expansion_sum(alen, adet, blen, bdet, abdet);
-    const int finlen = expansion_sum(ablen, abdet, clen, cdet, fin);
+    const int finlen = incircle_stage_b<Fma>(adx, ady, bdx, bdy, cdx, cdy, fin);
     double det = estimate(finlen, fin);
     double bound = incircle_bound_b * permanent;
     if (det >= bound || -det >= bound) {
@@ -249,15 +287,10 @@ DTM_PREDICATES_INLINE int incircle_stages(double ax, double ay, double bx, doubl
 
     // Stage C: first-order correction with the tails.
     bound = incircle_bound_c * permanent + result_bound * std::abs(det);
-    det += ((adx * adx + ady * ady) *
-                ((bdx * cdyt + cdy * bdxt) - (bdy * cdxt + cdx * bdyt)) +
-            2.0 * (adx * adxt + ady * adyt) * (bdx * cdy - bdy * cdx)) +
-           ((bdx * bdx + bdy * bdy) *
-                ((cdx * adyt + ady * cdxt) - (cdy * adxt + adx * cdyt)) +
-            2.0 * (bdx * bdxt + bdy * bdyt) * (cdx * ady - cdy * adx)) +
-           ((cdx * cdx + cdy * cdy) *
-                ((adx * bdyt + bdy * adxt) - (ady * bdxt + bdx * adyt)) +
-            2.0 * (cdx * cdxt + cdy * cdyt) * (adx * bdy - ady * bdx));
+    const Rounded a{adx, ady, adxt, adyt};
+    const Rounded b{bdx, bdy, bdxt, bdyt};
+    const Rounded c{cdx, cdy, cdxt, cdyt};
+    det += (first_order(a, b, c) + first_order(b, c, a)) + first_order(c, a, b);
     if (det >= bound || -det >= bound) {
         return sign_of(det);
     }
@@ -274,8 +307,7 @@ bool fma_available() noexcept { return true; }
 #elif (defined(__x86_64__) || defined(__i386__)) && (defined(__GNUC__) || defined(__clang__))
 #define DTM_PREDICATES_HAVE_FMA_STAGES 1
 #define DTM_PREDICATES_FMA_TARGET [[gnu::target("fma")]]
-bool fma_available() noexcept
-{
+bool fma_available() noexcept {
     __builtin_cpu_init();
     return __builtin_cpu_supports("fma") != 0;
 }
@@ -284,16 +316,20 @@ bool fma_available() noexcept { return false; }
 #endif
 
 #if defined(DTM_PREDICATES_HAVE_FMA_STAGES)
-DTM_PREDICATES_FMA_TARGET int orient_stages_fma(double ax, double ay, double bx, double by,
-                                                double cx, double cy, double detsum) noexcept
-{
+DTM_PREDICATES_FMA_TARGET int orient_stages_fma(
+    double ax, double ay, double bx, double by, double cx, double cy, double detsum) noexcept {
     return orient_stages<true>(ax, ay, bx, by, cx, cy, detsum);
 }
 
-DTM_PREDICATES_FMA_TARGET int incircle_stages_fma(double ax, double ay, double bx, double by,
-                                                  double cx, double cy, double dx, double dy,
-                                                  double permanent) noexcept
-{
+DTM_PREDICATES_FMA_TARGET int incircle_stages_fma(double ax,
+                                                  double ay,
+                                                  double bx,
+                                                  double by,
+                                                  double cx,
+                                                  double cy,
+                                                  double dx,
+                                                  double dy,
+                                                  double permanent) noexcept {
     return incircle_stages<true>(ax, ay, bx, by, cx, cy, dx, dy, permanent);
 }
 #endif
@@ -304,8 +340,7 @@ std::atomic<bool> use_fma_stages{fma_available()};
 
 }  // namespace
 
-bool use_fma_in_adaptive_stages(bool fma) noexcept
-{
+bool use_fma_in_adaptive_stages(bool fma) noexcept {
     if (fma && !fma_available()) {
         return false;
     }
@@ -313,9 +348,8 @@ bool use_fma_in_adaptive_stages(bool fma) noexcept
     return true;
 }
 
-int orient2d_adaptive(double ax, double ay, double bx, double by, double cx, double cy,
-                      double detsum) noexcept
-{
+int orient2d_adaptive(
+    double ax, double ay, double bx, double by, double cx, double cy, double detsum) noexcept {
     const double v[6] = {ax, ay, bx, by, cx, cy};
     if (!in_expansion_range(v, 6, orient_min_abs, orient_max_abs)) {
         return orient2d_bigint(ax, ay, bx, by, cx, cy);
@@ -328,9 +362,15 @@ int orient2d_adaptive(double ax, double ay, double bx, double by, double cx, dou
     return orient_stages<false>(ax, ay, bx, by, cx, cy, detsum);
 }
 
-int incircle_adaptive(double ax, double ay, double bx, double by, double cx, double cy,
-                      double dx, double dy, double permanent) noexcept
-{
+int incircle_adaptive(double ax,
+                      double ay,
+                      double bx,
+                      double by,
+                      double cx,
+                      double cy,
+                      double dx,
+                      double dy,
+                      double permanent) noexcept {
     const double v[8] = {ax, ay, bx, by, cx, cy, dx, dy};
     if (!in_expansion_range(v, 8, incircle_min_abs, incircle_max_abs)) {
         return incircle_bigint(ax, ay, bx, by, cx, cy, dx, dy);

@@ -17,8 +17,7 @@ namespace dtm::geom::detail {
 
 namespace {
 
-void trim(BigInt& a) noexcept
-{
+void trim(BigInt& a) noexcept {
     while (a.size > 0 && a.limb[static_cast<std::size_t>(a.size - 1)] == 0) {
         --a.size;
     }
@@ -27,8 +26,7 @@ void trim(BigInt& a) noexcept
     }
 }
 
-int compare_magnitude(const BigInt& a, const BigInt& b) noexcept
-{
+int compare_magnitude(const BigInt& a, const BigInt& b) noexcept {
     if (a.size != b.size) {
         return a.size < b.size ? -1 : 1;
     }
@@ -42,8 +40,7 @@ int compare_magnitude(const BigInt& a, const BigInt& b) noexcept
 }
 
 /// r = |a| + |b| with the given sign.
-void add_magnitude(const BigInt& a, const BigInt& b, int sign, BigInt& r) noexcept
-{
+void add_magnitude(const BigInt& a, const BigInt& b, int sign, BigInt& r) noexcept {
     const int n = a.size > b.size ? a.size : b.size;
     assert(n < BigInt::capacity);
     std::uint64_t carry = 0;
@@ -62,8 +59,7 @@ void add_magnitude(const BigInt& a, const BigInt& b, int sign, BigInt& r) noexce
 }
 
 /// r = |a| - |b| (requires |a| >= |b|) with the given sign.
-void sub_magnitude(const BigInt& a, const BigInt& b, int sign, BigInt& r) noexcept
-{
+void sub_magnitude(const BigInt& a, const BigInt& b, int sign, BigInt& r) noexcept {
     std::int64_t borrow = 0;
     for (int i = 0; i < a.size; ++i) {
         const auto k = static_cast<std::size_t>(i);
@@ -79,8 +75,7 @@ void sub_magnitude(const BigInt& a, const BigInt& b, int sign, BigInt& r) noexce
 }
 
 /// r = a + s*b, s = +1 or -1. r may alias a or b (limbs are read before they are written).
-void add_signed(const BigInt& a, const BigInt& b, int s, BigInt& r) noexcept
-{
+void add_signed(const BigInt& a, const BigInt& b, int s, BigInt& r) noexcept {
     const int bsign = b.sign * s;
     if (b.sign == 0) {
         r = a;
@@ -96,8 +91,7 @@ void add_signed(const BigInt& a, const BigInt& b, int s, BigInt& r) noexcept
     }
 }
 
-bool all_finite(const double* v, int n) noexcept
-{
+bool all_finite(const double* v, int n) noexcept {
     for (int i = 0; i < n; ++i) {
         if (!std::isfinite(v[i])) {
             return false;
@@ -108,8 +102,7 @@ bool all_finite(const double* v, int n) noexcept
 
 }  // namespace
 
-int common_exponent(const double* values, int n) noexcept
-{
+int common_exponent(const double* values, int n) noexcept {
     int lowest = 0;
     bool any = false;
     for (int i = 0; i < n; ++i) {
@@ -125,8 +118,7 @@ int common_exponent(const double* values, int n) noexcept
     return lowest;
 }
 
-BigInt bigint_from_double(double v, int base_exponent) noexcept
-{
+BigInt bigint_from_double(double v, int base_exponent) noexcept {
     BigInt r;
     if (v == 0.0 || !std::isfinite(v)) {
         return r;
@@ -153,8 +145,7 @@ void bigint_add(const BigInt& a, const BigInt& b, BigInt& r) noexcept { add_sign
 
 void bigint_sub(const BigInt& a, const BigInt& b, BigInt& r) noexcept { add_signed(a, b, -1, r); }
 
-void bigint_mul(const BigInt& a, const BigInt& b, BigInt& r) noexcept
-{
+void bigint_mul(const BigInt& a, const BigInt& b, BigInt& r) noexcept {
     assert(&r != &a && &r != &b);
     if (a.sign == 0 || b.sign == 0) {
         r.size = 0;
@@ -182,8 +173,7 @@ void bigint_mul(const BigInt& a, const BigInt& b, BigInt& r) noexcept
     trim(r);
 }
 
-int orient2d_bigint(double ax, double ay, double bx, double by, double cx, double cy) noexcept
-{
+int orient2d_bigint(double ax, double ay, double bx, double by, double cx, double cy) noexcept {
     const double v[6] = {ax, ay, bx, by, cx, cy};
     if (!all_finite(v, 6)) {
         return 0;  // outside the contract (finite input); never read garbage
@@ -210,9 +200,13 @@ int orient2d_bigint(double ax, double ay, double bx, double by, double cx, doubl
 namespace {
 
 /// lift(p) * (q.x r.y - q.y r.x) for differences p, q, r taken from d.
-void lifted_term(const BigInt& px, const BigInt& py, const BigInt& qx, const BigInt& qy,
-                 const BigInt& rx, const BigInt& ry, BigInt& out) noexcept
-{
+void lifted_term(const BigInt& px,
+                 const BigInt& py,
+                 const BigInt& qx,
+                 const BigInt& qy,
+                 const BigInt& rx,
+                 const BigInt& ry,
+                 BigInt& out) noexcept {
     BigInt t1;
     BigInt t2;
     BigInt lift;
@@ -227,9 +221,14 @@ void lifted_term(const BigInt& px, const BigInt& py, const BigInt& qx, const Big
 
 }  // namespace
 
-int incircle_bigint(double ax, double ay, double bx, double by, double cx, double cy,
-                    double dx, double dy) noexcept
-{
+int incircle_bigint(double ax,
+                    double ay,
+                    double bx,
+                    double by,
+                    double cx,
+                    double cy,
+                    double dx,
+                    double dy) noexcept {
     const double v[8] = {ax, ay, bx, by, cx, cy, dx, dy};
     if (!all_finite(v, 8)) {
         return 0;  // outside the contract (finite input); never read garbage

@@ -13,8 +13,7 @@ namespace {
 
 /// h = e * f for expansions e, f; Cap >= 2 * elen * flen. Returns the length of h.
 template <int Cap>
-int multiply(int elen, const double* e, int flen, const double* f, double* h) noexcept
-{
+int multiply(int elen, const double* e, int flen, const double* f, double* h) noexcept {
     double part[2 * 16];
     double acc[Cap];
     int hlen = scale_expansion<compile_time_fma>(elen, e, f[0], h);
@@ -32,17 +31,20 @@ struct Diff {
     double v[2];  ///< tail, then rounded difference
 };
 
-Diff exact_diff(double a, double b) noexcept
-{
+Diff exact_diff(double a, double b) noexcept {
     Diff d{};
     two_diff(a, b, d.v[1], d.v[0]);
     return d;
 }
 
 /// (px^2 + py^2) * (qx ry - qy rx), exactly. Returns the length of out (<= 512).
-int lifted_term(const Diff& px, const Diff& py, const Diff& qx, const Diff& qy, const Diff& rx,
-                const Diff& ry, double* out) noexcept
-{
+int lifted_term(const Diff& px,
+                const Diff& py,
+                const Diff& qx,
+                const Diff& qy,
+                const Diff& rx,
+                const Diff& ry,
+                double* out) noexcept {
     double xx[8];
     double yy[8];
     double lift[16];
@@ -64,9 +66,14 @@ int lifted_term(const Diff& px, const Diff& py, const Diff& qx, const Diff& qy, 
 
 }  // namespace
 
-int incircle_exact(double ax, double ay, double bx, double by, double cx, double cy, double dx,
-                   double dy) noexcept
-{
+int incircle_exact(double ax,
+                   double ay,
+                   double bx,
+                   double by,
+                   double cx,
+                   double cy,
+                   double dx,
+                   double dy) noexcept {
     const Diff adx = exact_diff(ax, dx);
     const Diff ady = exact_diff(ay, dy);
     const Diff bdx = exact_diff(bx, dx);

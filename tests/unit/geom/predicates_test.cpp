@@ -2,6 +2,8 @@
 // Exact predicates: known signs reasoned by hand, symmetries, S-JTSK magnitudes, tilted grids,
 // extreme magnitudes, and agreement of the adaptive path with an independent big-integer
 // evaluation (geom/detail/bigint.hpp). The CGAL comparison lives in tests/oracle.
+#include "dtm/geom/predicates.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,7 +12,6 @@
 #include <vector>
 
 #include "dtm/core/point.hpp"
-#include "dtm/geom/predicates.hpp"
 #include "geom/detail/bigint.hpp"
 #include "geom/detail/expansion.hpp"
 
@@ -23,7 +24,7 @@ using dtm::geom::detail::incircle_bigint;
 using dtm::geom::detail::orient2d_bigint;
 
 constexpr double inf = std::numeric_limits<double>::infinity();
-constexpr double x0 = -750000.0;   // S-JTSK-like origin
+constexpr double x0 = -750000.0;  // S-JTSK-like origin
 constexpr double y0 = -1050000.0;
 
 double up(double v) { return std::nextafter(v, inf); }
@@ -39,16 +40,14 @@ double quantize(double v) { return std::round(v / grid) * grid; }
 int orient_p(Point2 a, Point2 b, Point2 c) { return orient2d(a, b, c); }
 int incircle_p(Point2 a, Point2 b, Point2 c, Point2 d) { return incircle(a, b, c, d); }
 
-TEST(Orient2d, SignsOfSimpleTurns)
-{
+TEST(Orient2d, SignsOfSimpleTurns) {
     EXPECT_EQ(orient2d(0.0, 0.0, 1.0, 0.0, 0.0, 1.0), 1);
     EXPECT_EQ(orient2d(0.0, 0.0, 0.0, 1.0, 1.0, 0.0), -1);
     EXPECT_EQ(orient2d(0.0, 0.0, 1.0, 1.0, 2.0, 2.0), 0);
     EXPECT_EQ(orient_p({0, 0}, {1, 0}, {0, 1}), 1);
 }
 
-TEST(Orient2d, ExactlyRepresentableCollinearPointsGiveZero)
-{
+TEST(Orient2d, ExactlyRepresentableCollinearPointsGiveZero) {
     // a, a + d, a + 2d with binary-fraction coordinates: every value is exact.
     for (const double dx : {0.125, 0.375, 3.0, -17.25}) {
         for (const double dy : {0.5, -0.0625, 1024.0}) {
@@ -59,8 +58,7 @@ TEST(Orient2d, ExactlyRepresentableCollinearPointsGiveZero)
     EXPECT_EQ(orient2d(1e15, 1e15, 2e15, 2e15, 3e15, 3e15), 0);
 }
 
-TEST(Orient2d, OneUlpOffTheLineGivesTheSideOfThePerturbation)
-{
+TEST(Orient2d, OneUlpOffTheLineGivesTheSideOfThePerturbation) {
     // Line direction (1, 1); moving c up puts it left of a->b (+1), down right of it (-1).
     EXPECT_EQ(orient2d(x0, y0, x0 + 1, y0 + 1, x0 + 2, up(y0 + 2)), 1);
     EXPECT_EQ(orient2d(x0, y0, x0 + 1, y0 + 1, x0 + 2, down(y0 + 2)), -1);
@@ -69,8 +67,7 @@ TEST(Orient2d, OneUlpOffTheLineGivesTheSideOfThePerturbation)
     EXPECT_EQ(orient2d(0.0, 0.0, 3.0, 7.0, 3e10, up(7e10)), 1);
 }
 
-TEST(Orient2d, ShewchukNearDiagonalGridMatchesTheUlpOffsets)
-{
+TEST(Orient2d, ShewchukNearDiagonalGridMatchesTheUlpOffsets) {
     // a = (0.5 + i ulp, 0.5 + j ulp), b = (12, 12), c = (24, 24): a is left of b->c exactly
     // when it lies above y = x, i.e. when j > i. Naive evaluation gets many of these wrong.
     const double ulp = std::nextafter(0.5, 1.0) - 0.5;
@@ -85,8 +82,7 @@ TEST(Orient2d, ShewchukNearDiagonalGridMatchesTheUlpOffsets)
     }
 }
 
-TEST(Orient2d, SwapFlipsRotationKeepsExactTranslationKeeps)
-{
+TEST(Orient2d, SwapFlipsRotationKeepsExactTranslationKeeps) {
     std::mt19937_64 rng(42);
     std::uniform_int_distribution<int> small(-4, 4);
     std::uniform_real_distribution<double> coord(-1000.0, 1000.0);
@@ -114,8 +110,7 @@ TEST(Orient2d, SwapFlipsRotationKeepsExactTranslationKeeps)
     }
 }
 
-TEST(Orient2d, SjtskMillimetreGridAgreesWithBigIntegerEvaluation)
-{
+TEST(Orient2d, SjtskMillimetreGridAgreesWithBigIntegerEvaluation) {
     // Millimetre steps are not binary fractions, so "collinear" grid points are only nearly
     // collinear: the big-integer evaluation is the independent reference.
     int zeros = 0;
@@ -136,8 +131,7 @@ TEST(Orient2d, SjtskMillimetreGridAgreesWithBigIntegerEvaluation)
     EXPECT_GT(nonzeros, 0);  // rounding makes many of them non-collinear
 }
 
-TEST(Orient2d, TiltedIntegerGridRowsAreCollinearAndCellsTurnLeft)
-{
+TEST(Orient2d, TiltedIntegerGridRowsAreCollinearAndCellsTurnLeft) {
     // p(i, j) = O + i u + j v with u = (3, 4) / 8, v = (-4, 3) / 8: all exact at S-JTSK size.
     auto p = [](int i, int j) {
         return Point2{x0 + (3.0 * i - 4.0 * j) / 8.0, y0 + (4.0 * i + 3.0 * j) / 8.0};
@@ -154,8 +148,7 @@ TEST(Orient2d, TiltedIntegerGridRowsAreCollinearAndCellsTurnLeft)
     }
 }
 
-TEST(Orient2d, ExtremeMagnitudesAreExact)
-{
+TEST(Orient2d, ExtremeMagnitudesAreExact) {
     const double big = std::ldexp(1.0, 900);
     EXPECT_EQ(orient2d(big, big, 2 * big, 2 * big, 3 * big, 3 * big), 0);
     EXPECT_EQ(orient2d(big, big, 2 * big, 2 * big, 3 * big, up(3 * big)), 1);
@@ -173,12 +166,10 @@ TEST(Orient2d, ExtremeMagnitudesAreExact)
     EXPECT_EQ(orient2d(-max, -max, max, max, tiny, 0.0), -1);
 }
 
-TEST(Orient2d, MixedMagnitudesAgreeWithBigIntegerEvaluation)
-{
+TEST(Orient2d, MixedMagnitudesAgreeWithBigIntegerEvaluation) {
     // Coordinates of very different sizes make the differences round, so near-degenerate
     // cases need the tails' products (stage D). First a case found that way.
-    EXPECT_EQ(orient2d(0x1p+17, 0x1.8p+18, 0x1p+17, -0x1p+16, 0x1.0000000000002p+235,
-                       -0x1.4p+327),
+    EXPECT_EQ(orient2d(0x1p+17, 0x1.8p+18, 0x1p+17, -0x1p+16, 0x1.0000000000002p+235, -0x1.4p+327),
               orient2d_bigint(0x1p+17, 0x1.8p+18, 0x1p+17, -0x1p+16, 0x1.0000000000002p+235,
                               -0x1.4p+327));
     std::mt19937_64 rng(11);
@@ -196,13 +187,12 @@ TEST(Orient2d, MixedMagnitudesAgreeWithBigIntegerEvaluation)
         }
         ASSERT_EQ(orient2d(v[0], v[1], v[2], v[3], v[4], v[5]),
                   orient2d_bigint(v[0], v[1], v[2], v[3], v[4], v[5]))
-            << std::hexfloat << v[0] << ' ' << v[1] << ' ' << v[2] << ' ' << v[3] << ' '
-            << v[4] << ' ' << v[5];
+            << std::hexfloat << v[0] << ' ' << v[1] << ' ' << v[2] << ' ' << v[3] << ' ' << v[4]
+            << ' ' << v[5];
     }
 }
 
-TEST(Incircle, MixedMagnitudesAgreeWithBigIntegerEvaluation)
-{
+TEST(Incircle, MixedMagnitudesAgreeWithBigIntegerEvaluation) {
     std::mt19937_64 rng(12);
     std::uniform_int_distribution<int> eighths(-8, 8);
     std::uniform_int_distribution<int> mag(-60, 120);
@@ -218,13 +208,12 @@ TEST(Incircle, MixedMagnitudesAgreeWithBigIntegerEvaluation)
         }
         ASSERT_EQ(incircle(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]),
                   incircle_bigint(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]))
-            << std::hexfloat << v[0] << ' ' << v[1] << ' ' << v[2] << ' ' << v[3] << ' '
-            << v[4] << ' ' << v[5] << ' ' << v[6] << ' ' << v[7];
+            << std::hexfloat << v[0] << ' ' << v[1] << ' ' << v[2] << ' ' << v[3] << ' ' << v[4]
+            << ' ' << v[5] << ' ' << v[6] << ' ' << v[7];
     }
 }
 
-TEST(Incircle, UnitCircleCases)
-{
+TEST(Incircle, UnitCircleCases) {
     EXPECT_EQ(incircle(1.0, 0.0, 0.0, 1.0, -1.0, 0.0, 0.0, 0.0), 1);
     EXPECT_EQ(incircle(1.0, 0.0, 0.0, 1.0, -1.0, 0.0, 2.0, 2.0), -1);
     EXPECT_EQ(incircle(1.0, 0.0, 0.0, 1.0, -1.0, 0.0, 0.0, -1.0), 0);
@@ -232,8 +221,7 @@ TEST(Incircle, UnitCircleCases)
     EXPECT_EQ(incircle(0.0, 1.0, 1.0, 0.0, -1.0, 0.0, 0.0, 0.0), -1);
 }
 
-TEST(Incircle, PythagoreanCocircularPointsAndOneUlpMoves)
-{
+TEST(Incircle, PythagoreanCocircularPointsAndOneUlpMoves) {
     // (5,0), (3,4), (-4,3), (0,-5) lie on the circle of radius 5, shifted to S-JTSK size.
     const double cx = x0;
     const double cy = y0;
@@ -245,8 +233,7 @@ TEST(Incircle, PythagoreanCocircularPointsAndOneUlpMoves)
     EXPECT_EQ(incircle(cx + 3, cy + 4, cx - 4, cy + 3, cx, cy - 5, cx + 5, cy), 0);
 }
 
-TEST(Incircle, SymmetriesOnNearlyCocircularPoints)
-{
+TEST(Incircle, SymmetriesOnNearlyCocircularPoints) {
     std::mt19937_64 rng(7);
     std::uniform_real_distribution<double> angle(0.0, 6.283185307179586);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
@@ -283,8 +270,7 @@ TEST(Incircle, SymmetriesOnNearlyCocircularPoints)
     }
 }
 
-TEST(Incircle, TiltedGridCellCornersAreCocircular)
-{
+TEST(Incircle, TiltedGridCellCornersAreCocircular) {
     auto p = [](int i, int j) {
         return Point2{x0 + (3.0 * i - 4.0 * j) / 8.0, y0 + (4.0 * i + 3.0 * j) / 8.0};
     };
@@ -301,8 +287,7 @@ TEST(Incircle, TiltedGridCellCornersAreCocircular)
     }
 }
 
-TEST(Incircle, SjtskMillimetreGridAgreesWithBigIntegerEvaluation)
-{
+TEST(Incircle, SjtskMillimetreGridAgreesWithBigIntegerEvaluation) {
     for (int i = 0; i < 30; ++i) {
         for (int j = 0; j < 30; ++j) {
             const double ax = x0 + 0.001 * i;
@@ -320,8 +305,7 @@ TEST(Incircle, SjtskMillimetreGridAgreesWithBigIntegerEvaluation)
     }
 }
 
-TEST(Incircle, ExtremeMagnitudesAreExact)
-{
+TEST(Incircle, ExtremeMagnitudesAreExact) {
     const double big = std::ldexp(1.0, 600);
     EXPECT_EQ(incircle(big, 0.0, 0.0, big, -big, 0.0, 0.0, -big), 0);
     EXPECT_EQ(incircle(big, 0.0, 0.0, big, -big, 0.0, 0.0, up(-big)), 1);
@@ -336,8 +320,7 @@ TEST(Incircle, ExtremeMagnitudesAreExact)
     EXPECT_EQ(incircle(max, 0.0, 0.0, max, -max, 0.0, 1.0, 1.0), 1);
 }
 
-TEST(Incircle, StageDExpansionsAgreeWithBigIntegersWhenDifferencesAreInexact)
-{
+TEST(Incircle, StageDExpansionsAgreeWithBigIntegersWhenDifferencesAreInexact) {
     // Points straddling the origin with very different magnitudes: coordinate differences
     // round, so stage D (full expansions with tails) must be right on its own.
     std::mt19937_64 rng(99);
@@ -348,8 +331,7 @@ TEST(Incircle, StageDExpansionsAgreeWithBigIntegersWhenDifferencesAreInexact)
         for (double& x : v) {
             x = std::ldexp(unit(rng), scale(rng));
         }
-        ASSERT_EQ(dtm::geom::detail::incircle_exact(v[0], v[1], v[2], v[3], v[4], v[5], v[6],
-                                                    v[7]),
+        ASSERT_EQ(dtm::geom::detail::incircle_exact(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]),
                   incircle_bigint(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]));
     }
 }
@@ -359,8 +341,7 @@ TEST(Incircle, StageDExpansionsAgreeWithBigIntegersWhenDifferencesAreInexact)
 namespace {
 
 /// Near-degenerate and mixed-magnitude cases that reach stages B-D, against big integers.
-void check_adaptive_stages_against_bigint()
-{
+void check_adaptive_stages_against_bigint() {
     std::mt19937_64 rng(21);
     std::uniform_int_distribution<int> eighths(-8, 8);
     std::uniform_int_distribution<int> mag(-60, 120);
@@ -403,15 +384,13 @@ void check_adaptive_stages_against_bigint()
     }
 }
 
-TEST(AdaptiveStages, PortableTwoProductIsExact)
-{
+TEST(AdaptiveStages, PortableTwoProductIsExact) {
     ASSERT_TRUE(dtm::geom::detail::use_fma_in_adaptive_stages(false));
     check_adaptive_stages_against_bigint();
     dtm::geom::detail::use_fma_in_adaptive_stages(true);  // restore the default where possible
 }
 
-TEST(AdaptiveStages, FusedMultiplyAddTwoProductIsExact)
-{
+TEST(AdaptiveStages, FusedMultiplyAddTwoProductIsExact) {
     if (!dtm::geom::detail::use_fma_in_adaptive_stages(true)) {
         GTEST_SKIP() << "this CPU has no FMA instruction";
     }

@@ -35,19 +35,25 @@ inline constexpr double orient_underflow_guard = 0x1p-1000;
 inline constexpr double incircle_underflow_guard = 0x1p-500;
 
 /// Stages B-D of orient2d; `detsum` is |detleft| + |detright| from stage A. Exact.
-[[nodiscard]] int orient2d_adaptive(double ax, double ay, double bx, double by, double cx,
-                                    double cy, double detsum) noexcept;
+[[nodiscard]] int orient2d_adaptive(
+    double ax, double ay, double bx, double by, double cx, double cy, double detsum) noexcept;
 /// Stages B-D of incircle; `permanent` is the stage A magnitude bound. Exact.
-[[nodiscard]] int incircle_adaptive(double ax, double ay, double bx, double by, double cx,
-                                    double cy, double dx, double dy, double permanent) noexcept;
+[[nodiscard]] int incircle_adaptive(double ax,
+                                    double ay,
+                                    double bx,
+                                    double by,
+                                    double cx,
+                                    double cy,
+                                    double dx,
+                                    double dy,
+                                    double permanent) noexcept;
 
 }  // namespace detail
 
 /// Sign of the orientation determinant of (a, b, c):
 /// +1 counter-clockwise (c left of a->b), -1 clockwise, 0 collinear. Exact.
-[[nodiscard]] inline int orient2d(double ax, double ay, double bx, double by, double cx,
-                                  double cy) noexcept
-{
+[[nodiscard]] inline int orient2d(
+    double ax, double ay, double bx, double by, double cx, double cy) noexcept {
 #if defined(__clang__)
 #pragma clang fp contract(off)
 #endif
@@ -65,9 +71,14 @@ inline constexpr double incircle_underflow_guard = 0x1p-500;
 
 /// +1 if d lies strictly inside the circle through a, b, c (given counter-clockwise),
 /// -1 if strictly outside, 0 if on it (sign flips for clockwise a, b, c). Exact.
-[[nodiscard]] inline int incircle(double ax, double ay, double bx, double by, double cx,
-                                  double cy, double dx, double dy) noexcept
-{
+[[nodiscard]] inline int incircle(double ax,
+                                  double ay,
+                                  double bx,
+                                  double by,
+                                  double cx,
+                                  double cy,
+                                  double dx,
+                                  double dy) noexcept {
 #if defined(__clang__)
 #pragma clang fp contract(off)
 #endif
@@ -88,8 +99,8 @@ inline constexpr double incircle_underflow_guard = 0x1p-500;
     const double bdxady = bdx * ady;
     const double clift = cdx * cdx + cdy * cdy;
 
-    const double det = alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) +
-                       clift * (adxbdy - bdxady);
+    const double det =
+        alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) + clift * (adxbdy - bdxady);
     constexpr double g = detail::incircle_underflow_guard;
     const double permanent = (std::abs(bdxcdy) + std::abs(cdxbdy) + g) * (alift + g) +
                              (std::abs(cdxady) + std::abs(adxcdy) + g) * (blift + g) +
@@ -102,14 +113,12 @@ inline constexpr double incircle_underflow_guard = 0x1p-500;
 }
 
 template <class P>
-[[nodiscard]] inline int orient2d(const P& a, const P& b, const P& c) noexcept
-{
+[[nodiscard]] inline int orient2d(const P& a, const P& b, const P& c) noexcept {
     return orient2d(a.x, a.y, b.x, b.y, c.x, c.y);
 }
 
 template <class P>
-[[nodiscard]] inline int incircle(const P& a, const P& b, const P& c, const P& d) noexcept
-{
+[[nodiscard]] inline int incircle(const P& a, const P& b, const P& c, const P& d) noexcept {
     return incircle(a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y);
 }
 

@@ -32,9 +32,15 @@ void bigint_sub(const BigInt& a, const BigInt& b, BigInt& r) noexcept;
 void bigint_mul(const BigInt& a, const BigInt& b, BigInt& r) noexcept;
 
 /// Exact orient2d / incircle signs by big-integer evaluation. Slow, valid for all finite input.
-[[nodiscard]] int orient2d_bigint(double ax, double ay, double bx, double by, double cx,
-                                  double cy) noexcept;
-[[nodiscard]] int incircle_bigint(double ax, double ay, double bx, double by, double cx,
-                                  double cy, double dx, double dy) noexcept;
+[[nodiscard]] int orient2d_bigint(
+    double ax, double ay, double bx, double by, double cx, double cy) noexcept;
+[[nodiscard]] int incircle_bigint(double ax,
+                                  double ay,
+                                  double bx,
+                                  double by,
+                                  double cx,
+                                  double cy,
+                                  double dx,
+                                  double dy) noexcept;
 
 }  // namespace dtm::geom::detail

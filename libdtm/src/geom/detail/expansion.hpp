@@ -28,16 +28,14 @@
 namespace dtm::geom::detail {
 
 /// x + y == a + b exactly, x = fl(a + b). Requires |a| >= |b| (or a == 0).
-DTM_PREDICATES_INLINE void fast_two_sum(double a, double b, double& x, double& y) noexcept
-{
+DTM_PREDICATES_INLINE void fast_two_sum(double a, double b, double& x, double& y) noexcept {
     x = a + b;
     const double b_virtual = x - a;
     y = b - b_virtual;
 }
 
 /// x + y == a + b exactly, x = fl(a + b). Knuth's branch-free six-operation form.
-DTM_PREDICATES_INLINE void two_sum(double a, double b, double& x, double& y) noexcept
-{
+DTM_PREDICATES_INLINE void two_sum(double a, double b, double& x, double& y) noexcept {
     x = a + b;
     const double b_virtual = x - a;
     const double a_virtual = x - b_virtual;
@@ -47,8 +45,7 @@ DTM_PREDICATES_INLINE void two_sum(double a, double b, double& x, double& y) noe
 }
 
 /// The rounding error of x = fl(a - b): a - b == x + result exactly.
-DTM_PREDICATES_INLINE double two_diff_tail(double a, double b, double x) noexcept
-{
+DTM_PREDICATES_INLINE double two_diff_tail(double a, double b, double x) noexcept {
     const double b_virtual = a - x;
     const double a_virtual = x + b_virtual;
     const double b_round = b_virtual - b;
@@ -57,8 +54,7 @@ DTM_PREDICATES_INLINE double two_diff_tail(double a, double b, double x) noexcep
 }
 
 /// x + y == a - b exactly, x = fl(a - b).
-DTM_PREDICATES_INLINE void two_diff(double a, double b, double& x, double& y) noexcept
-{
+DTM_PREDICATES_INLINE void two_diff(double a, double b, double& x, double& y) noexcept {
     x = a - b;
     y = two_diff_tail(a, b, x);
 }
@@ -71,8 +67,7 @@ inline constexpr bool compile_time_fma = false;
 #endif
 
 /// Dekker's split: a == hi + lo, each with at most 26 significant bits.
-DTM_PREDICATES_INLINE void split(double a, double& hi, double& lo) noexcept
-{
+DTM_PREDICATES_INLINE void split(double a, double& hi, double& lo) noexcept {
     constexpr double splitter = 134217729.0;  // 2^27 + 1
     const double c = splitter * a;
     const double a_big = c - a;
@@ -84,9 +79,8 @@ DTM_PREDICATES_INLINE void split(double a, double& hi, double& lo) noexcept
 /// non-FMA form. Fma = true uses one fused multiply-add: only instantiate it where the
 /// hardware instruction is available (otherwise std::fma is a slow library call).
 template <bool Fma>
-DTM_PREDICATES_INLINE void two_product_presplit(double a, double b, double bhi, double blo,
-                                                double& x, double& y) noexcept
-{
+DTM_PREDICATES_INLINE void two_product_presplit(
+    double a, double b, double bhi, double blo, double& x, double& y) noexcept {
     x = a * b;
     if constexpr (Fma) {
         y = std::fma(a, b, -x);
@@ -103,8 +97,7 @@ DTM_PREDICATES_INLINE void two_product_presplit(double a, double b, double bhi, 
 
 /// x + y == a * b exactly, x = fl(a * b).
 template <bool Fma>
-DTM_PREDICATES_INLINE void two_product(double a, double b, double& x, double& y) noexcept
-{
+DTM_PREDICATES_INLINE void two_product(double a, double b, double& x, double& y) noexcept {
     double bhi = 0.0;
     double blo = 0.0;
     if constexpr (!Fma) {
@@ -114,8 +107,8 @@ DTM_PREDICATES_INLINE void two_product(double a, double b, double& x, double& y)
 }
 
 /// (a1 + a0) - (b1 + b0) as the four-component expansion x[0..3] (zeros kept).
-DTM_PREDICATES_INLINE void two_two_diff(double a1, double a0, double b1, double b0, double* x) noexcept
-{
+DTM_PREDICATES_INLINE void two_two_diff(
+    double a1, double a0, double b1, double b0, double* x) noexcept {
     double i = 0.0;
     double j = 0.0;
     double k = 0.0;
@@ -132,8 +125,7 @@ DTM_PREDICATES_INLINE void two_two_diff(double a1, double a0, double b1, double 
 
 /// h = e * b. Returns the length of h (at most 2 * elen; zeros removed, at least 1).
 template <bool Fma>
-DTM_PREDICATES_INLINE int scale_expansion(int elen, const double* e, double b, double* h) noexcept
-{
+DTM_PREDICATES_INLINE int scale_expansion(int elen, const double* e, double b, double* h) noexcept {
     double bhi = 0.0;
     double blo = 0.0;
     if constexpr (!Fma) {
@@ -168,8 +160,7 @@ DTM_PREDICATES_INLINE int scale_expansion(int elen, const double* e, double b, d
 
 /// h = e + f for strongly non-overlapping e, f (fast expansion sum with zero elimination,
 /// Theorem 13). Returns the length (<= elen + flen, >= 1).
-inline int expansion_sum(int elen, const double* e, int flen, const double* f, double* h) noexcept
-{
+inline int expansion_sum(int elen, const double* e, int flen, const double* f, double* h) noexcept {
     // Merge the components by increasing magnitude, accumulating as we go: the running sum q
     // is always at least as large as anything merged so far.
     int i = 0;
@@ -203,8 +194,7 @@ inline int expansion_sum(int elen, const double* e, int flen, const double* f, d
 }
 
 /// Approximate value of an expansion (sum of its components, largest last).
-inline double estimate(int n, const double* e) noexcept
-{
+inline double estimate(int n, const double* e) noexcept {
     double q = e[0];
     for (int i = 1; i < n; ++i) {
         q += e[i];
@@ -214,8 +204,7 @@ inline double estimate(int n, const double* e) noexcept
 
 /// Exact sign of an expansion with no overlapping components: the sign of its largest
 /// non-zero component.
-inline int expansion_sign(int n, const double* e) noexcept
-{
+inline int expansion_sign(int n, const double* e) noexcept {
     for (int i = n - 1; i >= 0; --i) {
         if (e[i] > 0.0) {
             return 1;
@@ -234,7 +223,13 @@ bool use_fma_in_adaptive_stages(bool fma) noexcept;
 
 /// Exact incircle sign by full expansion arithmetic, tails included (stage D; in
 /// predicates_exact.cpp). Valid while the coordinates are in the expansion-safe range.
-[[nodiscard]] int incircle_exact(double ax, double ay, double bx, double by, double cx,
-                                 double cy, double dx, double dy) noexcept;
+[[nodiscard]] int incircle_exact(double ax,
+                                 double ay,
+                                 double bx,
+                                 double by,
+                                 double cx,
+                                 double cy,
+                                 double dx,
+                                 double dy) noexcept;
 
 }  // namespace dtm::geom::detail
