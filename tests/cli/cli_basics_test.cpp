@@ -91,3 +91,47 @@ TEST(CliBasics, ErrorsArePrefixedWithTheProgramName) {
     const RunResult r = run_dtm({"tin", "no_such_points.xyz", "-o", "tin.ply"}, dir.path());
     EXPECT_TRUE(r.err.starts_with("dtm")) << r.err;
 }
+
+namespace {
+
+/// A 10 x 10 grid of survey points with a sloping surface, as `x y z` text.
+std::string grid_points() {
+    std::string text;
+    for (int i = 0; i < 100; ++i) {
+        const int x = i % 10, y = i / 10;
+        text += std::to_string(-750000 + 3 * x) + ".25 " + std::to_string(-1050000 + 3 * y) +
+                ".5 " + std::to_string(300 + x + 2 * y) + "\n";
+    }
+    return text;
+}
+
+}  // namespace
+
+TEST(CliBasics, ProgressIsOneLinePerStageWhenStderrIsNotATerminal) {
+    const ScratchDir dir;
+    dtm::test::write_file(dir / "points.xyz", grid_points());
+    const RunResult r = run_dtm({"tin", "points.xyz", "-o", "tin.ply"}, dir.path());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(r.err.find('\r'), std::string::npos) << "no in-place redraw in a log: " << r.err;
+    EXPECT_EQ(r.err.find('\033'), std::string::npos) << "no escape codes in a log: " << r.err;
+    std::size_t lines = 0;
+    for (std::size_t begin = 0; begin < r.err.size();) {
+        const std::size_t end = r.err.find('\n', begin);
+        ASSERT_NE(end, std::string::npos) << "unterminated line: " << r.err.substr(begin);
+        const std::string line = r.err.substr(begin, end - begin);
+        EXPECT_TRUE(line.starts_with("dtm")) << line;
+        EXPECT_NE(line.find("%] "), std::string::npos) << line;
+        ++lines;
+        begin = end + 1;
+    }
+    EXPECT_GE(lines, 2u) << r.err;
+}
+
+TEST(CliBasics, QuietPrintsNothingOnStderr) {
+    const ScratchDir dir;
+    dtm::test::write_file(dir / "points.xyz", grid_points());
+    const RunResult r = run_dtm({"tin", "points.xyz", "-o", "tin.ply", "--quiet"}, dir.path());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(r.err, "");
+    EXPECT_TRUE(std::filesystem::exists(dir / "tin.ply"));
+}
