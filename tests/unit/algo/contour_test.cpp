@@ -186,8 +186,8 @@ bool segments_meet(const Point3& p1, const Point3& p2, const Point3& q1, const P
     return a * b <= 0 && c * d <= 0;
 }
 
-/// Counts pairs of segments of different contour lines that meet, and non-adjacent segments of
-/// one line that meet.
+/// Counts pairs of segments of different contour lines that meet (lines of the same level may
+/// touch at a shared point), and non-adjacent segments of one line that meet.
 std::size_t crossing_count(const std::vector<Contour>& contours)
 {
     std::size_t count = 0;
@@ -200,7 +200,15 @@ std::size_t crossing_count(const std::vector<Contour>& contours)
                     if (i == j && contours[i].closed && s == 0 && t + 2 == b.size()) {
                         continue;  // first and last segment of a ring share the closing point
                     }
-                    count += segments_meet(a[s], a[s + 1], b[t], b[t + 1]) ? 1 : 0;
+                    if (!segments_meet(a[s], a[s + 1], b[t], b[t + 1])) {
+                        continue;
+                    }
+                    // Lines of one level may touch where they share a point (a TIN vertex
+                    // exactly on the level, e.g. a saddle); anything else is a crossing.
+                    const bool shared_end = a[s] == b[t] || a[s] == b[t + 1] ||
+                                            a[s + 1] == b[t] || a[s + 1] == b[t + 1];
+                    const bool same_level = contours[i].level.value == contours[j].level.value;
+                    count += (same_level && shared_end) ? 0 : 1;
                 }
             }
         }
@@ -391,6 +399,35 @@ TEST(Contour, OutputIsInLevelOrderAndIndependentOfTheThreadCount)
             EXPECT_LE(one.out[i - 1].level.value, one.out[i].level.value);
         }
     }
+}
+
+}  // namespace
+
+#include "dtm/algo/triangulate.hpp"
+
+namespace {
+
+TEST(Contour, TriangulatedSurveyWithBreaklineAndHoleKeepsAllInvariants)
+{
+    std::mt19937 rng(23);
+    std::uniform_real_distribution<double> u(0.0, 40.0);
+    dtm::TerrainInput input;
+    for (int i = 0; i < 600; ++i) {
+        const double x = u(rng), y = u(rng);
+        // heights on a centimetre lattice: many vertices land exactly on 0.25 m levels
+        input.points.push_back({x, y, std::round(100.0 * (50.0 + 3.0 * std::sin(x / 6.0) + 0.1 * y)) / 100.0});
+    }
+    input.breaklines.push_back({{{5, 5, 52.0}, {35, 30, 51.5}}, false, "ridge"});
+    input.holes.push_back({{{15, 25, 0}, {25, 25, 0}, {25, 35, 0}, {15, 35, 0}, {15, 25, 0}}, true, "hole"});
+    const Tin tin = dtm::triangulate(input).tin;
+    const auto contours = dtm::contour(tin, {.interval = 0.25});
+    ASSERT_GT(contours.size(), 20U);
+    expect_vertices_on_levels_and_edges(tin, contours);
+    const auto lengths = length_per_level(contours);
+    for (const auto& [level, got] : lengths) {
+        EXPECT_NEAR(got, independent_length(tin, level), 1e-9 * (1.0 + got)) << level;
+    }
+    EXPECT_EQ(crossing_count(contours), 0U);
 }
 
 }  // namespace

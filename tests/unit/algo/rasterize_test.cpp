@@ -239,3 +239,32 @@ TEST(Rasterize, ExtentSpecUsesTheExtentAsOuterEdges)
 }
 
 }  // namespace
+
+#include "dtm/algo/triangulate.hpp"
+
+namespace {
+
+TEST(Rasterize, TriangulatedSurveyWithAHoleMatchesBruteForceAndIsNoDataInTheHole)
+{
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<double> u(0.0, 60.0);
+    dtm::TerrainInput input;
+    for (int i = 0; i < 1500; ++i) {
+        const double x = u(rng), y = u(rng);
+        input.points.push_back({-750'000.0 + x, -1'050'000.0 + y, 300.0 + std::sin(x / 9.0) * 5.0 + 0.2 * y});
+    }
+    const auto p = [](double x, double y) { return Point3{-750'000.0 + x, -1'050'000.0 + y, 305.0}; };
+    input.holes.push_back({{p(20, 20), p(40, 22), p(35, 41), p(21, 38), p(20, 20)}, true, "hole"});
+    const Tin tin = dtm::triangulate(input).tin;
+    ASSERT_GT(tin.triangles.size(), 2000U);
+    const dtm::GridSpec spec = dtm::snapped_grid_spec(dtm::tin_bounds(tin), 0.7);
+    const dtm::Grid grid = dtm::rasterize(tin, spec);
+    expect_matches_brute_force(tin, grid);
+    // The centre of the hole is NoData, a point well outside it has data.
+    const auto col = [&](double x) { return static_cast<std::size_t>((-750'000.0 + x - spec.xmin) / spec.cell); };
+    const auto row = [&](double y) { return static_cast<std::size_t>((spec.ymax - (-1'050'000.0 + y)) / spec.cell); };
+    EXPECT_TRUE(grid.is_nodata(row(30), col(30)));
+    EXPECT_FALSE(grid.is_nodata(row(10), col(10)));
+}
+
+}  // namespace
