@@ -15,7 +15,7 @@ constexpr long long arm = 40;       // cross half-length, 1 mm
 struct Spot {
     long long x, y;
     long long cm;  // height in centimetres
-    int style;     // 0 symbol, 1 circle, 2 cross
+    int style;     // 0 symbol, 1 circle, 2 cross, 3 cross drawn as four arms from its centre
     bool comma;
 };
 
@@ -51,7 +51,7 @@ Layout make_layout(const HpglPlanOptions& o)
     for (int j = 0; j < o.rows; ++j) {
         for (int i = 0; i < o.columns; ++i) {
             const long long cm = 30000 + 37 * i + 53 * j + (i * 7 + j * 3) % 10;
-            l.spots.push_back({first + spacing * i, first + spacing * j, cm, (i + 2 * j) % 3, (i + j) % 3 == 1});
+            l.spots.push_back({first + spacing * i, first + spacing * j, cm, (i + 2 * j) % 4, (i + j) % 3 == 1});
         }
     }
     l.frame_x = first + spacing * (o.columns - 1) + 1000;
@@ -158,6 +158,13 @@ std::string plain_marker(const Spot& s)
     const std::string xy = text(s.x) + "," + text(s.y);
     if (s.style == 0) return "PU;SM*;PA" + xy + ";SM;";
     if (s.style == 1) return "PU;PA" + xy + ";CI20;";
+    if (s.style == 3) {
+        std::string arms = "PU;";
+        for (const auto& [dx, dy] : {Vertex{arm, 0}, Vertex{-arm, 0}, Vertex{0, arm}, Vertex{0, -arm}}) {
+            arms += "PU" + xy + ";PD" + text(s.x + dx) + "," + text(s.y + dy) + ";";
+        }
+        return arms + "PU;";
+    }
     return "PU" + text(s.x - arm) + "," + text(s.y) + ";PD" + text(s.x + arm) + "," + text(s.y) + ";PU" +
            text(s.x) + "," + text(s.y - arm) + ";PD" + text(s.x) + "," + text(s.y + arm) + ";PU;";
 }
@@ -167,6 +174,11 @@ std::string pe_marker(const Spot& s)
     const std::string xy = text(s.x) + "," + text(s.y);
     if (s.style == 0) return "PUSM*PA" + xy + "SM;";
     if (s.style == 1) return "PUPA" + xy + "CI20";
+    if (s.style == 3) {
+        const auto e = [](long long v) { return encode_pe_number(v); };
+        return "PE<=" + e(s.x) + e(s.y) + e(arm) + e(0) + "<" + e(-arm) + e(0) + e(-arm) + e(0) + "<" + e(arm) +
+               e(0) + e(0) + e(arm) + "<" + e(0) + e(-arm) + e(0) + e(-arm) + ";";
+    }
     return "PE<=" + encode_pe_number(s.x - arm) + encode_pe_number(s.y) + encode_pe_number(2 * arm) +
            encode_pe_number(0) + "<" + encode_pe_number(-arm) + encode_pe_number(-arm) + encode_pe_number(0) +
            encode_pe_number(2 * arm) + ";";

@@ -4,7 +4,7 @@
 /// PCL/PJL-wrapped, PE-encoded HP-GL/2 (no separators), for the HPGL reader tests.
 ///
 /// Layout (plotter units, 40 per mm): a grid of spot heights every 20 mm, each marked in turn by
-/// an SM symbol, a small CI circle or a small cross (pen 1) with its height written 1.5 mm right
+/// an SM symbol, a small CI circle, a small cross or a cross drawn as four arms (pen 1) with its height written 1.5 mm right
 /// and 1 mm up ("312.45", some "312,45"); pen 2 breaklines along row 1 and column 1 through spot
 /// heights with vertices between them, plus one pen 2 line far from any spot height (it must come
 /// back soft); pen 3 the boundary through the outer spot heights; pen 4 a building hole on four

@@ -58,6 +58,15 @@ TEST(HpglSpotHeights, CrossCentreIsTheMarker)
     EXPECT_EQ(plan.crosses, 1u);
 }
 
+TEST(HpglSpotHeights, CrossDrawnAsArmsFromItsCentreIsAMarker)
+{
+    const auto plan = plan_of("IN;SP1;PU500,500;PD540,500;PU500,500;PD460,500;PU500,500;PD500,540;PU500,500;"
+                              "PD500,460;PU;PA560,540;LB12.5\x03");
+    EXPECT_EQ(plan.crosses, 1u);
+    ASSERT_EQ(plan.spots.size(), 1u);
+    EXPECT_EQ(plan.spots[0].at, (Point2{500, 500}));
+}
+
 TEST(HpglSpotHeights, CornersAndLongStrokesAreNoCrosses)
 {
     const auto plan = plan_of("IN;SP1;PU0,0;PD80,0;PU0,0;PD0,80;PU2000,0;PD3000,0;PU2500,-500;PD2500,500;");

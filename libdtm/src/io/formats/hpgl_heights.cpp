@@ -3,8 +3,8 @@
 //
 // A height plan marks each surveyed point with a small symbol and writes its height next to it.
 // The symbol is one of: a character plotted by SM (symbol mode), a small CI circle, a small
-// cross of two short perpendicular strokes, a pen-down dot, or any vertex drawn with a pen whose
-// role is "points". A label is a height when its whole text is a decimal number ("312.45",
+// cross (two short perpendicular strokes crossing near their middles, or three or more short
+// arms drawn out from the centre), a pen-down dot, or any vertex drawn with a "points" pen. A label is a height when its whole text is a decimal number ("312.45",
 // "312,45"); integer labels (parcel numbers) only on --hpgl-height-pens. Every height label is
 // matched to the nearest free marker within the marker radius (pairs taken in increasing
 // distance, so a marker serves one label); when most labels sit at one offset from their marker
@@ -45,32 +45,30 @@ bool crossing(const Stroke& s, const Stroke& t, double& u, double& v)
     return true;
 }
 
-/// Pairs short perpendicular strokes crossing near their middles into cross markers.
-std::size_t find_crosses(Plot& plot, double radius)
+bool perpendicular(Point2 a0, Point2 a1, Point2 b0, Point2 b1)
 {
-    std::vector<Stroke> strokes;
-    for (std::size_t i = 0; i < plot.lines.size(); ++i) {
-        const auto& pts = plot.lines[i].points;
-        if (pts.size() == 2 && distance(pts[0], pts[1]) <= 2.0 * radius) strokes.push_back({i, pts[0], pts[1]});
-    }
+    const double dot = (a1.x - a0.x) * (b1.x - b0.x) + (a1.y - a0.y) * (b1.y - b0.y);
+    return std::abs(dot) <= perpendicular_cosine * distance(a0, a1) * distance(b0, b1);
+}
+
+/// Pairs short perpendicular strokes crossing near their middles into cross markers.
+std::size_t pair_crossing_strokes(Plot& plot, const std::vector<Stroke>& strokes, double radius,
+                                  std::vector<bool>& used, std::vector<bool>& consumed)
+{
     std::vector<Point2> middles;
     for (const Stroke& s : strokes) middles.push_back({(s.a.x + s.b.x) / 2, (s.a.y + s.b.y) / 2});
     const PointGrid grid(middles, radius);
-    std::vector<bool> used(strokes.size(), false), consumed(plot.lines.size(), false);
     std::size_t found = 0;
     for (std::size_t i = 0; i < strokes.size(); ++i) {
         if (used[i]) continue;
         const Stroke& s = strokes[i];
-        const double ls = distance(s.a, s.b);
         std::size_t best = strokes.size();
         double best_score = 1.0, best_u = 0.0;
         grid.near(middles[i], radius, [&](std::uint32_t j, double) {
             if (j == i || used[j]) return;
             const Stroke& t = strokes[j];
-            const double lt = distance(t.a, t.b);
-            const double dot = (s.b.x - s.a.x) * (t.b.x - t.a.x) + (s.b.y - s.a.y) * (t.b.y - t.a.y);
             double u = 0.0, v = 0.0;
-            if (std::abs(dot) > perpendicular_cosine * ls * lt || !crossing(s, t, u, v)) return;
+            if (!perpendicular(s.a, s.b, t.a, t.b) || !crossing(s, t, u, v)) return;
             const double score = std::max(std::abs(u - 0.5), std::abs(v - 0.5));
             if (score <= 0.2 && (score < best_score || (score == best_score && j < best))) {
                 best = j;
@@ -85,6 +83,58 @@ std::size_t find_crosses(Plot& plot, double radius)
         plot.markers.push_back({centre, MarkerKind::cross, plot.lines[s.line].pen, plot.lines[s.line].offset});
         ++found;
     }
+    return found;
+}
+
+/// Crosses drawn as arms from their centre: 3 to 8 short strokes sharing one end exactly, two
+/// of them perpendicular.
+std::size_t star_crosses(Plot& plot, const std::vector<Stroke>& strokes, std::vector<bool>& used,
+                         std::vector<bool>& consumed)
+{
+    struct End {
+        Point2 at, other;
+        std::size_t stroke;
+    };
+    std::vector<End> ends;
+    for (std::size_t i = 0; i < strokes.size(); ++i) {
+        if (used[i]) continue;
+        ends.push_back({strokes[i].a, strokes[i].b, i});
+        ends.push_back({strokes[i].b, strokes[i].a, i});
+    }
+    std::sort(ends.begin(), ends.end(), [](const End& l, const End& r) {
+        return std::tie(l.at.x, l.at.y, l.stroke) < std::tie(r.at.x, r.at.y, r.stroke);
+    });
+    std::size_t found = 0;
+    for (std::size_t k = 0, m = 0; k < ends.size(); k = m) {
+        for (m = k + 1; m < ends.size() && ends[m].at == ends[k].at;) ++m;
+        if (m - k < 3 || m - k > 8) continue;
+        bool square = false;
+        for (std::size_t p = k; p < m; ++p) {
+            for (std::size_t q = p + 1; q < m; ++q) square = square || perpendicular(ends[p].at, ends[p].other, ends[q].at, ends[q].other);
+        }
+        if (!square) continue;
+        for (std::size_t p = k; p < m; ++p) {
+            used[ends[p].stroke] = true;
+            consumed[strokes[ends[p].stroke].line] = true;
+        }
+        const PlotLine& line = plot.lines[strokes[ends[k].stroke].line];
+        plot.markers.push_back({ends[k].at, MarkerKind::cross, line.pen, line.offset});
+        ++found;
+    }
+    return found;
+}
+
+/// Finds cross markers among short two-point strokes and removes their strokes from the lines.
+std::size_t find_crosses(Plot& plot, double radius)
+{
+    std::vector<Stroke> strokes;
+    for (std::size_t i = 0; i < plot.lines.size(); ++i) {
+        const auto& pts = plot.lines[i].points;
+        if (pts.size() == 2 && distance(pts[0], pts[1]) <= 2.0 * radius) strokes.push_back({i, pts[0], pts[1]});
+    }
+    std::vector<bool> used(strokes.size(), false), consumed(plot.lines.size(), false);
+    const std::size_t found = pair_crossing_strokes(plot, strokes, radius, used, consumed) +
+                              star_crosses(plot, strokes, used, consumed);
     if (found == 0) return 0;
     std::size_t kept = 0;
     for (std::size_t i = 0; i < plot.lines.size(); ++i) {
