@@ -26,6 +26,18 @@ TEST(Mesh2dm, RoundTripKeepsCountsCoordinatesAndConnectivity) {
     }
 }
 
+TEST(Mesh2dm, LargeTinSpanningSeveralWriteBlocksRoundTrips) {
+    const dtm::Tin tin = dtm::test::grid_tin(200);  // 40,000 nodes: a few MiB of text
+    dtm::test::ScratchDir dir;
+    dtm::io::write_2dm(tin, dir / "tin.2dm", {});
+    EXPECT_GT(std::filesystem::file_size(dir / "tin.2dm"), std::uintmax_t{2} << 20);
+    const dtm::Tin back = dtm::io::read_2dm(dir / "tin.2dm");
+    ASSERT_EQ(back.vertices.size(), tin.vertices.size());
+    ASSERT_EQ(back.triangles.size(), tin.triangles.size());
+    EXPECT_EQ(back.vertices.back(), tin.vertices.back());
+    EXPECT_EQ(back.triangles.back().v, tin.triangles.back().v);
+}
+
 TEST(Mesh2dm, WritesMesh2dHeaderAndOneBasedIds) {
     const dtm::Tin tin = dtm::test::grid_tin(2);
     dtm::test::ScratchDir dir;

@@ -36,8 +36,16 @@ void write_2dm(const Tin& tin, const std::filesystem::path& path, const TinWrite
     if (!file) {
         throw Error("2dm: cannot create " + path.string());
     }
+    // Text is built in blocks of about 1 MiB so memory stays flat for large TINs.
+    constexpr std::size_t block = std::size_t{1} << 20;
     std::string text = "MESH2D\nMESHNAME \"dtm TIN\"\n";
-    text.reserve(text.size() + tin.vertices.size() * 48 + tin.triangles.size() * 40);
+    text.reserve(block + 256);
+    const auto flush_if_full = [&](bool force) {
+        if (force || text.size() >= block) {
+            file.write(text.data(), static_cast<std::streamsize>(text.size()));
+            text.clear();
+        }
+    };
     for (std::size_t i = 0; i < tin.vertices.size(); ++i) {
         const Point3& p = tin.vertices[i];
         text += "ND ";
@@ -47,6 +55,7 @@ void write_2dm(const Tin& tin, const std::filesystem::path& path, const TinWrite
             append_number(text, c);
         }
         text += '\n';
+        flush_if_full(false);
     }
     for (std::size_t i = 0; i < tin.triangles.size(); ++i) {
         text += "E3T ";
@@ -56,8 +65,9 @@ void write_2dm(const Tin& tin, const std::filesystem::path& path, const TinWrite
             append_number(text, std::size_t{v} + 1);
         }
         text += " 1\n";
+        flush_if_full(false);
     }
-    file.write(text.data(), static_cast<std::streamsize>(text.size()));
+    flush_if_full(true);
     file.close();
     if (!file) {
         throw Error("2dm: cannot write " + path.string());
