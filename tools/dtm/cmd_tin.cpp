@@ -86,14 +86,17 @@ int run_tin(const TinArgs& a)
 {
     const auto start = std::chrono::steady_clock::now();
     const Progress progress = terminal_progress(a.quiet || a.stats);
-    const io::LoadedInputs loaded = io::load_inputs(to_load_options(a.input), progress.sub(0, 0.2));
+    io::LoadedInputs loaded = io::load_inputs(to_load_options(a.input), progress.sub(0, 0.2));
     const double read_s = since(start);
 
     TriangulateResult result;
     if (loaded.tin) {
         result.tin = *loaded.tin;
     } else {
-        result = triangulate(loaded.terrain, a.triangulate, progress.sub(0.2, 0.9));
+        // Without --check the input is not needed afterwards: let the triangulation consume it.
+        result = a.check ? triangulate(loaded.terrain, a.triangulate, progress.sub(0.2, 0.9))
+                         : triangulate(std::move(loaded.terrain), a.triangulate,
+                                       progress.sub(0.2, 0.9));
     }
     if (a.check) check_tin(result, loaded.tin ? TerrainInput{} : loaded.terrain);
 

@@ -25,6 +25,8 @@
 
 #include <cmath>
 
+#include "dtm/geom/predicates.hpp"
+
 namespace dtm::detail {
 namespace {
 
@@ -40,12 +42,14 @@ bool corner_is_free(const Tin& tin, const RawChain& piece, std::size_t prev, std
     if (p.x == w.x && p.y == w.y) {
         return false;  // on a TIN vertex: other lines of this level may touch it
     }
+    // The decision (are the neighbours on opposite sides of the edge?) is exact; the crossing
+    // point X is a construction and only needs to be close.
+    if (geom::orient2d(u, w, a) * geom::orient2d(u, w, b) >= 0) {
+        return false;
+    }
     const double ex = w.x - u.x, ey = w.y - u.y;
     const double da = ex * (a.y - u.y) - ey * (a.x - u.x);
     const double db = ex * (b.y - u.y) - ey * (b.x - u.x);
-    if (!(da * db < 0.0)) {
-        return false;
-    }
     const double s = da / (da - db);
     const double xx = a.x + s * (b.x - a.x), xy = a.y + s * (b.y - a.y);
     const double tau = ((xx - u.x) * ex + (xy - u.y) * ey) / (ex * ex + ey * ey);

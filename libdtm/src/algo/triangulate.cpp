@@ -159,12 +159,15 @@ void check_not_degenerate(const MergedInput& in)
                      " distinct points are collinear: there is no surface to triangulate");
 }
 
-TriangulateResult run(const TerrainInput& input, const TriangulateOptions& options,
+TriangulateResult run(TerrainInput&& input, const TriangulateOptions& options,
                       const Progress& progress)
 {
     TriangulateResult result;
     auto start = std::chrono::steady_clock::now();
-    MergedInput merged = detail::merge_input(input, options);
+    MergedInput merged = detail::merge_input(std::move(input), options);
+    const bool has_boundary = !input.boundaries.empty();
+    const std::vector<Point2> hole_seeds = std::move(input.hole_seeds);
+    input = TerrainInput{};
     check_not_degenerate(merged);
     const double seconds_merge = seconds_since(start);
     bool has_soft = false;
@@ -173,16 +176,17 @@ TriangulateResult run(const TerrainInput& input, const TriangulateOptions& optio
     Kernel k = build_kernel(merged, true, options, progress.sub(has_soft ? 0.3 : 0.0, 0.95));
 
     start = std::chrono::steady_clock::now();
-    std::vector<Point3> vertices = merged.vertices;
+    std::vector<Point3> vertices = std::move(merged.vertices);
+    const std::size_t merged_count = vertices.size();
     for (std::size_t v = 0; v < k.mesh.points.size(); ++v) {
-        if (k.vertex_of_kernel[v] >= merged.vertices.size()) {  // added at crossings, in order
+        if (k.vertex_of_kernel[v] >= merged_count) {  // added at crossings, in order
             vertices.push_back({k.mesh.points[v].x, k.mesh.points[v].y, k.z[v]});
         }
     }
     detail::TinDraft draft = detail::mesh_to_tin(k.mesh, k.vertex_of_kernel, std::move(vertices));
     k.mesh = detail::EdgeMesh{};
     result.stats.removed_triangles =
-        detail::apply_domain(draft, !input.boundaries.empty(), input.hole_seeds, options.max_edge);
+        detail::apply_domain(draft, has_boundary, hole_seeds, options.max_edge);
     detail::finish_tin(draft);
     result.tin = std::move(draft.tin);
     if (result.tin.triangles.empty()) {
@@ -209,12 +213,19 @@ TriangulateResult run(const TerrainInput& input, const TriangulateOptions& optio
 
 }  // namespace
 
+TriangulateResult triangulate(TerrainInput&& input, const TriangulateOptions& options,
+                              const Progress& progress)
+{
+    if (options.threads == 0) return run(std::move(input), options, progress);
+    tbb::task_arena arena(static_cast<int>(options.threads));
+    return arena.execute([&] { return run(std::move(input), options, progress); });
+}
+
 TriangulateResult triangulate(const TerrainInput& input, const TriangulateOptions& options,
                               const Progress& progress)
 {
-    if (options.threads == 0) return run(input, options, progress);
-    tbb::task_arena arena(static_cast<int>(options.threads));
-    return arena.execute([&] { return run(input, options, progress); });
+    TerrainInput copy = input;
+    return triangulate(std::move(copy), options, progress);
 }
 
 }  // namespace dtm

@@ -77,4 +77,10 @@ struct TriangulateResult {
                                             const TriangulateOptions& options = {},
                                             const Progress& progress = {});
 
+/// Same, consuming @p input: its memory is released as soon as the vertices are merged, which
+/// lowers the peak memory of large jobs by about 24 bytes per point.
+[[nodiscard]] TriangulateResult triangulate(TerrainInput&& input,
+                                            const TriangulateOptions& options = {},
+                                            const Progress& progress = {});
+
 }  // namespace dtm

@@ -156,6 +156,12 @@ double rule_z(DuplicateRule rule, double current, double z, std::size_t count)
 
 MergedInput merge_input(const TerrainInput& input, const TriangulateOptions& options)
 {
+    TerrainInput copy = input;
+    return merge_input(std::move(copy), options);
+}
+
+MergedInput merge_input(TerrainInput&& input, const TriangulateOptions& options)
+{
     Combined c;
     for (std::size_t i = 0; i < input.points.size(); ++i) {
         const Point3& p = input.points[i];
@@ -164,7 +170,8 @@ MergedInput merge_input(const TerrainInput& input, const TriangulateOptions& opt
                              " has a coordinate that is not a finite number");
         }
     }
-    c.points = input.points;
+    c.points = std::move(input.points);
+    input.points = {};
     c.z_known.assign(c.points.size(), true);
     add_polylines(input.breaklines, constraint_breakline, false, "breakline", c);
     add_polylines(input.boundaries, constraint_boundary, true, "boundary", c);
@@ -176,6 +183,11 @@ MergedInput merge_input(const TerrainInput& input, const TriangulateOptions& opt
     const std::vector<std::size_t> rep = find_representatives(c.points, options.snap_distance);
     std::vector<VertexIndex> vertex_of(c.points.size(), no_vertex);
     std::vector<std::size_t> z_count;
+    std::size_t kept_count = 0;
+    for (std::size_t i = 0; i < rep.size(); ++i) kept_count += rep[i] == i ? 1 : 0;
+    out.vertices.reserve(kept_count);  // exact: no growth slack in the largest array
+    out.z_known.reserve(kept_count);
+    z_count.reserve(kept_count);
     for (std::size_t i = 0; i < c.points.size(); ++i) {
         if (rep[i] == i) {
             vertex_of[i] = static_cast<VertexIndex>(out.vertices.size());

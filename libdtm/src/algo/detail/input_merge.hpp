@@ -28,5 +28,7 @@ struct MergedInput {
 
 /// @throws InputError on non-finite coordinates or an open boundary/hole ring.
 [[nodiscard]] MergedInput merge_input(const TerrainInput& input, const TriangulateOptions& options);
+/// Same, taking over input.points (left empty) instead of copying them.
+[[nodiscard]] MergedInput merge_input(TerrainInput&& input, const TriangulateOptions& options);
 
 }  // namespace dtm::detail

@@ -52,7 +52,7 @@ void compact(TinDraft& draft, const std::vector<bool>& keep)
     draft.edge_bits.resize(next);
 }
 
-TinDraft mesh_to_tin(const EdgeMesh& m, const std::vector<VertexIndex>& kernel_to_vertex,
+TinDraft mesh_to_tin(EdgeMesh& m, const std::vector<VertexIndex>& kernel_to_vertex,
                      std::vector<Point3> vertices)
 {
     // Triangles are emitted in the canonical order: by their smallest kernel vertex, then by the
@@ -67,11 +67,11 @@ TinDraft mesh_to_tin(const EdgeMesh& m, const std::vector<VertexIndex>& kernel_t
     for (EdgeId e = 0; e < directed; ++e) {
         if (m.alive[e >> 1]) vertex_edge[m.org[e]] = e;
     }
-    std::vector<TriangleIndex> face(directed, no_triangle);
     std::vector<Triangle>& tris = draft.tin.triangles;
     tris.reserve(2 * kernel_count);
     std::vector<EdgeId> first_edge;
     first_edge.reserve(2 * kernel_count);
+    draft.edge_bits.reserve(2 * kernel_count);
     std::vector<EdgeId> local;
     for (VertexId v = 0; v < kernel_count; ++v) {
         const EdgeId start = vertex_edge[v];
@@ -89,10 +89,8 @@ TinDraft mesh_to_tin(const EdgeMesh& m, const std::vector<VertexIndex>& kernel_t
             return a1 < b1 || (a1 == b1 && m.dest(m.lnext(a)) < m.dest(m.lnext(b)));
         });
         for (const EdgeId f : local) {
-            const auto t = static_cast<TriangleIndex>(tris.size());
             const EdgeId f1 = m.lnext(f);
             const EdgeId f2 = m.lnext(f1);
-            face[f] = face[f1] = face[f2] = t;
             Triangle tri;
             tri.v = {kernel_to_vertex[v], kernel_to_vertex[m.org[f1]], kernel_to_vertex[m.org[f2]]};
             tris.push_back(tri);
@@ -100,6 +98,15 @@ TinDraft mesh_to_tin(const EdgeMesh& m, const std::vector<VertexIndex>& kernel_t
             draft.edge_bits.push_back({m.constrained[f1 >> 1], m.constrained[f2 >> 1],
                                        m.constrained[f >> 1]});
         }
+    }
+    // Neighbours through a face id per directed edge. The origins are no longer needed (lnext
+    // reads oprev only), so their array holds the face ids: 24 bytes per point less at the peak.
+    std::vector<std::uint32_t>& face = m.org;
+    std::fill(face.begin(), face.end(), no_triangle);
+    for (std::size_t t = 0; t < tris.size(); ++t) {
+        const EdgeId e = first_edge[t];
+        const EdgeId e1 = m.lnext(e);
+        face[e] = face[e1] = face[m.lnext(e1)] = static_cast<TriangleIndex>(t);
     }
     for (std::size_t t = 0; t < tris.size(); ++t) {
         const EdgeId e = first_edge[t];

@@ -20,7 +20,8 @@ struct TinDraft {
 };
 
 /// Faces of @p mesh as triangles; vertex v of the mesh becomes kernel_to_vertex[v].
-[[nodiscard]] TinDraft mesh_to_tin(const EdgeMesh& mesh,
+/// Consumes the mesh: its origin array is reused as scratch memory.
+[[nodiscard]] TinDraft mesh_to_tin(EdgeMesh& mesh,
                                    const std::vector<VertexIndex>& kernel_to_vertex,
                                    std::vector<Point3> vertices);
 
