@@ -51,6 +51,9 @@ bool corner_is_free(const Tin& tin, const RawChain& piece, std::size_t prev, std
     const double da = ex * (a.y - u.y) - ey * (a.x - u.x);
     const double db = ex * (b.y - u.y) - ey * (b.x - u.x);
     const double s = da / (da - db);
+    if (!(s > 0.0 && s < 1.0)) {
+        return false;  // round-off disagrees with the exact sides: do not cut this corner
+    }
     const double xx = a.x + s * (b.x - a.x), xy = a.y + s * (b.y - a.y);
     const double tau = ((xx - u.x) * ex + (xy - u.y) * ey) / (ex * ex + ey * ey);
     constexpr double margin = 1e-9;
