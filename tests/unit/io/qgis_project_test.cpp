@@ -89,6 +89,7 @@ TEST_F(QgisProjectXml, ProjectCrsIsEpsg5514WithParsableWkt) {
     ASSERT_EQ(srs.SetFromUserInput(value_of(root_, "projectCrs.spatialrefsys.wkt").c_str()),
               OGRERR_NONE);
     EXPECT_STREQ(srs.GetAuthorityCode(nullptr), "5514");
+    EXPECT_EQ(value_of(root_, "projectCrs.spatialrefsys.ellipsoidacronym"), "EPSG:7004");
     EXPECT_EQ(value_of(root_, "title"), "Site <A> & B");  // escaped and read back
     EXPECT_EQ(value_of(root_, "properties.Paths.Absolute"), "false");
 }
@@ -183,6 +184,24 @@ TEST(QgisProject, WithoutIndexFieldIndexContoursAreRecognisedFromElevation) {
     const std::string text = dtm::io::qgis_project_xml(project);
     EXPECT_NE(text.find("abs(&quot;elevation&quot; / 5 - round(&quot;elevation&quot; / 5))"),
               std::string::npos);
+}
+
+TEST(QgisProject, Wkt2InputIsIdentifiedAsEpsg5514) {
+    OGRSpatialReference srs;
+    srs.importFromEPSG(5514);
+    char* wkt = nullptr;
+    const char* options[] = {"FORMAT=WKT2_2018", nullptr};
+    srs.exportToWkt(&wkt, options);
+    dtm::io::QgisProject project;
+    project.crs_wkt = wkt;
+    CPLFree(wkt);
+    project.dem = "dem.tif";
+    Xml doc(CPLParseXMLString(dtm::io::qgis_project_xml(project).c_str()));
+    ASSERT_TRUE(doc);
+    const CPLXMLNode* root = CPLGetXMLNode(doc.get(), "=qgis");
+    EXPECT_EQ(value_of(root, "projectCrs.spatialrefsys.authid"), "EPSG:5514");
+    EXPECT_EQ(value_of(root, "projectCrs.spatialrefsys.ellipsoidacronym"), "EPSG:7004");
+    EXPECT_EQ(value_of(root, "projectCrs.spatialrefsys.projectionacronym"), "krovak");
 }
 
 TEST(QgisProject, OnlyRequestedLayersAreWritten) {

@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <array>
 #include <charconv>
+#include <cstdlib>
 #include <fstream>
 
 #include "dtm/core/error.hpp"
@@ -150,8 +151,14 @@ CrsInfo describe_crs(const std::string& crs_wkt) {
         info.srid = code;
     }
     info.description = srs.GetName() != nullptr ? srs.GetName() : "";
-    const char* ellipsoid_code = srs.GetAuthorityCode("SPHEROID");
-    if (ellipsoid_code != nullptr) {
+    // WKT2 carries an ID only at the top: look the ellipsoid up from the authority's definition.
+    OGRSpatialReference full;
+    const OGRSpatialReference& source = authority != nullptr && std::string(authority) == "EPSG" &&
+                                                code != nullptr &&
+                                                full.importFromEPSG(std::atoi(code)) == OGRERR_NONE
+                                            ? full
+                                            : srs;
+    if (const char* ellipsoid_code = source.GetAuthorityCode("SPHEROID")) {
         info.ellipsoid_acronym = std::string("EPSG:") + ellipsoid_code;
     }
     info.geographic = srs.IsGeographic() != 0;
