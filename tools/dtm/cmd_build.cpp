@@ -17,6 +17,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -268,6 +269,23 @@ void fill_report(BuildState& state) {
     r.surface = state.surface;
 }
 
+/// One short paragraph on stdout: what was built and where the report is.
+void print_summary(const BuildState& state, const std::string& out_dir) {
+    const io::BuildReport& r = state.report;
+    const PointFate& points = r.accounting.survey_points;
+    std::printf(
+        "dtm build: %zu points read (%zu used, %zu merged duplicates, %zu outside the "
+        "boundary or in holes), %zu bad lines skipped\n",
+        points.total, points.used, points.merged, points.removed, r.skipped_lines);
+    std::printf(
+        "dtm build: TIN %zu vertices, %zu triangles, %zu constrained edges, %zu breakline "
+        "conflicts; DEM %zu x %zu cells of %g; %zu contour lines every %g\n",
+        r.surface.vertex_count, r.surface.triangle_count, r.surface.constraint_count,
+        r.conflicts.size(), r.dem.cols, r.dem.rows, r.dem.cell, r.contour_lines,
+        r.contour_interval);
+    std::printf("dtm build: products and report.json in %s\n", out_dir.c_str());
+}
+
 int run_build(const BuildArgs& args) {
     const Progress progress = terminal_progress("build", args.quiet);
     Stopwatch clock;
@@ -303,6 +321,14 @@ int run_build(const BuildArgs& args) {
     progress.report(0.99, "moving the products into place");
     staging.commit(state.files);
     progress.report(1.0, "done");
+    if (!args.quiet) {
+        print_summary(state, args.out_dir);
+    }
+    if (state.inputs.crs_wkt.empty()) {
+        std::fprintf(stderr,
+                     "dtm build: warning: the inputs carry no CRS (give --crs): the products and "
+                     "the QGIS project have none\n");
+    }
     return 0;
 }
 
