@@ -2,6 +2,10 @@
 // dtm: one binary, thin subcommands. This file is the only place exceptions become exit codes:
 //   0 ok, 1 any other failure (dtm::Error, std::exception), 2 bad usage or bad input
 //   (dtm::UsageError, dtm::InputError, CLI11 parse errors), 130 cancelled.
+#if __has_include(<malloc.h>)
+#include <malloc.h>
+#endif
+
 #include <exception>
 #include <iostream>
 #include <vector>
@@ -11,6 +15,12 @@
 
 int main(int argc, char** argv)
 {
+#ifdef M_MMAP_THRESHOLD
+    // Large arrays (points, meshes, TINs) come and go in phases; a fixed mmap threshold returns
+    // each one to the system when it is freed (glibc's adaptive threshold would keep them in the
+    // heap and the resident memory would add up across phases).
+    mallopt(M_MMAP_THRESHOLD, 1 << 20);
+#endif
     using namespace dtm::cli;
     CLI::App app{"dtm: survey points and breaklines to a constrained Delaunay TIN, DEMs, contours "
                  "and 3-D surfaces"};
