@@ -177,11 +177,11 @@ std::string pe_marker(const Spot& s)
     if (s.style == 3) {
         const auto e = [](long long v) { return encode_pe_number(v); };
         return "PE<=" + e(s.x) + e(s.y) + e(arm) + e(0) + "<" + e(-arm) + e(0) + e(-arm) + e(0) + "<" + e(arm) +
-               e(0) + e(0) + e(arm) + "<" + e(0) + e(-arm) + e(0) + e(-arm) + ";";
+               e(0) + e(0) + e(arm) + "<" + e(0) + e(-arm) + e(0) + e(-arm) + ";PU";  // PE leaves the pen down
     }
     return "PE<=" + encode_pe_number(s.x - arm) + encode_pe_number(s.y) + encode_pe_number(2 * arm) +
            encode_pe_number(0) + "<" + encode_pe_number(-arm) + encode_pe_number(-arm) + encode_pe_number(0) +
-           encode_pe_number(2 * arm) + ";";
+           encode_pe_number(2 * arm) + ";PU";
 }
 
 std::vector<std::pair<Vertex, std::string>> parcel_numbers(const Layout& l)

@@ -8,6 +8,7 @@
 #include <tuple>
 
 #include "io/formats/detail/hpgl_heights.hpp"
+#include "support/hpgl_plan_generator.hpp"
 
 namespace {
 
@@ -65,6 +66,19 @@ TEST(HpglSpotHeights, CrossDrawnAsArmsFromItsCentreIsAMarker)
     EXPECT_EQ(plan.crosses, 1u);
     ASSERT_EQ(plan.spots.size(), 1u);
     EXPECT_EQ(plan.spots[0].at, (Point2{500, 500}));
+}
+
+TEST(HpglSpotHeights, CrossWhoseStrokeTheNextMoveExtendedIsStillFound)
+{
+    // PE leaves the pen down after a drawn pair, so "PA" to the label draws on from the cross.
+    using dtm::test::encode_pe_number;
+    const std::string cross = "PE<=" + encode_pe_number(960) + encode_pe_number(1000) + encode_pe_number(80) +
+                              encode_pe_number(0) + "<" + encode_pe_number(-40) + encode_pe_number(-40) +
+                              encode_pe_number(0) + encode_pe_number(80) + ";";
+    const auto plan = plan_of("IN;SP1;" + cross + "PA1060,1040;LB250.10\x03");
+    EXPECT_EQ(plan.crosses, 1u);
+    ASSERT_EQ(plan.spots.size(), 1u);
+    EXPECT_EQ(plan.spots[0].at, (Point2{1000, 1000}));
 }
 
 TEST(HpglSpotHeights, CornersAndLongStrokesAreNoCrosses)

@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstdint>
 #include <tuple>
+#include <utility>
 
 #include "io/formats/detail/hpgl_grid.hpp"
 #include "io/formats/detail/hpgl_heights.hpp"
@@ -29,6 +30,7 @@ constexpr double perpendicular_cosine = 0.1;  // |cos| of the stroke angle, abou
 
 struct Stroke {
     std::size_t line;
+    std::size_t segment;  ///< index of the segment's first vertex in its line
     Point2 a, b;
 };
 
@@ -53,7 +55,7 @@ bool perpendicular(Point2 a0, Point2 a1, Point2 b0, Point2 b1)
 
 /// Pairs short perpendicular strokes crossing near their middles into cross markers.
 std::size_t pair_crossing_strokes(Plot& plot, const std::vector<Stroke>& strokes, double radius,
-                                  std::vector<bool>& used, std::vector<bool>& consumed)
+                                  std::vector<bool>& used)
 {
     std::vector<Point2> middles;
     for (const Stroke& s : strokes) middles.push_back({(s.a.x + s.b.x) / 2, (s.a.y + s.b.y) / 2});
@@ -78,7 +80,6 @@ std::size_t pair_crossing_strokes(Plot& plot, const std::vector<Stroke>& strokes
         });
         if (best == strokes.size()) continue;
         used[i] = used[best] = true;
-        consumed[s.line] = consumed[strokes[best].line] = true;
         const Point2 centre{s.a.x + best_u * (s.b.x - s.a.x), s.a.y + best_u * (s.b.y - s.a.y)};
         plot.markers.push_back({centre, MarkerKind::cross, plot.lines[s.line].pen, plot.lines[s.line].offset});
         ++found;
@@ -88,8 +89,7 @@ std::size_t pair_crossing_strokes(Plot& plot, const std::vector<Stroke>& strokes
 
 /// Crosses drawn as arms from their centre: 3 to 8 short strokes sharing one end exactly, two
 /// of them perpendicular.
-std::size_t star_crosses(Plot& plot, const std::vector<Stroke>& strokes, std::vector<bool>& used,
-                         std::vector<bool>& consumed)
+std::size_t star_crosses(Plot& plot, const std::vector<Stroke>& strokes, std::vector<bool>& used)
 {
     struct End {
         Point2 at, other;
@@ -113,10 +113,7 @@ std::size_t star_crosses(Plot& plot, const std::vector<Stroke>& strokes, std::ve
             for (std::size_t q = p + 1; q < m; ++q) square = square || perpendicular(ends[p].at, ends[p].other, ends[q].at, ends[q].other);
         }
         if (!square) continue;
-        for (std::size_t p = k; p < m; ++p) {
-            used[ends[p].stroke] = true;
-            consumed[strokes[ends[p].stroke].line] = true;
-        }
+        for (std::size_t p = k; p < m; ++p) used[ends[p].stroke] = true;
         const PlotLine& line = plot.lines[strokes[ends[k].stroke].line];
         plot.markers.push_back({ends[k].at, MarkerKind::cross, line.pen, line.offset});
         ++found;
@@ -124,25 +121,65 @@ std::size_t star_crosses(Plot& plot, const std::vector<Stroke>& strokes, std::ve
     return found;
 }
 
-/// Finds cross markers among short two-point strokes and removes their strokes from the lines.
-std::size_t find_crosses(Plot& plot, double radius)
+bool is_terrain_line(const HpglOptions& options, int pen)
+{
+    const auto found = options.pens.find(pen);
+    return found != options.pens.end() && found->second != PenRole::points && found->second != PenRole::ignore;
+}
+
+/// Removes the segments used by crosses; a line loses the vertices no kept segment reaches.
+void remove_segments(Plot& plot, std::vector<std::pair<std::size_t, std::size_t>>& removed)
+{
+    std::sort(removed.begin(), removed.end());
+    std::vector<PlotLine> kept;
+    std::size_t r = 0;
+    for (std::size_t i = 0; i < plot.lines.size(); ++i) {
+        PlotLine& line = plot.lines[i];
+        if (r >= removed.size() || removed[r].first != i) {
+            kept.push_back(std::move(line));
+            continue;
+        }
+        PlotLine piece{line.pen, {}, line.offset};
+        for (std::size_t k = 0; k + 1 < line.points.size(); ++k) {
+            const bool gone = r < removed.size() && removed[r] == std::pair{i, k};
+            if (gone) ++r;
+            if (!gone) {
+                if (piece.points.empty()) piece.points.push_back(line.points[k]);
+                piece.points.push_back(line.points[k + 1]);
+            } else if (!piece.points.empty()) {
+                kept.push_back(std::move(piece));
+                piece = PlotLine{line.pen, {}, line.offset};
+            }
+        }
+        if (!piece.points.empty()) kept.push_back(std::move(piece));
+    }
+    plot.lines = std::move(kept);
+}
+
+/// Finds cross markers among short strokes and removes their strokes from the lines. Lines of
+/// terrain pens (breakline, boundary, hole) take part only as whole two-point lines; on other
+/// pens every short segment does, so a cross whose stroke the next move extended (the pen stays
+/// down after a PE ending in a draw) is still found.
+std::size_t find_crosses(Plot& plot, const HpglOptions& options, double radius)
 {
     std::vector<Stroke> strokes;
     for (std::size_t i = 0; i < plot.lines.size(); ++i) {
         const auto& pts = plot.lines[i].points;
-        if (pts.size() == 2 && distance(pts[0], pts[1]) <= 2.0 * radius) strokes.push_back({i, pts[0], pts[1]});
+        const bool terrain = is_terrain_line(options, plot.lines[i].pen);
+        if (terrain && pts.size() != 2) continue;
+        for (std::size_t k = 0; k + 1 < pts.size(); ++k) {
+            if (distance(pts[k], pts[k + 1]) <= 2.0 * radius) strokes.push_back({i, k, pts[k], pts[k + 1]});
+        }
     }
-    std::vector<bool> used(strokes.size(), false), consumed(plot.lines.size(), false);
-    const std::size_t found = pair_crossing_strokes(plot, strokes, radius, used, consumed) +
-                              star_crosses(plot, strokes, used, consumed);
+    std::vector<bool> used(strokes.size(), false);
+    const std::size_t found =
+        pair_crossing_strokes(plot, strokes, radius, used) + star_crosses(plot, strokes, used);
     if (found == 0) return 0;
-    std::size_t kept = 0;
-    for (std::size_t i = 0; i < plot.lines.size(); ++i) {
-        if (consumed[i]) continue;
-        if (kept != i) plot.lines[kept] = std::move(plot.lines[i]);
-        ++kept;
+    std::vector<std::pair<std::size_t, std::size_t>> removed;
+    for (std::size_t i = 0; i < strokes.size(); ++i) {
+        if (used[i]) removed.emplace_back(strokes[i].line, strokes[i].segment);
     }
-    plot.lines.resize(kept);
+    remove_segments(plot, removed);
     return found;
 }
 
@@ -281,7 +318,7 @@ TerrainPlan build_terrain_plan(Plot& plot, const HpglOptions& options)
 {
     TerrainPlan plan;
     const double radius = options.marker_radius_mm * units_per_mm;
-    plan.crosses = find_crosses(plot, radius);
+    plan.crosses = find_crosses(plot, options, radius);
     add_point_markers(plot, options, plot.markers);
     plan.markers = plot.markers.size();
     match_labels(plot, options, radius, plan);

@@ -8,7 +8,11 @@
 // its lowest bit (odd = negative) and the magnitude in the other bits. Flags come before a
 // coordinate pair: ':' pen number follows, '<' the next pair is a pen-up move, '>' the number of
 // fractional binary digits follows (coordinates are divided by 2^n), '=' the next pair is
-// absolute; pairs are relative otherwise. PE ends at ';' or at the next instruction.
+// absolute; pairs are relative otherwise. PE ends at ';' or at the next instruction. Blanks,
+// control characters, DEL and bytes 128-160 and 255 are ignored inside PE data, the eighth bit
+// of a flag is disregarded, and so are eighth bits in 7-bit mode. One exception is reported:
+// C2 or C3 followed by 80-BF is the trace of a UTF-8 re-encoding of 8-bit data (a plot opened
+// and saved as text), which corrupts every number it touches.
 // Reference: HP-GL/2 and HP RTL Reference Guide (Hewlett-Packard, 1997), chapter "PE".
 #include "io/formats/detail/hpgl_pe.hpp"
 
@@ -34,6 +38,10 @@ struct DigitSet {
     {
         return seven_bit ? (c >= 95 && c <= 126) : (c >= 191 && c <= 254);
     }
+    [[nodiscard]] unsigned char fold(unsigned char c) const noexcept
+    {
+        return seven_bit ? static_cast<unsigned char>(c & 0x7F) : c;
+    }
     [[nodiscard]] unsigned value(unsigned char c) const noexcept
     {
         if (seven_bit) return c >= 95 ? c - 95u : c - 63u;
@@ -49,11 +57,21 @@ std::string byte_text(unsigned char c)
     return buffer;
 }
 
+bool ignorable(unsigned char c) noexcept { return c <= ' ' || c == 127 || (c >= 128 && c <= 160) || c == 255; }
+
+/// 8-bit flags are read without their eighth bit (0xBD is '=').
+unsigned char flag_of(unsigned char c) noexcept
+{
+    const auto low = static_cast<unsigned char>(c & 0x7F);
+    const bool is_flag = low == ':' || low == '<' || low == '>' || low == '=' || low == '7';
+    return is_flag && (c == low || c >= 0xB7) ? low : 0;
+}
+
 /// True if a whole number (non-final digits then a final one) starts at @p pos.
 bool number_follows(std::string_view bytes, std::size_t pos, DigitSet digits)
 {
     for (std::size_t i = pos; i < bytes.size(); ++i) {
-        const auto c = static_cast<unsigned char>(bytes[i]);
+        const auto c = digits.fold(static_cast<unsigned char>(bytes[i]));
         if (digits.final_digit(c)) return true;
         if (!digits.non_final(c)) return false;
     }
@@ -71,20 +89,21 @@ public:
     {
         out_.clear();
         while (pos_ < bytes_.size()) {
-            const auto c = static_cast<unsigned char>(bytes_[pos_]);
-            if (c == ';') return pos_ + 1;
-            if (c == escape) break;
-            if (c <= ' ') {
-                ++pos_;
-            } else if (!have_x_ && is_flag(c)) {
-                flag(c);
+            const auto raw = static_cast<unsigned char>(bytes_[pos_]);
+            const auto c = digits_.fold(raw);
+            if (raw == ';') return pos_ + 1;
+            if (raw == escape) break;
+            if (!have_x_ && flag_of(raw) != 0) {
+                flag(flag_of(raw));
             } else if (digits_.non_final(c) || digits_.final_digit(c)) {
-                if (!have_x_ && is_letter(c) && !number_follows(bytes_, pos_, digits_)) break;
+                if (!have_x_ && is_letter(raw) && !number_follows(bytes_, pos_, digits_)) break;
                 coordinate();
-            } else if (!have_x_ && is_letter(c)) {
+            } else if (ignorable(raw) && !mangled()) {
+                ++pos_;
+            } else if (!have_x_ && is_letter(raw)) {
                 break;  // a lower-case instruction after a 7-bit PE
             } else {
-                diag_.problem(pos_, "invalid byte " + byte_text(c) + " in PE (polyline encoded) data");
+                report_invalid(raw);
                 ++pos_;
             }
         }
@@ -93,10 +112,22 @@ public:
     }
 
 private:
-    static bool is_flag(unsigned char c) noexcept
+    /// C2/C3 then 80-BF: a UTF-8 re-encoded 8-bit byte.
+    [[nodiscard]] bool mangled() const noexcept
     {
-        return c == ':' || c == '<' || c == '>' || c == '=' || c == '7';
+        if (pos_ == 0) return false;
+        const auto before = static_cast<unsigned char>(bytes_[pos_ - 1]);
+        const auto c = static_cast<unsigned char>(bytes_[pos_]);
+        return (before == 0xC2 || before == 0xC3) && c >= 0x80 && c <= 0xBF;
     }
+
+    void report_invalid(unsigned char c)
+    {
+        std::string what = "invalid byte " + byte_text(c) + " in PE (polyline encoded) data";
+        if (mangled()) what += " (after " + byte_text(static_cast<unsigned char>(bytes_[pos_ - 1])) + ": the plot looks re-encoded as UTF-8)";
+        diag_.problem(pos_, what);
+    }
+
     static bool is_letter(unsigned char c) noexcept
     {
         return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z');
@@ -153,10 +184,15 @@ private:
         std::uint64_t magnitude = 0;
         unsigned shift = 0;
         while (pos_ < bytes_.size()) {
-            const auto c = static_cast<unsigned char>(bytes_[pos_]);
+            const auto raw = static_cast<unsigned char>(bytes_[pos_]);
+            const auto c = digits_.fold(raw);
             const bool last = digits_.final_digit(c);
             if (!last && !digits_.non_final(c)) {
-                diag_.problem(pos_, "invalid byte " + byte_text(c) + " inside a PE number");
+                if (ignorable(raw) && !mangled()) {
+                    ++pos_;
+                    continue;
+                }
+                report_invalid(raw);
                 return false;
             }
             if (shift > 60) {

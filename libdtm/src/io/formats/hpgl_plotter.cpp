@@ -206,6 +206,7 @@ void Plotter::moves(const Command& c)
 
 void Plotter::pe(const Command& c)
 {
+    // Each pair is a pen-down move unless flagged pen-up; the pen stays as the last pair left it.
     for (const PeItem& item : c.pe) {
         if (item.kind == PeItem::Kind::pen) {
             pen_ = std::max(0, item.pen);
@@ -215,14 +216,10 @@ void Plotter::pe(const Command& c)
         const Point2 target = item.absolute ? to_plotter(item.x, item.y)
                                             : Point2{pos_.x + delta(item.x, item.y).x,
                                                      pos_.y + delta(item.x, item.y).y};
-        const bool was_down = pen_down_;
         pen_down_ = item.kind == PeItem::Kind::draw;
         if (!pen_down_) line_ = -1;
         segment_to(target, true);
-        pen_down_ = was_down;
-        if (!was_down) line_ = -1;
     }
-    if (!pen_down_) line_ = -1;
 }
 
 void Plotter::start_line()
