@@ -19,13 +19,11 @@ struct Raster {
     int has_nodata = 0;
     std::vector<double> values;
 
-    [[nodiscard]] bool valid(double v) const
-    {
+    [[nodiscard]] bool valid(double v) const {
         return !std::isnan(v) && !(has_nodata && v == nodata);
     }
     /// Value at the cell whose centre is nearest (x, y); NaN outside.
-    [[nodiscard]] double at(double x, double y) const
-    {
+    [[nodiscard]] double at(double x, double y) const {
         const double c = std::floor((x - gt[0]) / gt[1]);
         const double r = std::floor((y - gt[3]) / gt[5]);
         if (c < 0 || r < 0 || c >= cols || r >= rows) {
@@ -36,8 +34,7 @@ struct Raster {
     }
 };
 
-bool load(const char* path, Raster& out)
-{
+bool load(const char* path, Raster& out) {
     GDALDatasetH ds = GDALOpen(path, GA_ReadOnly);
     if (ds == nullptr) {
         std::fprintf(stderr, "compare_rasters: cannot open %s\n", path);
@@ -57,8 +54,7 @@ bool load(const char* path, Raster& out)
 
 }  // namespace
 
-int main(int argc, char** argv)
-{
+int main(int argc, char** argv) {
     if (argc != 3) {
         std::fprintf(stderr, "usage: compare_rasters A B\n");
         return 2;
@@ -74,7 +70,9 @@ int main(int argc, char** argv)
         for (int c = 0; c < a.cols; ++c) {
             const double x = a.gt[0] + (c + 0.5) * a.gt[1];
             const double y = a.gt[3] + (r + 0.5) * a.gt[5];
-            const double va = a.values[static_cast<std::size_t>(r) * static_cast<std::size_t>(a.cols) + static_cast<std::size_t>(c)];
+            const double va =
+                a.values[static_cast<std::size_t>(r) * static_cast<std::size_t>(a.cols) +
+                         static_cast<std::size_t>(c)];
             const double vb = b.at(x, y);
             const bool ha = a.valid(va), hb = b.valid(vb);
             if (ha && hb) {
@@ -89,8 +87,9 @@ int main(int argc, char** argv)
             }
         }
     }
-    std::printf("cells %d x %d, both with data %zu, max |A-B| %.3g m, cells differing by more than "
-                "1e-4 m %zu, data only in A %zu, only in B %zu\n",
-                a.cols, a.rows, both, max_diff, over, only_a, only_b);
+    std::printf(
+        "cells %d x %d, both with data %zu, max |A-B| %.3g m, cells differing by more than "
+        "1e-4 m %zu, data only in A %zu, only in B %zu\n",
+        a.cols, a.rows, both, max_diff, over, only_a, only_b);
     return 0;
 }

@@ -12,8 +12,7 @@ namespace {
 
 /// n x n jittered grid over 2000 m with a smooth terrain; triangles and neighbour links built
 /// directly (no triangulator needed).
-dtm::Tin bench_tin(int n)
-{
+dtm::Tin bench_tin(int n) {
     std::mt19937 rng(42);
     const double h = 2000.0 / (n - 1);
     std::uniform_real_distribution<double> jitter(-0.2 * h, 0.2 * h);
@@ -23,13 +22,15 @@ dtm::Tin bench_tin(int n)
         for (int i = 0; i < n; ++i) {
             const double x = i * h + (i > 0 && i < n - 1 ? jitter(rng) : 0.0);
             const double y = j * h + (j > 0 && j < n - 1 ? jitter(rng) : 0.0);
-            tin.vertices.push_back({-750'000.0 + x, -1'050'000.0 + y,
-                                    300.0 + 40.0 * std::sin(x / 300.0) * std::cos(y / 250.0) +
-                                        0.02 * x});
+            tin.vertices.push_back(
+                {-750'000.0 + x, -1'050'000.0 + y,
+                 300.0 + 40.0 * std::sin(x / 300.0) * std::cos(y / 250.0) + 0.02 * x});
         }
     }
     const auto id = [n](int i, int j) { return static_cast<std::uint32_t>(j * n + i); };
-    const auto tri = [n](int i, int j, int k) { return static_cast<std::uint32_t>(2 * (j * (n - 1) + i) + k); };
+    const auto tri = [n](int i, int j, int k) {
+        return static_cast<std::uint32_t>(2 * (j * (n - 1) + i) + k);
+    };
     for (int j = 0; j + 1 < n; ++j) {
         for (int i = 0; i + 1 < n; ++i) {
             // lower-right triangle (k = 0) and upper-left (k = 1), diagonal (i,j)-(i+1,j+1)
@@ -46,16 +47,15 @@ dtm::Tin bench_tin(int n)
     return tin;
 }
 
-const dtm::Tin& shared_tin()
-{
+const dtm::Tin& shared_tin() {
     static const dtm::Tin tin = bench_tin(1000);
     return tin;
 }
 
-void BM_Rasterize2000(benchmark::State& state)
-{
+void BM_Rasterize2000(benchmark::State& state) {
     const dtm::Tin& tin = shared_tin();
-    const dtm::GridSpec spec{.xmin = -750'000.0, .ymax = -1'048'000.0, .cell = 1.0, .cols = 2000, .rows = 2000};
+    const dtm::GridSpec spec{
+        .xmin = -750'000.0, .ymax = -1'048'000.0, .cell = 1.0, .cols = 2000, .rows = 2000};
     for (auto _ : state) {
         const dtm::Grid grid =
             dtm::rasterize(tin, spec, {.threads = static_cast<unsigned>(state.range(0))});

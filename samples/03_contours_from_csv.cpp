@@ -18,9 +18,9 @@ namespace {
 class CountingSink final : public dtm::ContourSink {
 public:
     explicit CountingSink(dtm::ContourSink& next) : next_(next) {}
-    void add(const dtm::ContourLevel& level, std::span<const dtm::Point3> line,
-             bool closed) override
-    {
+    void add(const dtm::ContourLevel& level,
+             std::span<const dtm::Point3> line,
+             bool closed) override {
         (closed ? rings : open_lines) += 1;
         next_.add(level, line, closed);
     }
@@ -33,8 +33,7 @@ private:
 
 }  // namespace
 
-int main(int argc, char** argv)
-{
+int main(int argc, char** argv) {
     if (argc < 3) {
         std::fprintf(stderr, "usage: %s POINTS OUT.gpkg [INTERVAL]\n", argv[0]);
         return 2;

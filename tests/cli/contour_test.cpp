@@ -22,8 +22,7 @@ using Dataset = std::unique_ptr<GDALDataset, Closer>;
 
 /// Points of the plane z = 100 + (x - x0) on a jittered 11 x 11 grid: the contour of level L is
 /// the straight line x = x0 + L - 100, whatever the triangulation.
-std::filesystem::path write_ramp(const dtm::test::ScratchDir& dir)
-{
+std::filesystem::path write_ramp(const dtm::test::ScratchDir& dir) {
     std::ostringstream csv;
     csv.precision(12);
     csv << "x,y,z\n";
@@ -38,18 +37,16 @@ std::filesystem::path write_ramp(const dtm::test::ScratchDir& dir)
     return path;
 }
 
-Dataset open_vector(const std::filesystem::path& path)
-{
+Dataset open_vector(const std::filesystem::path& path) {
     GDALAllRegister();
     return Dataset(GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY));
 }
 
-TEST(CliContour, GeoPackageHasLinesOnTheirLevelWithIndexAttributeAndCrs)
-{
+TEST(CliContour, GeoPackageHasLinesOnTheirLevelWithIndexAttributeAndCrs) {
     const dtm::test::ScratchDir dir;
-    const auto r = dtm::test::run_dtm({"contour", write_ramp(dir).string(), "-o",
-                                       (dir / "c.gpkg").string(), "--interval", "0.5",
-                                       "--index-every", "4", "--crs", "EPSG:5514", "-q"});
+    const auto r =
+        dtm::test::run_dtm({"contour", write_ramp(dir).string(), "-o", (dir / "c.gpkg").string(),
+                            "--interval", "0.5", "--index-every", "4", "--crs", "EPSG:5514", "-q"});
     ASSERT_EQ(r.exit_code, 0) << r.err;
     Dataset ds = open_vector(dir / "c.gpkg");
     ASSERT_TRUE(ds);
@@ -76,8 +73,7 @@ TEST(CliContour, GeoPackageHasLinesOnTheirLevelWithIndexAttributeAndCrs)
     EXPECT_EQ(index_of_level.at(102.5), 0);
 }
 
-TEST(CliContour, ShapefileWithPrjAndDxfWithLayersAndFixedLevels)
-{
+TEST(CliContour, ShapefileWithPrjAndDxfWithLayersAndFixedLevels) {
     const dtm::test::ScratchDir dir;
     const auto ramp = write_ramp(dir).string();
     auto r = dtm::test::run_dtm({"contour", ramp, "-o", (dir / "c.shp").string(), "--levels",
@@ -87,7 +83,8 @@ TEST(CliContour, ShapefileWithPrjAndDxfWithLayersAndFixedLevels)
     Dataset shp = open_vector(dir / "c.shp");
     ASSERT_TRUE(shp);
     EXPECT_EQ(shp->GetLayer(0)->GetFeatureCount(), 2);
-    r = dtm::test::run_dtm({"contour", ramp, "-o", (dir / "c.dxf").string(), "--interval", "1", "-q"});
+    r = dtm::test::run_dtm(
+        {"contour", ramp, "-o", (dir / "c.dxf").string(), "--interval", "1", "-q"});
     ASSERT_EQ(r.exit_code, 0) << r.err;
     Dataset dxf = open_vector(dir / "c.dxf");
     ASSERT_TRUE(dxf);
@@ -101,15 +98,17 @@ TEST(CliContour, ShapefileWithPrjAndDxfWithLayersAndFixedLevels)
     EXPECT_EQ(other, 8);
 }
 
-TEST(CliContour, BadUsageExitsWithTwoAndWritesNothing)
-{
+TEST(CliContour, BadUsageExitsWithTwoAndWritesNothing) {
     const dtm::test::ScratchDir dir;
     const auto ramp = write_ramp(dir).string();
     const auto out = (dir / "c.gpkg").string();
     EXPECT_EQ(dtm::test::run_dtm({"contour", ramp, "-o", out, "-q"}).exit_code, 2);  // no levels
-    EXPECT_EQ(dtm::test::run_dtm({"contour", ramp, "-o", out, "--interval", "0", "-q"}).exit_code, 2);
-    EXPECT_EQ(dtm::test::run_dtm({"contour", ramp, "-o", out, "--interval", "1e-9", "-q"}).exit_code, 2);
-    EXPECT_EQ(dtm::test::run_dtm({"contour", ramp, "-o", (dir / "c.xyz").string(), "--interval", "1", "-q"})
+    EXPECT_EQ(dtm::test::run_dtm({"contour", ramp, "-o", out, "--interval", "0", "-q"}).exit_code,
+              2);
+    EXPECT_EQ(
+        dtm::test::run_dtm({"contour", ramp, "-o", out, "--interval", "1e-9", "-q"}).exit_code, 2);
+    EXPECT_EQ(dtm::test::run_dtm(
+                  {"contour", ramp, "-o", (dir / "c.xyz").string(), "--interval", "1", "-q"})
                   .exit_code,
               2);
     EXPECT_FALSE(std::filesystem::exists(out));

@@ -18,12 +18,13 @@ struct Closer {
 };
 using Dataset = std::unique_ptr<GDALDataset, Closer>;
 
-double plane(double x, double y) { return 250.0 + 0.5 * (x + 750'000.0) - 0.25 * (y + 1'050'000.0); }
+double plane(double x, double y) {
+    return 250.0 + 0.5 * (x + 750'000.0) - 0.25 * (y + 1'050'000.0);
+}
 
 /// A diamond of survey points at S-JTSK offsets on a plane: the TIN's linear interpolation of a
 /// plane is the plane itself, whatever the triangulation.
-std::filesystem::path write_diamond(const dtm::test::ScratchDir& dir)
-{
+std::filesystem::path write_diamond(const dtm::test::ScratchDir& dir) {
     std::ostringstream csv;
     csv << "x,y,z\n";
     csv.precision(12);
@@ -42,14 +43,12 @@ std::filesystem::path write_diamond(const dtm::test::ScratchDir& dir)
     return path;
 }
 
-Dataset open_raster(const std::filesystem::path& path)
-{
+Dataset open_raster(const std::filesystem::path& path) {
     GDALAllRegister();
     return Dataset(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY));
 }
 
-TEST(CliGrid, WritesGeoTiffWithCrsPlaneValuesAndNoDataOutsideTheTin)
-{
+TEST(CliGrid, WritesGeoTiffWithCrsPlaneValuesAndNoDataOutsideTheTin) {
     const dtm::test::ScratchDir dir;
     const auto points = write_diamond(dir);
     const auto r = dtm::test::run_dtm({"grid", points.string(), "-o", (dir / "dem.tif").string(),
@@ -90,14 +89,12 @@ TEST(CliGrid, WritesGeoTiffWithCrsPlaneValuesAndNoDataOutsideTheTin)
     EXPECT_LT(with_data, static_cast<std::size_t>(cols * rows) * 3 / 4);
 }
 
-TEST(CliGrid, ExtentGivesTheOuterEdgesAndAscPicksTheAsciiGridDriver)
-{
+TEST(CliGrid, ExtentGivesTheOuterEdgesAndAscPicksTheAsciiGridDriver) {
     const dtm::test::ScratchDir dir;
     const auto points = write_diamond(dir);
-    const auto r = dtm::test::run_dtm({"grid", points.string(), "-o", (dir / "dem.asc").string(),
-                                       "--cell", "1", "--extent",
-                                       "-750005,-1049995,-749985,-1049985", "--nodata", "-1",
-                                       "-q"});
+    const auto r = dtm::test::run_dtm(
+        {"grid", points.string(), "-o", (dir / "dem.asc").string(), "--cell", "1", "--extent",
+         "-750005,-1049995,-749985,-1049985", "--nodata", "-1", "-q"});
     ASSERT_EQ(r.exit_code, 0) << r.err;
     Dataset ds = open_raster(dir / "dem.asc");
     ASSERT_TRUE(ds);
@@ -111,8 +108,7 @@ TEST(CliGrid, ExtentGivesTheOuterEdgesAndAscPicksTheAsciiGridDriver)
     EXPECT_EQ(ds->GetRasterBand(1)->GetNoDataValue(), -1.0);
 }
 
-TEST(CliGrid, HillshadeSlopeAndAspectAreWrittenNextToTheDem)
-{
+TEST(CliGrid, HillshadeSlopeAndAspectAreWrittenNextToTheDem) {
     const dtm::test::ScratchDir dir;
     const auto points = write_diamond(dir);
     const auto r = dtm::test::run_dtm(
@@ -128,23 +124,27 @@ TEST(CliGrid, HillshadeSlopeAndAspectAreWrittenNextToTheDem)
     }
 }
 
-TEST(CliGrid, BadUsageExitsWithTwoAndWritesNothing)
-{
+TEST(CliGrid, BadUsageExitsWithTwoAndWritesNothing) {
     const dtm::test::ScratchDir dir;
     const auto points = write_diamond(dir);
     const auto out = (dir / "dem.tif").string();
-    EXPECT_EQ(dtm::test::run_dtm({"grid", points.string(), "-o", out, "-q"}).exit_code, 2);  // no --cell
-    EXPECT_EQ(dtm::test::run_dtm({"grid", points.string(), "-o", out, "--cell", "-1", "-q"}).exit_code, 2);
-    EXPECT_EQ(dtm::test::run_dtm({"grid", points.string(), "-o", out, "--cell", "1", "--extent", "1,2,3", "-q"})
+    EXPECT_EQ(dtm::test::run_dtm({"grid", points.string(), "-o", out, "-q"}).exit_code,
+              2);  // no --cell
+    EXPECT_EQ(
+        dtm::test::run_dtm({"grid", points.string(), "-o", out, "--cell", "-1", "-q"}).exit_code,
+        2);
+    EXPECT_EQ(dtm::test::run_dtm(
+                  {"grid", points.string(), "-o", out, "--cell", "1", "--extent", "1,2,3", "-q"})
                   .exit_code,
               2);
     EXPECT_EQ(dtm::test::run_dtm({"grid", points.string(), "-o", (dir / "dem.nosuch").string(),
                                   "--cell", "1", "-q"})
                   .exit_code,
               2);
-    EXPECT_EQ(dtm::test::run_dtm({"grid", (dir / "missing.csv").string(), "-o", out, "--cell", "1", "-q"})
-                  .exit_code,
-              2);
+    EXPECT_EQ(
+        dtm::test::run_dtm({"grid", (dir / "missing.csv").string(), "-o", out, "--cell", "1", "-q"})
+            .exit_code,
+        2);
     EXPECT_FALSE(std::filesystem::exists(out));
 }
 

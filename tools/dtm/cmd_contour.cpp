@@ -5,6 +5,7 @@
 #include <iostream>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "command.hpp"
@@ -28,15 +29,15 @@ struct ContourArgs {
     bool quiet = false;
 };
 
-int run_contour(ContourArgs args)
-{
+int run_contour(ContourArgs args) {
     if (args.contour.fixed_levels.empty() && !(args.contour.interval > 0.0)) {
         throw UsageError("contour: give --interval or --levels");
     }
     const Progress progress = terminal_progress("contour", args.quiet);
     io::LoadedInputs inputs = io::load_inputs(to_load_options(args.input), progress.sub(0.0, 0.2));
-    const Tin tin = inputs.tin ? std::move(*inputs.tin)
-                               : triangulate(inputs.terrain, args.tin, progress.sub(0.2, 0.6)).tin;
+    const Tin tin =
+        inputs.tin ? std::move(*inputs.tin)
+                   : triangulate(std::move(inputs.terrain), args.tin, progress.sub(0.2, 0.6)).tin;
     args.contour.threads = args.tin.threads;
     io::ContourWriter writer(args.output, {.crs_wkt = inputs.crs_wkt});
     contour(tin, args.contour, writer, progress.sub(0.6, 1.0));
@@ -47,9 +48,9 @@ int run_contour(ContourArgs args)
 
 }  // namespace
 
-Command contour_command()
-{
-    return {"contour", "Contour lines traced exactly on the TIN (GeoPackage, shapefile, DXF, GeoJSON)",
+Command contour_command() {
+    return {"contour",
+            "Contour lines traced exactly on the TIN (GeoPackage, shapefile, DXF, GeoJSON)",
             [](CLI::App& app) {
                 auto args = std::make_shared<ContourArgs>();
                 args->contour.interval = 0.0;
@@ -58,8 +59,7 @@ Command contour_command()
                 app.add_option("-o,--output", args->output,
                                "Contour file: .gpkg (default format), .shp, .dxf, .geojson")
                     ->required();
-                app.add_option("--interval", args->contour.interval,
-                               "Distance between levels")
+                app.add_option("--interval", args->contour.interval, "Distance between levels")
                     ->check(CLI::PositiveNumber);
                 app.add_option("--base", args->contour.base,
                                "Levels are base + k * interval (default 0)");

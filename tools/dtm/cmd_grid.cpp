@@ -6,6 +6,7 @@
 #include <memory>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "command.hpp"
@@ -34,8 +35,7 @@ struct GridArgs {
 };
 
 /// "xmin,ymin,xmax,ymax" -> Box2. @throws UsageError
-Box2 parse_extent(const std::string& text)
-{
+Box2 parse_extent(const std::string& text) {
     std::vector<double> v;
     std::stringstream in(text);
     std::string item;
@@ -61,9 +61,9 @@ Box2 parse_extent(const std::string& text)
 class CountingSink final : public GridSink {
 public:
     CountingSink(GridSink& next, float nodata) : next_(next), nodata_(nodata) {}
-    void write_rows(std::size_t first_row, std::size_t row_count,
-                    std::span<const float> values) override
-    {
+    void write_rows(std::size_t first_row,
+                    std::size_t row_count,
+                    std::span<const float> values) override {
         for (const float v : values) {
             filled += v != nodata_ ? 1 : 0;
         }
@@ -76,12 +76,12 @@ private:
     float nodata_;
 };
 
-int run_grid(const GridArgs& args)
-{
+int run_grid(const GridArgs& args) {
     const Progress progress = terminal_progress("grid", args.quiet);
     io::LoadedInputs inputs = io::load_inputs(to_load_options(args.input), progress.sub(0.0, 0.2));
-    const Tin tin = inputs.tin ? std::move(*inputs.tin)
-                               : triangulate(inputs.terrain, args.tin, progress.sub(0.2, 0.5)).tin;
+    const Tin tin =
+        inputs.tin ? std::move(*inputs.tin)
+                   : triangulate(std::move(inputs.terrain), args.tin, progress.sub(0.2, 0.5)).tin;
     if (tin.triangles.empty()) {
         throw InputError("grid: the inputs give no triangle to rasterise");
     }
@@ -105,16 +105,15 @@ int run_grid(const GridArgs& args)
     }
     progress.report(1.0, "done");
     std::cout << "grid: " << spec.cols << " x " << spec.rows << " cells of " << spec.cell
-              << " (cell centres), extent " << spec.xmin << "," << spec.ymin() << ","
-              << spec.xmax() << "," << spec.ymax << ", " << counter.filled << " with data -> "
-              << args.output << '\n';
+              << " (cell centres), extent " << spec.xmin << "," << spec.ymin() << "," << spec.xmax()
+              << "," << spec.ymax << ", " << counter.filled << " with data -> " << args.output
+              << '\n';
     return 0;
 }
 
 }  // namespace
 
-Command grid_command()
-{
+Command grid_command() {
     return {"grid", "DEM raster of the TIN sampled at cell centres (GeoTIFF or any GDAL format)",
             [](CLI::App& app) {
                 auto args = std::make_shared<GridArgs>();

@@ -25,8 +25,8 @@
 
 #include <algorithm>
 #include <array>
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <string>
 
@@ -37,8 +37,7 @@
 namespace dtm {
 namespace {
 
-bool is_index(long long number, std::size_t every)
-{
+bool is_index(long long number, std::size_t every) {
     if (every == 0) {
         return false;
     }
@@ -46,8 +45,7 @@ bool is_index(long long number, std::size_t every)
     return ((number % k) + k) % k == 0;
 }
 
-std::vector<ContourLevel> fixed_levels(double zmin, double zmax, const ContourOptions& options)
-{
+std::vector<ContourLevel> fixed_levels(double zmin, double zmax, const ContourOptions& options) {
     std::vector<double> values = options.fixed_levels;
     std::sort(values.begin(), values.end());
     values.erase(std::unique(values.begin(), values.end()), values.end());
@@ -70,21 +68,20 @@ struct LevelBuckets {
     std::vector<TriangleIndex> triangles;
 };
 
-LevelBuckets bucket_levels(const Tin& tin, const std::vector<double>& values)
-{
+LevelBuckets bucket_levels(const Tin& tin, const std::vector<double>& values) {
     // Per vertex, the number of levels at or below its height (levels strictly above it start
     // there); a triangle is crossed by the levels [min, max) of its three vertex numbers, since
     // upper_bound is monotone. Both passes run in parallel; then a counting sort per level.
     std::vector<std::uint32_t> vertex_level(tin.vertices.size());
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tin.vertices.size(), 1 << 14),
-                      [&](const tbb::blocked_range<std::size_t>& r) {
-                          for (std::size_t v = r.begin(); v != r.end(); ++v) {
-                              vertex_level[v] = static_cast<std::uint32_t>(
-                                  std::upper_bound(values.begin(), values.end(),
-                                                   tin.vertices[v].z) -
-                                  values.begin());
-                          }
-                      });
+    tbb::parallel_for(
+        tbb::blocked_range<std::size_t>(0, tin.vertices.size(), 1 << 14),
+        [&](const tbb::blocked_range<std::size_t>& r) {
+            for (std::size_t v = r.begin(); v != r.end(); ++v) {
+                vertex_level[v] = static_cast<std::uint32_t>(
+                    std::upper_bound(values.begin(), values.end(), tin.vertices[v].z) -
+                    values.begin());
+            }
+        });
     std::vector<std::array<std::uint32_t, 2>> ranges(tin.triangles.size());
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tin.triangles.size(), 1 << 14),
                       [&](const tbb::blocked_range<std::size_t>& r) {
@@ -116,8 +113,7 @@ LevelBuckets bucket_levels(const Tin& tin, const std::vector<double>& values)
 }
 
 /// Drops consecutive equal points; returns false when fewer than two distinct points remain.
-bool clean_line(std::vector<Point3>& line, bool& closed)
-{
+bool clean_line(std::vector<Point3>& line, bool& closed) {
     line.erase(std::unique(line.begin(), line.end()), line.end());
     if (closed && line.size() < 4) {
         if (line.size() == 3) {  // P, Q, P: a doubled piece, keep it once as an open line
@@ -131,15 +127,15 @@ bool clean_line(std::vector<Point3>& line, bool& closed)
 }
 
 /// Splits a raw chain at its skipped steps into output pieces (as sub-chains).
-std::vector<detail::RawChain> split_chain(const detail::RawChain& chain)
-{
+std::vector<detail::RawChain> split_chain(const detail::RawChain& chain) {
     const std::size_t steps = chain.triangles.size();
     const auto skipped = std::find(chain.skip.begin(), chain.skip.end(), std::uint8_t{1});
     if (skipped == chain.skip.end()) {
         return {chain};
     }
     // Start right after a skipped step: a closed chain becomes open there.
-    const auto begin = chain.closed ? static_cast<std::size_t>(skipped - chain.skip.begin()) + 1 : 0;
+    const auto begin =
+        chain.closed ? static_cast<std::size_t>(skipped - chain.skip.begin()) + 1 : 0;
     std::vector<detail::RawChain> pieces;
     detail::RawChain piece;
     for (std::size_t n = 0; n < steps; ++n) {
@@ -169,9 +165,9 @@ std::vector<detail::RawChain> split_chain(const detail::RawChain& chain)
 using LevelOutput = std::pair<std::size_t, std::vector<Contour>>;
 
 /// Smoothing bounds: the midpoints to the neighbouring levels (infinite at the ends).
-std::pair<double, double> level_band(const std::vector<double>& values, std::size_t k,
-                                     const ContourOptions& options)
-{
+std::pair<double, double> level_band(const std::vector<double>& values,
+                                     std::size_t k,
+                                     const ContourOptions& options) {
     const double inf = std::numeric_limits<double>::infinity();
     double below = k > 0 ? 0.5 * (values[k - 1] + values[k]) : -inf;
     double above = k + 1 < values.size() ? 0.5 * (values[k] + values[k + 1]) : inf;
@@ -182,11 +178,12 @@ std::pair<double, double> level_band(const std::vector<double>& values, std::siz
     return {below, above};
 }
 
-std::vector<Contour> trace_one_level(const Tin& tin, const ContourLevel& level,
+std::vector<Contour> trace_one_level(const Tin& tin,
+                                     const ContourLevel& level,
                                      std::span<const TriangleIndex> crossing,
-                                     std::pair<double, double> band, unsigned smooth,
-                                     std::vector<std::uint8_t>& visited)
-{
+                                     std::pair<double, double> band,
+                                     unsigned smooth,
+                                     std::vector<std::uint8_t>& visited) {
     std::vector<detail::RawChain> chains;
     detail::trace_level(tin, level.value, crossing, visited, chains);
     std::vector<Contour> out;
@@ -203,10 +200,12 @@ std::vector<Contour> trace_one_level(const Tin& tin, const ContourLevel& level,
     return out;
 }
 
-void run_levels(const Tin& tin, const std::vector<ContourLevel>& levels,
-                const LevelBuckets& buckets, const ContourOptions& options, ContourSink& sink,
-                const Progress& progress)
-{
+void run_levels(const Tin& tin,
+                const std::vector<ContourLevel>& levels,
+                const LevelBuckets& buckets,
+                const ContourOptions& options,
+                ContourSink& sink,
+                const Progress& progress) {
     std::vector<double> values;
     for (const ContourLevel& l : levels) {
         values.push_back(l.value);
@@ -222,8 +221,8 @@ void run_levels(const Tin& tin, const std::vector<ContourLevel>& levels,
     };
     auto compute = [&](std::size_t k) -> LevelOutput {
         progress.check();
-        const std::span<const TriangleIndex> crossing(
-            buckets.triangles.data() + buckets.offsets[k], buckets.offsets[k + 1] - buckets.offsets[k]);
+        const std::span<const TriangleIndex> crossing(buckets.triangles.data() + buckets.offsets[k],
+                                                      buckets.offsets[k + 1] - buckets.offsets[k]);
         return {k, trace_one_level(tin, levels[k], crossing, level_band(values, k, options),
                                    options.smooth, visited.local())};
     };
@@ -245,8 +244,7 @@ void run_levels(const Tin& tin, const std::vector<ContourLevel>& levels,
 class ContourCollector final : public ContourSink {
 public:
     explicit ContourCollector(std::vector<Contour>& out) : out_(out) {}
-    void add(const ContourLevel& level, std::span<const Point3> line, bool closed) override
-    {
+    void add(const ContourLevel& level, std::span<const Point3> line, bool closed) override {
         out_.push_back({level, std::vector<Point3>(line.begin(), line.end()), closed});
     }
 
@@ -256,8 +254,7 @@ private:
 
 }  // namespace
 
-std::vector<ContourLevel> contour_levels(double zmin, double zmax, const ContourOptions& options)
-{
+std::vector<ContourLevel> contour_levels(double zmin, double zmax, const ContourOptions& options) {
     if (!options.fixed_levels.empty()) {
         return fixed_levels(zmin, zmax, options);
     }
@@ -289,9 +286,10 @@ std::vector<ContourLevel> contour_levels(double zmin, double zmax, const Contour
     return levels;
 }
 
-void contour(const Tin& tin, const ContourOptions& options, ContourSink& sink,
-             const Progress& progress)
-{
+void contour(const Tin& tin,
+             const ContourOptions& options,
+             ContourSink& sink,
+             const Progress& progress) {
     double zmin = std::numeric_limits<double>::infinity();
     double zmax = -zmin;
     for (const Triangle& t : tin.triangles) {
@@ -318,9 +316,9 @@ void contour(const Tin& tin, const ContourOptions& options, ContourSink& sink,
     }
 }
 
-std::vector<Contour> contour(const Tin& tin, const ContourOptions& options,
-                             const Progress& progress)
-{
+std::vector<Contour> contour(const Tin& tin,
+                             const ContourOptions& options,
+                             const Progress& progress) {
     std::vector<Contour> out;
     ContourCollector collector(out);
     contour(tin, options, collector, progress);

@@ -31,9 +31,12 @@ namespace dtm::detail {
 namespace {
 
 /// Whether the corner at points[i] may be cut (see the file comment).
-bool corner_is_free(const Tin& tin, const RawChain& piece, std::size_t prev, std::size_t i,
-                    std::size_t next, std::pair<double, double> band)
-{
+bool corner_is_free(const Tin& tin,
+                    const RawChain& piece,
+                    std::size_t prev,
+                    std::size_t i,
+                    std::size_t next,
+                    std::pair<double, double> band) {
     const Point3& a = piece.points[prev];
     const Point3& p = piece.points[i];
     const Point3& b = piece.points[next];
@@ -65,8 +68,7 @@ bool corner_is_free(const Tin& tin, const RawChain& piece, std::size_t prev, std
 }
 
 /// Chaikin on an open run of points with fixed ends.
-std::vector<Point3> chaikin_open(std::vector<Point3> run, unsigned iterations)
-{
+std::vector<Point3> chaikin_open(std::vector<Point3> run, unsigned iterations) {
     for (unsigned it = 0; it < iterations && run.size() > 2; ++it) {
         std::vector<Point3> next;
         next.reserve(2 * run.size());
@@ -88,8 +90,7 @@ std::vector<Point3> chaikin_open(std::vector<Point3> run, unsigned iterations)
 }
 
 /// Chaikin on a closed ring (first point repeated last) with no pinned point.
-std::vector<Point3> chaikin_closed(std::vector<Point3> ring, unsigned iterations)
-{
+std::vector<Point3> chaikin_closed(std::vector<Point3> ring, unsigned iterations) {
     for (unsigned it = 0; it < iterations && ring.size() > 3; ++it) {
         std::vector<Point3> next;
         next.reserve(2 * ring.size());
@@ -107,9 +108,10 @@ std::vector<Point3> chaikin_closed(std::vector<Point3> ring, unsigned iterations
 
 }  // namespace
 
-std::vector<Point3> smooth_chain(const Tin& tin, const RawChain& piece,
-                                 std::pair<double, double> band, unsigned iterations)
-{
+std::vector<Point3> smooth_chain(const Tin& tin,
+                                 const RawChain& piece,
+                                 std::pair<double, double> band,
+                                 unsigned iterations) {
     const std::vector<Point3>& pts = piece.points;
     const std::size_t n = pts.size();
     if (n < 3 || iterations == 0) {

@@ -39,16 +39,14 @@ public:
     [[nodiscard]] bool above(VertexIndex v) const { return tin_.vertices[v].z >= level_; }
 
     /// Edge e of triangle t runs from v[e+1] to v[e+2] (counter-clockwise order).
-    [[nodiscard]] std::array<VertexIndex, 2> edge(TriangleIndex t, int e) const
-    {
+    [[nodiscard]] std::array<VertexIndex, 2> edge(TriangleIndex t, int e) const {
         const Triangle& tri = tin_.triangles[t];
         return {tri.v[static_cast<std::size_t>((e + 1) % 3)],
                 tri.v[static_cast<std::size_t>((e + 2) % 3)]};
     }
 
     /// The edge of @p t crossed from below to above (entry, @p up) or above to below (exit).
-    [[nodiscard]] int crossing_edge(TriangleIndex t, bool up) const
-    {
+    [[nodiscard]] int crossing_edge(TriangleIndex t, bool up) const {
         const auto& v = tin_.triangles[t].v;
         const bool is_above[3] = {above(v[0]), above(v[1]), above(v[2])};
         for (int e = 0; e < 3; ++e) {
@@ -60,8 +58,7 @@ public:
     }
 
     /// The crossing point on the edge (a, b) and the edge as (below, above).
-    [[nodiscard]] Point3 point(std::array<VertexIndex, 2>& ab) const
-    {
+    [[nodiscard]] Point3 point(std::array<VertexIndex, 2>& ab) const {
         if (above(ab[0])) {
             std::swap(ab[0], ab[1]);
         }
@@ -75,8 +72,7 @@ public:
     }
 
     /// True for the second copy of a piece along a TIN edge whose both sides are below.
-    [[nodiscard]] bool duplicate_step(TriangleIndex t) const
-    {
+    [[nodiscard]] bool duplicate_step(TriangleIndex t) const {
         const Triangle& tri = tin_.triangles[t];
         int below = -1;
         for (int i = 0; i < 3; ++i) {
@@ -103,8 +99,7 @@ public:
         return false;
     }
 
-    [[nodiscard]] TriangleIndex neighbour(TriangleIndex t, int e) const
-    {
+    [[nodiscard]] TriangleIndex neighbour(TriangleIndex t, int e) const {
         return tin_.triangles[t].n[static_cast<std::size_t>(e)];
     }
 
@@ -113,23 +108,22 @@ private:
     double level_;
 };
 
-void push_point(const LevelView& view, RawChain& chain, TriangleIndex t, int e)
-{
+void push_point(const LevelView& view, RawChain& chain, TriangleIndex t, int e) {
     std::array<VertexIndex, 2> ab = view.edge(t, e);
     chain.points.push_back(view.point(ab));
     chain.edges.push_back(ab);
 }
 
-void push_step(const LevelView& view, RawChain& chain, TriangleIndex t)
-{
+void push_step(const LevelView& view, RawChain& chain, TriangleIndex t) {
     chain.triangles.push_back(t);
     chain.skip.push_back(view.duplicate_step(t) ? 1 : 0);
 }
 
 /// Walks forwards (entry to exit) from @p start; returns true when it comes back to @p start.
-bool walk_forward(const LevelView& view, TriangleIndex start, RawChain& chain,
-                  std::vector<std::uint8_t>& visited)
-{
+bool walk_forward(const LevelView& view,
+                  TriangleIndex start,
+                  RawChain& chain,
+                  std::vector<std::uint8_t>& visited) {
     push_point(view, chain, start, view.crossing_edge(start, true));
     for (TriangleIndex cur = start;;) {
         visited[cur] = 1;
@@ -148,8 +142,9 @@ bool walk_forward(const LevelView& view, TriangleIndex start, RawChain& chain,
 
 /// One chain through @p start: forwards to the end (or around a ring), then, for an open chain,
 /// backwards from @p start to the border, prepended. Each triangle is visited once.
-RawChain trace_chain(const LevelView& view, TriangleIndex start, std::vector<std::uint8_t>& visited)
-{
+RawChain trace_chain(const LevelView& view,
+                     TriangleIndex start,
+                     std::vector<std::uint8_t>& visited) {
     RawChain chain;
     chain.closed = walk_forward(view, start, chain, visited);
     if (chain.closed) {
@@ -181,9 +176,11 @@ RawChain trace_chain(const LevelView& view, TriangleIndex start, std::vector<std
 
 }  // namespace
 
-void trace_level(const Tin& tin, double level, std::span<const TriangleIndex> crossing,
-                 std::vector<std::uint8_t>& visited, std::vector<RawChain>& chains)
-{
+void trace_level(const Tin& tin,
+                 double level,
+                 std::span<const TriangleIndex> crossing,
+                 std::vector<std::uint8_t>& visited,
+                 std::vector<RawChain>& chains) {
     const LevelView view(tin, level);
     for (const TriangleIndex t : crossing) {
         if (visited[t] == 0) {

@@ -27,6 +27,8 @@
 // References: J. Pineda, "A parallel algorithm for polygon rasterization", SIGGRAPH 1988 (edge
 // functions, top-left rule); J. R. Shewchuk, "Adaptive precision floating-point arithmetic and
 // fast robust geometric predicates", 1997 (orient2d).
+#include "dtm/algo/rasterize.hpp"
+
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_pipeline.h>
@@ -34,13 +36,12 @@
 
 #include <algorithm>
 #include <array>
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <string>
 #include <vector>
 
-#include "dtm/algo/rasterize.hpp"
 #include "dtm/core/error.hpp"
 #include "dtm/geom/predicates.hpp"
 
@@ -62,8 +63,7 @@ struct RowRange {
     std::ptrdiff_t last = -1;
 };
 
-RowRange rows_touching(const GridSpec& spec, double ylo, double yhi)
-{
+RowRange rows_touching(const GridSpec& spec, double ylo, double yhi) {
     const double lo = std::floor((spec.ymax - yhi) / spec.cell - 0.5);
     const double hi = std::ceil((spec.ymax - ylo) / spec.cell - 0.5);
     const double max_row = static_cast<double>(spec.rows) - 1.0;
@@ -76,16 +76,14 @@ RowRange rows_touching(const GridSpec& spec, double ylo, double yhi)
     return r;
 }
 
-RowRange triangle_rows(const Tin& tin, const Triangle& t, const GridSpec& spec)
-{
+RowRange triangle_rows(const Tin& tin, const Triangle& t, const GridSpec& spec) {
     const Point3& a = tin.vertices[t.v[0]];
     const Point3& b = tin.vertices[t.v[1]];
     const Point3& c = tin.vertices[t.v[2]];
     return rows_touching(spec, std::min({a.y, b.y, c.y}), std::max({a.y, b.y, c.y}));
 }
 
-Buckets make_buckets(const Tin& tin, const GridSpec& spec, std::size_t band_rows)
-{
+Buckets make_buckets(const Tin& tin, const GridSpec& spec, std::size_t band_rows) {
     Buckets buckets;
     buckets.band_rows = band_rows;
     buckets.band_count = (spec.rows + band_rows - 1) / band_rows;
@@ -128,8 +126,7 @@ Buckets make_buckets(const Tin& tin, const GridSpec& spec, std::size_t band_rows
 /// One triangle prepared for scan conversion.
 class ScanTriangle {
 public:
-    ScanTriangle(const Tin& tin, const Triangle& t) : tin_(tin), tri_(t)
-    {
+    ScanTriangle(const Tin& tin, const Triangle& t) : tin_(tin), tri_(t) {
         for (int i = 0; i < 3; ++i) {
             p_[i] = &tin.vertices[t.v[static_cast<std::size_t>(i)]];
         }
@@ -146,8 +143,7 @@ public:
 
     /// x-interval of the triangle on the line y (floating point, approximate); false if the line
     /// misses the triangle (this test is exact).
-    bool span(double y, double& xl, double& xr) const
-    {
+    bool span(double y, double& xl, double& xr) const {
         bool hit = false;
         xl = std::numeric_limits<double>::infinity();
         xr = -xl;
@@ -172,8 +168,7 @@ public:
 
     /// Exact: does the triangle own the point (inside, or on an edge it owns)? On success,
     /// @p z is the interpolated height.
-    bool sample(double x, double y, float& z) const
-    {
+    bool sample(double x, double y, float& z) const {
         int on_edge = -1;
         int zero_count = 0;
         for (int e = 0; e < 3; ++e) {
@@ -199,14 +194,12 @@ public:
     }
 
     /// Height at a point known to be inside (used for the filled interior of a span).
-    [[nodiscard]] double plane(double x, double y) const
-    {
+    [[nodiscard]] double plane(double x, double y) const {
         return p_[0]->z + dzdx_ * (x - p_[0]->x) + dzdy_ * (y - p_[0]->y);
     }
 
     /// Index of the horizontal edge lying on the line y, or -1.
-    [[nodiscard]] int horizontal_edge_at(double y) const
-    {
+    [[nodiscard]] int horizontal_edge_at(double y) const {
         for (int e = 0; e < 3; ++e) {
             if (p_[(e + 1) % 3]->y == y && p_[(e + 2) % 3]->y == y) {
                 return e;
@@ -216,8 +209,7 @@ public:
     }
 
     /// Linear interpolation along edge @p e (opposite vertex e), from its lower-numbered vertex.
-    [[nodiscard]] double along_edge(int e, double x, double y) const
-    {
+    [[nodiscard]] double along_edge(int e, double x, double y) const {
         VertexIndex i = tri_.v[static_cast<std::size_t>((e + 1) % 3)];
         VertexIndex j = tri_.v[static_cast<std::size_t>((e + 2) % 3)];
         if (j < i) {
@@ -232,8 +224,7 @@ public:
 
 private:
     /// Top-left rule; border edges own their points.
-    [[nodiscard]] bool edge_owns_ties(int e) const
-    {
+    [[nodiscard]] bool edge_owns_ties(int e) const {
         if (tri_.n[static_cast<std::size_t>(e)] == no_triangle) {
             return true;
         }
@@ -242,8 +233,7 @@ private:
         return b.y < a.y || (b.y == a.y && b.x < a.x);
     }
 
-    [[nodiscard]] double vertex_at(double x, double y) const
-    {
+    [[nodiscard]] double vertex_at(double x, double y) const {
         for (int i = 0; i < 3; ++i) {
             if (p_[i]->x == x && p_[i]->y == y) {
                 return p_[i]->z;
@@ -261,10 +251,13 @@ private:
 };
 
 /// Scan-converts one triangle over the rows [row0, row0 + row_count) into @p band.
-void scan_triangle(const Tin& tin, const Triangle& t, std::array<std::int32_t, 2> rows,
-                   const GridSpec& spec, std::size_t row0, std::size_t row_count,
-                   std::span<float> band)
-{
+void scan_triangle(const Tin& tin,
+                   const Triangle& t,
+                   std::array<std::int32_t, 2> rows,
+                   const GridSpec& spec,
+                   std::size_t row0,
+                   std::size_t row_count,
+                   std::span<float> band) {
     const auto first = std::max<std::ptrdiff_t>(rows[0], static_cast<std::ptrdiff_t>(row0));
     const auto last =
         std::min<std::ptrdiff_t>(rows[1], static_cast<std::ptrdiff_t>(row0 + row_count) - 1);
@@ -307,8 +300,7 @@ void scan_triangle(const Tin& tin, const Triangle& t, std::array<std::int32_t, 2
     }
 }
 
-std::size_t choose_band_rows(const GridSpec& spec, const RasterizeOptions& options)
-{
+std::size_t choose_band_rows(const GridSpec& spec, const RasterizeOptions& options) {
     if (options.band_rows > 0) {
         return options.band_rows;
     }
@@ -322,9 +314,12 @@ struct Band {
     std::vector<float> values;
 };
 
-void run_pipeline(const Tin& tin, const GridSpec& spec, const RasterizeOptions& options,
-                  const Buckets& buckets, GridSink& sink, const Progress& progress)
-{
+void run_pipeline(const Tin& tin,
+                  const GridSpec& spec,
+                  const RasterizeOptions& options,
+                  const Buckets& buckets,
+                  GridSink& sink,
+                  const Progress& progress) {
     std::size_t next = 0;
     const auto tokens = static_cast<std::size_t>(2 * tbb::this_task_arena::max_concurrency());
     auto source = [&](tbb::flow_control& fc) -> std::size_t {
@@ -349,23 +344,21 @@ void run_pipeline(const Tin& tin, const GridSpec& spec, const RasterizeOptions& 
     auto emit = [&](Band band) {
         const std::size_t row0 = band.index * buckets.band_rows;
         sink.write_rows(row0, band.values.size() / spec.cols, band.values);
-        progress.report(static_cast<double>(band.index + 1) /
-                            static_cast<double>(buckets.band_count),
-                        "rasterize");
+        progress.report(
+            static_cast<double>(band.index + 1) / static_cast<double>(buckets.band_count),
+            "rasterize");
     };
     tbb::parallel_pipeline(
-        tokens,
-        tbb::make_filter<void, std::size_t>(tbb::filter_mode::serial_in_order, source) &
-            tbb::make_filter<std::size_t, Band>(tbb::filter_mode::parallel, compute) &
-            tbb::make_filter<Band, void>(tbb::filter_mode::serial_in_order, emit));
+        tokens, tbb::make_filter<void, std::size_t>(tbb::filter_mode::serial_in_order, source) &
+                    tbb::make_filter<std::size_t, Band>(tbb::filter_mode::parallel, compute) &
+                    tbb::make_filter<Band, void>(tbb::filter_mode::serial_in_order, emit));
 }
 
 /// Collects the streamed bands into a Grid.
 class GridCollector final : public GridSink {
 public:
     explicit GridCollector(Grid& grid) : grid_(grid) {}
-    void write_rows(std::size_t first_row, std::size_t, std::span<const float> values) override
-    {
+    void write_rows(std::size_t first_row, std::size_t, std::span<const float> values) override {
         std::copy(values.begin(), values.end(),
                   grid_.values.begin() + static_cast<std::ptrdiff_t>(first_row * grid_.spec.cols));
     }
@@ -376,9 +369,11 @@ private:
 
 }  // namespace
 
-void rasterize(const Tin& tin, const GridSpec& spec, const RasterizeOptions& options,
-               GridSink& sink, const Progress& progress)
-{
+void rasterize(const Tin& tin,
+               const GridSpec& spec,
+               const RasterizeOptions& options,
+               GridSink& sink,
+               const Progress& progress) {
     if (spec.rows == 0 || spec.cols == 0) {
         return;
     }
@@ -397,17 +392,17 @@ void rasterize(const Tin& tin, const GridSpec& spec, const RasterizeOptions& opt
     }
 }
 
-Grid rasterize(const Tin& tin, const GridSpec& spec, const RasterizeOptions& options,
-               const Progress& progress)
-{
+Grid rasterize(const Tin& tin,
+               const GridSpec& spec,
+               const RasterizeOptions& options,
+               const Progress& progress) {
     Grid grid{spec, options.nodata, std::vector<float>(spec.cell_count(), options.nodata)};
     GridCollector collector(grid);
     rasterize(tin, spec, options, collector, progress);
     return grid;
 }
 
-Box2 tin_bounds(const Tin& tin)
-{
+Box2 tin_bounds(const Tin& tin) {
     Box2 box;
     for (const Triangle& t : tin.triangles) {
         for (const VertexIndex v : t.v) {
@@ -417,21 +412,21 @@ Box2 tin_bounds(const Tin& tin)
     return box;
 }
 
-GridSpec snapped_grid_spec(const Box2& box, double cell)
-{
+GridSpec snapped_grid_spec(const Box2& box, double cell) {
     GridSpec spec;
     spec.cell = cell;
     spec.xmin = std::floor(box.xmin / cell) * cell;
     spec.ymax = std::ceil(box.ymax / cell) * cell;
     const double xmax = std::ceil(box.xmax / cell) * cell;
     const double ymin = std::floor(box.ymin / cell) * cell;
-    spec.cols = std::max<std::size_t>(1, static_cast<std::size_t>(std::llround((xmax - spec.xmin) / cell)));
-    spec.rows = std::max<std::size_t>(1, static_cast<std::size_t>(std::llround((spec.ymax - ymin) / cell)));
+    spec.cols =
+        std::max<std::size_t>(1, static_cast<std::size_t>(std::llround((xmax - spec.xmin) / cell)));
+    spec.rows =
+        std::max<std::size_t>(1, static_cast<std::size_t>(std::llround((spec.ymax - ymin) / cell)));
     return spec;
 }
 
-GridSpec extent_grid_spec(const Box2& extent, double cell)
-{
+GridSpec extent_grid_spec(const Box2& extent, double cell) {
     GridSpec spec;
     spec.cell = cell;
     spec.xmin = extent.xmin;
@@ -439,9 +434,8 @@ GridSpec extent_grid_spec(const Box2& extent, double cell)
     const auto whole = [cell](double length) {
         const double n = length / cell;
         const double r = std::round(n);
-        return static_cast<std::size_t>(std::max(1.0, std::abs(n - r) < 1e-9 * std::max(1.0, n)
-                                                          ? r
-                                                          : std::ceil(n)));
+        return static_cast<std::size_t>(
+            std::max(1.0, std::abs(n - r) < 1e-9 * std::max(1.0, n) ? r : std::ceil(n)));
     };
     spec.cols = whole(extent.xmax - extent.xmin);
     spec.rows = whole(extent.ymax - extent.ymin);

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Contours: every vertex on its level and on a TIN edge, per-level length equal to an
 // independent per-triangle sum, rings closed, no crossings, vertices exactly on levels handled.
+#include "dtm/algo/contour.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,7 +10,6 @@
 #include <random>
 #include <set>
 
-#include "dtm/algo/contour.hpp"
 #include "dtm/core/error.hpp"
 #include "dtm/geom/predicates.hpp"
 
@@ -19,8 +20,7 @@ using dtm::Point3;
 using dtm::Tin;
 using dtm::Triangle;
 
-void link_neighbours(Tin& tin)
-{
+void link_neighbours(Tin& tin) {
     std::map<std::pair<std::uint32_t, std::uint32_t>, std::pair<std::uint32_t, int>> edges;
     for (std::uint32_t t = 0; t < tin.triangles.size(); ++t) {
         Triangle& tri = tin.triangles[t];
@@ -41,8 +41,7 @@ void link_neighbours(Tin& tin)
 
 /// n x n jittered grid, spacing 1, z from @p height; cells whose centre is in @p hole are left out.
 template <class F>
-Tin grid_tin(int n, double jitter, std::uint32_t seed, F height, std::array<double, 4> hole = {})
-{
+Tin grid_tin(int n, double jitter, std::uint32_t seed, F height, std::array<double, 4> hole = {}) {
     std::mt19937 rng(seed);
     std::uniform_real_distribution<double> u(-jitter, jitter);
     Tin tin;
@@ -69,31 +68,32 @@ Tin grid_tin(int n, double jitter, std::uint32_t seed, F height, std::array<doub
         }
     }
     for (const Triangle& t : tin.triangles) {  // the fixture must be a valid TIN
-        const Point3 &a = tin.vertices[t.v[0]], &b = tin.vertices[t.v[1]], &c = tin.vertices[t.v[2]];
+        const Point3 &a = tin.vertices[t.v[0]], &b = tin.vertices[t.v[1]],
+                     &c = tin.vertices[t.v[2]];
         EXPECT_GT(dtm::geom::orient2d(a, b, c), 0) << "fixture triangle is not counter-clockwise";
     }
     link_neighbours(tin);
     return tin;
 }
 
-Tin random_tin(std::uint32_t seed)
-{
-    return grid_tin(16, 0.2, seed, [](double x, double y, std::mt19937& rng) {
-        std::uniform_real_distribution<double> noise(-0.4, 0.4);
-        return 100.0 + 3.0 * std::sin(x / 2.5) + 2.0 * std::cos(y / 3.0) + noise(rng);
-    }, {5, 6, 9, 10});
+Tin random_tin(std::uint32_t seed) {
+    return grid_tin(16, 0.2, seed,
+                    [](double x, double y, std::mt19937& rng) {
+                        std::uniform_real_distribution<double> noise(-0.4, 0.4);
+                        return 100.0 + 3.0 * std::sin(x / 2.5) + 2.0 * std::cos(y / 3.0) +
+                               noise(rng);
+                    },
+                    {5, 6, 9, 10});
 }
 
 /// Heights on a 0.5 m lattice: many vertices lie exactly on the levels.
-Tin integer_tin(std::uint32_t seed)
-{
+Tin integer_tin(std::uint32_t seed) {
     return grid_tin(14, 0.0, seed, [](double, double, std::mt19937& rng) {
         return std::floor(std::uniform_real_distribution<double>(0.0, 8.0)(rng)) * 0.5;
     });
 }
 
-double length(std::span<const Point3> line)
-{
+double length(std::span<const Point3> line) {
     double sum = 0.0;
     for (std::size_t i = 1; i < line.size(); ++i) {
         sum += std::hypot(line[i].x - line[i - 1].x, line[i].y - line[i - 1].y);
@@ -101,8 +101,7 @@ double length(std::span<const Point3> line)
     return sum;
 }
 
-std::map<double, double> length_per_level(const std::vector<Contour>& contours)
-{
+std::map<double, double> length_per_level(const std::vector<Contour>& contours) {
     std::map<double, double> out;
     for (const Contour& c : contours) {
         out[c.level.value] += length(c.line);
@@ -113,8 +112,7 @@ std::map<double, double> length_per_level(const std::vector<Contour>& contours)
 /// Independent per-triangle sum: the level set of the linear surface on each triangle. A piece
 /// lying along an edge (two vertices on the level) is counted once per edge, and only when a
 /// triangle beside it goes below the level (a vertex on a level counts as slightly above it).
-double independent_length(const Tin& tin, double level)
-{
+double independent_length(const Tin& tin, double level) {
     double sum = 0.0;
     std::set<std::pair<std::uint32_t, std::uint32_t>> along;
     for (const Triangle& t : tin.triangles) {
@@ -146,8 +144,7 @@ double independent_length(const Tin& tin, double level)
     return sum;
 }
 
-void expect_vertices_on_levels_and_edges(const Tin& tin, const std::vector<Contour>& contours)
-{
+void expect_vertices_on_levels_and_edges(const Tin& tin, const std::vector<Contour>& contours) {
     for (const Contour& c : contours) {
         for (const Point3& p : c.line) {
             ASSERT_EQ(p.z, c.level.value);
@@ -172,8 +169,7 @@ void expect_vertices_on_levels_and_edges(const Tin& tin, const std::vector<Conto
     }
 }
 
-bool segments_meet(const Point3& p1, const Point3& p2, const Point3& q1, const Point3& q2)
-{
+bool segments_meet(const Point3& p1, const Point3& p2, const Point3& q1, const Point3& q2) {
     using dtm::geom::orient2d;
     const int a = orient2d(p1, p2, q1), b = orient2d(p1, p2, q2);
     const int c = orient2d(q1, q2, p1), d = orient2d(q1, q2, p2);
@@ -188,8 +184,7 @@ bool segments_meet(const Point3& p1, const Point3& p2, const Point3& q1, const P
 
 /// Counts pairs of segments of different contour lines that meet (lines of the same level may
 /// touch at a shared point), and non-adjacent segments of one line that meet.
-std::size_t crossing_count(const std::vector<Contour>& contours)
-{
+std::size_t crossing_count(const std::vector<Contour>& contours) {
     std::size_t count = 0;
     for (std::size_t i = 0; i < contours.size(); ++i) {
         for (std::size_t j = i; j < contours.size(); ++j) {
@@ -205,8 +200,8 @@ std::size_t crossing_count(const std::vector<Contour>& contours)
                     }
                     // Lines of one level may touch where they share a point (a TIN vertex
                     // exactly on the level, e.g. a saddle); anything else is a crossing.
-                    const bool shared_end = a[s] == b[t] || a[s] == b[t + 1] ||
-                                            a[s + 1] == b[t] || a[s + 1] == b[t + 1];
+                    const bool shared_end = a[s] == b[t] || a[s] == b[t + 1] || a[s + 1] == b[t] ||
+                                            a[s + 1] == b[t + 1];
                     const bool same_level = contours[i].level.value == contours[j].level.value;
                     count += (same_level && shared_end) ? 0 : 1;
                 }
@@ -216,9 +211,9 @@ std::size_t crossing_count(const std::vector<Contour>& contours)
     return count;
 }
 
-TEST(ContourLevels, AreBasePlusMultiplesOfTheIntervalStrictlyAboveZmin)
-{
-    const auto levels = dtm::contour_levels(10.0, 13.0, {.interval = 1.0, .base = 0.5, .index_every = 2});
+TEST(ContourLevels, AreBasePlusMultiplesOfTheIntervalStrictlyAboveZmin) {
+    const auto levels =
+        dtm::contour_levels(10.0, 13.0, {.interval = 1.0, .base = 0.5, .index_every = 2});
     ASSERT_EQ(levels.size(), 3U);
     EXPECT_EQ(levels[0].value, 10.5);
     EXPECT_EQ(levels[2].value, 12.5);
@@ -235,8 +230,7 @@ TEST(ContourLevels, AreBasePlusMultiplesOfTheIntervalStrictlyAboveZmin)
     EXPECT_FALSE(negative[1].index);
 }
 
-TEST(ContourLevels, FixedLevelsOverrideTheIntervalAndAbsurdCountsAreRejected)
-{
+TEST(ContourLevels, FixedLevelsOverrideTheIntervalAndAbsurdCountsAreRejected) {
     const auto levels = dtm::contour_levels(0.0, 10.0, {.fixed_levels = {7.0, 2.0, 20.0, 2.0}});
     ASSERT_EQ(levels.size(), 2U);
     EXPECT_EQ(levels[0].value, 2.0);
@@ -245,16 +239,14 @@ TEST(ContourLevels, FixedLevelsOverrideTheIntervalAndAbsurdCountsAreRejected)
     EXPECT_THROW((void)dtm::contour_levels(0.0, 1.0, {.interval = 0.0}), dtm::UsageError);
 }
 
-TEST(Contour, EveryVertexIsOnItsLevelAndOnATinEdge)
-{
+TEST(Contour, EveryVertexIsOnItsLevelAndOnATinEdge) {
     const Tin tin = random_tin(11);
     const auto contours = dtm::contour(tin, {.interval = 0.5});
     ASSERT_GT(contours.size(), 10U);
     expect_vertices_on_levels_and_edges(tin, contours);
 }
 
-TEST(Contour, LengthPerLevelEqualsAnIndependentPerTriangleSum)
-{
+TEST(Contour, LengthPerLevelEqualsAnIndependentPerTriangleSum) {
     for (const Tin& tin : {random_tin(3), integer_tin(5)}) {
         const auto contours = dtm::contour(tin, {.interval = 0.5});
         const auto lengths = length_per_level(contours);
@@ -266,8 +258,7 @@ TEST(Contour, LengthPerLevelEqualsAnIndependentPerTriangleSum)
     }
 }
 
-TEST(Contour, VerticesExactlyOnLevelsGiveNoZeroLengthPartsNoDoubledPiecesAndNoGaps)
-{
+TEST(Contour, VerticesExactlyOnLevelsGiveNoZeroLengthPartsNoDoubledPiecesAndNoGaps) {
     const Tin tin = integer_tin(9);
     const auto contours = dtm::contour(tin, {.interval = 0.5});
     expect_vertices_on_levels_and_edges(tin, contours);
@@ -276,16 +267,17 @@ TEST(Contour, VerticesExactlyOnLevelsGiveNoZeroLengthPartsNoDoubledPiecesAndNoGa
         for (std::size_t i = 1; i < c.line.size(); ++i) {
             const Point3 &a = c.line[i - 1], &b = c.line[i];
             ASSERT_FALSE(a.x == b.x && a.y == b.y) << "zero-length part at level " << c.level.value;
-            const auto key = std::min(std::tuple(a.x, a.y, b.x, b.y, a.z), std::tuple(b.x, b.y, a.x, a.y, a.z));
+            const auto key =
+                std::min(std::tuple(a.x, a.y, b.x, b.y, a.z), std::tuple(b.x, b.y, a.x, a.y, a.z));
             ASSERT_TRUE(pieces.insert(key).second) << "doubled piece at level " << c.level.value;
         }
     }
 }
 
-TEST(Contour, RidgeExactlyOnALevelGivesOneLineAlongIt)
-{
+TEST(Contour, RidgeExactlyOnALevelGivesOneLineAlongIt) {
     // Column x = 2 is a ridge at z = 10; everything else is lower.
-    Tin tin = grid_tin(5, 0.0, 1, [](double x, double, std::mt19937&) { return 10.0 - std::abs(x - 2.0); });
+    Tin tin = grid_tin(5, 0.0, 1,
+                       [](double x, double, std::mt19937&) { return 10.0 - std::abs(x - 2.0); });
     const auto contours = dtm::contour(tin, {.fixed_levels = {10.0}});
     ASSERT_EQ(contours.size(), 1U);
     EXPECT_FALSE(contours[0].closed);
@@ -295,8 +287,7 @@ TEST(Contour, RidgeExactlyOnALevelGivesOneLineAlongIt)
     }
 }
 
-TEST(Contour, HillGivesClosedClockwiseRingsWithHigherGroundOnTheRight)
-{
+TEST(Contour, HillGivesClosedClockwiseRingsWithHigherGroundOnTheRight) {
     const Tin tin = grid_tin(15, 0.3, 2, [](double x, double y, std::mt19937&) {
         return 50.0 - std::hypot(x - 7.1, y - 6.9);
     });
@@ -317,8 +308,7 @@ TEST(Contour, HillGivesClosedClockwiseRingsWithHigherGroundOnTheRight)
     EXPECT_GE(rings, 5U);
 }
 
-TEST(Contour, OpenLinesEndOnTheBorderOfTheTin)
-{
+TEST(Contour, OpenLinesEndOnTheBorderOfTheTin) {
     const Tin tin = random_tin(4);  // has a hole: lines end on the hull or on the hole's edges
     for (const Contour& c : dtm::contour(tin, {.interval = 0.25})) {
         if (c.closed) {
@@ -333,8 +323,7 @@ TEST(Contour, OpenLinesEndOnTheBorderOfTheTin)
     }
 }
 
-TEST(Contour, LinesOfDifferentLevelsNeverIntersect)
-{
+TEST(Contour, LinesOfDifferentLevelsNeverIntersect) {
     for (std::uint32_t seed : {1U, 2U}) {
         const Tin tin = random_tin(seed);
         EXPECT_EQ(crossing_count(dtm::contour(tin, {.interval = 0.25})), 0U);
@@ -342,10 +331,10 @@ TEST(Contour, LinesOfDifferentLevelsNeverIntersect)
 }
 
 /// Height of the TIN surface at (x, y), or NaN outside.
-double surface(const Tin& tin, double x, double y)
-{
+double surface(const Tin& tin, double x, double y) {
     for (const Triangle& t : tin.triangles) {
-        const Point3 &a = tin.vertices[t.v[0]], &b = tin.vertices[t.v[1]], &c = tin.vertices[t.v[2]];
+        const Point3 &a = tin.vertices[t.v[0]], &b = tin.vertices[t.v[1]],
+                     &c = tin.vertices[t.v[2]];
         const double det = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
         const double wb = ((x - a.x) * (c.y - a.y) - (c.x - a.x) * (y - a.y)) / det;
         const double wc = ((b.x - a.x) * (y - a.y) - (x - a.x) * (b.y - a.y)) / det;
@@ -356,8 +345,7 @@ double surface(const Tin& tin, double x, double y)
     return std::nan("");
 }
 
-TEST(Contour, SmoothedLinesStayInTheirHeightBandAndNeverIntersect)
-{
+TEST(Contour, SmoothedLinesStayInTheirHeightBandAndNeverIntersect) {
     const Tin tin = random_tin(6);
     const auto raw = dtm::contour(tin, {.interval = 0.1});
     const auto smooth = dtm::contour(tin, {.interval = 0.1, .smooth = 3});
@@ -379,15 +367,13 @@ TEST(Contour, SmoothedLinesStayInTheirHeightBandAndNeverIntersect)
 
 class CollectingSink final : public dtm::ContourSink {
 public:
-    void add(const dtm::ContourLevel& level, std::span<const Point3> line, bool closed) override
-    {
+    void add(const dtm::ContourLevel& level, std::span<const Point3> line, bool closed) override {
         out.push_back({level, {line.begin(), line.end()}, closed});
     }
     std::vector<Contour> out;
 };
 
-TEST(Contour, OutputIsInLevelOrderAndIndependentOfTheThreadCount)
-{
+TEST(Contour, OutputIsInLevelOrderAndIndependentOfTheThreadCount) {
     const Tin tin = random_tin(8);
     CollectingSink one, all;
     dtm::contour(tin, {.interval = 0.25, .threads = 1}, one);
@@ -407,18 +393,19 @@ TEST(Contour, OutputIsInLevelOrderAndIndependentOfTheThreadCount)
 
 namespace {
 
-TEST(Contour, TriangulatedSurveyWithBreaklineAndHoleKeepsAllInvariants)
-{
+TEST(Contour, TriangulatedSurveyWithBreaklineAndHoleKeepsAllInvariants) {
     std::mt19937 rng(23);
     std::uniform_real_distribution<double> u(0.0, 40.0);
     dtm::TerrainInput input;
     for (int i = 0; i < 600; ++i) {
         const double x = u(rng), y = u(rng);
         // heights on a centimetre lattice: many vertices land exactly on 0.25 m levels
-        input.points.push_back({x, y, std::round(100.0 * (50.0 + 3.0 * std::sin(x / 6.0) + 0.1 * y)) / 100.0});
+        input.points.push_back(
+            {x, y, std::round(100.0 * (50.0 + 3.0 * std::sin(x / 6.0) + 0.1 * y)) / 100.0});
     }
     input.breaklines.push_back({{{5, 5, 52.0}, {35, 30, 51.5}}, false, "ridge"});
-    input.holes.push_back({{{15, 25, 0}, {25, 25, 0}, {25, 35, 0}, {15, 35, 0}, {15, 25, 0}}, true, "hole"});
+    input.holes.push_back(
+        {{{15, 25, 0}, {25, 25, 0}, {25, 35, 0}, {15, 35, 0}, {15, 25, 0}}, true, "hole"});
     const Tin tin = dtm::triangulate(input).tin;
     const auto contours = dtm::contour(tin, {.interval = 0.25});
     ASSERT_GT(contours.size(), 20U);

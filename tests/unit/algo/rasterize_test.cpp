@@ -1,13 +1,14 @@
 // SPDX-License-Identifier: MIT
 // Rasterisation: values equal a brute-force barycentric evaluation at cell centres, NoData
 // exactly outside the triangles, every centre owned by one triangle, streaming in row order.
+#include "dtm/algo/rasterize.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <map>
 #include <random>
 
-#include "dtm/algo/rasterize.hpp"
 #include "dtm/geom/predicates.hpp"
 
 namespace {
@@ -17,8 +18,7 @@ using dtm::Tin;
 using dtm::Triangle;
 
 /// Rebuilds the neighbour links of @p tin from its triangles.
-void link_neighbours(Tin& tin)
-{
+void link_neighbours(Tin& tin) {
     std::map<std::pair<std::uint32_t, std::uint32_t>, std::pair<std::uint32_t, int>> edges;
     for (std::uint32_t t = 0; t < tin.triangles.size(); ++t) {
         Triangle& tri = tin.triangles[t];
@@ -40,9 +40,13 @@ void link_neighbours(Tin& tin)
 /// A (jittered) regular grid of n x n vertices with spacing h, split into triangles with
 /// alternating diagonals; triangles whose centroid falls in @p hole (x0,y0,x1,y1 relative to the
 /// origin) are left out.
-Tin grid_tin(double ox, double oy, int n, double h, double jitter, std::uint32_t seed,
-             std::array<double, 4> hole = {0, 0, 0, 0})
-{
+Tin grid_tin(double ox,
+             double oy,
+             int n,
+             double h,
+             double jitter,
+             std::uint32_t seed,
+             std::array<double, 4> hole = {0, 0, 0, 0}) {
     std::mt19937 rng(seed);
     std::uniform_real_distribution<double> u(-jitter, jitter);
     Tin tin;
@@ -50,7 +54,8 @@ Tin grid_tin(double ox, double oy, int n, double h, double jitter, std::uint32_t
         for (int i = 0; i < n; ++i) {
             const double x = i * h + (i > 0 && i < n - 1 ? u(rng) : 0.0);
             const double y = j * h + (j > 0 && j < n - 1 ? u(rng) : 0.0);
-            tin.vertices.push_back({ox + x, oy + y, 200.0 + 10.0 * std::sin(x / 7.0) * std::cos(y / 5.0) + 0.1 * x});
+            tin.vertices.push_back(
+                {ox + x, oy + y, 200.0 + 10.0 * std::sin(x / 7.0) * std::cos(y / 5.0) + 0.1 * x});
         }
     }
     const auto id = [n](int i, int j) { return static_cast<std::uint32_t>(j * n + i); };
@@ -73,7 +78,8 @@ Tin grid_tin(double ox, double oy, int n, double h, double jitter, std::uint32_t
         }
     }
     for (const Triangle& t : tin.triangles) {  // the fixture must be a valid TIN
-        const Point3 &a = tin.vertices[t.v[0]], &b = tin.vertices[t.v[1]], &c = tin.vertices[t.v[2]];
+        const Point3 &a = tin.vertices[t.v[0]], &b = tin.vertices[t.v[1]],
+                     &c = tin.vertices[t.v[2]];
         EXPECT_GT(dtm::geom::orient2d(a, b, c), 0) << "fixture triangle is not counter-clockwise";
     }
     link_neighbours(tin);
@@ -82,8 +88,7 @@ Tin grid_tin(double ox, double oy, int n, double h, double jitter, std::uint32_t
 
 /// Brute force: the first triangle containing (x, y) (closed, exact test) and its barycentric
 /// interpolation in long double; nullopt outside every triangle.
-std::optional<double> brute_force(const Tin& tin, double x, double y)
-{
+std::optional<double> brute_force(const Tin& tin, double x, double y) {
     for (const Triangle& t : tin.triangles) {
         const Point3& a = tin.vertices[t.v[0]];
         const Point3& b = tin.vertices[t.v[1]];
@@ -102,8 +107,7 @@ std::optional<double> brute_force(const Tin& tin, double x, double y)
     return std::nullopt;
 }
 
-void expect_matches_brute_force(const Tin& tin, const dtm::Grid& grid)
-{
+void expect_matches_brute_force(const Tin& tin, const dtm::Grid& grid) {
     std::size_t inside = 0, outside = 0;
     for (std::size_t r = 0; r < grid.spec.rows; ++r) {
         for (std::size_t c = 0; c < grid.spec.cols; ++c) {
@@ -121,16 +125,14 @@ void expect_matches_brute_force(const Tin& tin, const dtm::Grid& grid)
     EXPECT_GT(outside, 0U);
 }
 
-TEST(Rasterize, ValuesEqualBruteForceBarycentricAndNoDataOutsideAtSjtskOffsets)
-{
+TEST(Rasterize, ValuesEqualBruteForceBarycentricAndNoDataOutsideAtSjtskOffsets) {
     const Tin tin = grid_tin(-750'123.25, -1'050'321.75, 14, 3.0, 0.9, 7, {10, 12, 22, 26});
     dtm::Box2 box{-750'126.0, -1'050'325.0, -750'080.0, -1'050'280.0};  // wider than the TIN
     const dtm::Grid grid = dtm::rasterize(tin, dtm::extent_grid_spec(box, 0.37), {.nodata = -1.0F});
     expect_matches_brute_force(tin, grid);
 }
 
-TEST(Rasterize, CentresOnVerticesAndEdgesGetExactValues)
-{
+TEST(Rasterize, CentresOnVerticesAndEdgesGetExactValues) {
     // Vertices sit exactly on cell centres: every centre is on a vertex or an edge of the TIN.
     const Tin tin = grid_tin(0.5, 0.5, 9, 2.0, 0.0, 1);
     const dtm::GridSpec spec{.xmin = 0.0, .ymax = 18.0, .cell = 1.0, .cols = 18, .rows = 18};
@@ -143,8 +145,7 @@ TEST(Rasterize, CentresOnVerticesAndEdgesGetExactValues)
     }
 }
 
-TEST(Rasterize, EveryInteriorCellCentreIsOwnedByExactlyOneTriangle)
-{
+TEST(Rasterize, EveryInteriorCellCentreIsOwnedByExactlyOneTriangle) {
     const Tin tin = grid_tin(0.5, 0.5, 9, 2.0, 0.0, 1, {5, 5, 9, 9});
     const dtm::GridSpec spec{.xmin = 0.0, .ymax = 18.0, .cell = 1.0, .cols = 18, .rows = 18};
     std::vector<int> owners(spec.cell_count(), 0);
@@ -176,8 +177,7 @@ TEST(Rasterize, EveryInteriorCellCentreIsOwnedByExactlyOneTriangle)
     EXPECT_GT(shared, 100U);
 }
 
-TEST(Rasterize, ThreadCountAndBandHeightDoNotChangeTheResult)
-{
+TEST(Rasterize, ThreadCountAndBandHeightDoNotChangeTheResult) {
     const Tin tin = grid_tin(1000.0, 2000.0, 30, 1.7, 0.35, 3, {10, 10, 20, 30});
     const dtm::GridSpec spec = dtm::snapped_grid_spec(dtm::tin_bounds(tin), 0.25);
     const dtm::Grid a = dtm::rasterize(tin, spec, {.band_rows = 1, .threads = 1});
@@ -189,8 +189,9 @@ TEST(Rasterize, ThreadCountAndBandHeightDoNotChangeTheResult)
 
 class RecordingSink final : public dtm::GridSink {
 public:
-    void write_rows(std::size_t first_row, std::size_t row_count, std::span<const float> values) override
-    {
+    void write_rows(std::size_t first_row,
+                    std::size_t row_count,
+                    std::span<const float> values) override {
         calls.push_back({first_row, row_count});
         sizes.push_back(values.size());
     }
@@ -198,8 +199,7 @@ public:
     std::vector<std::size_t> sizes;
 };
 
-TEST(Rasterize, StreamsConsecutiveBandsNorthToSouth)
-{
+TEST(Rasterize, StreamsConsecutiveBandsNorthToSouth) {
     const Tin tin = grid_tin(0.0, 0.0, 10, 1.0, 0.2, 5);
     const dtm::GridSpec spec{.xmin = 0.0, .ymax = 9.0, .cell = 0.1, .cols = 90, .rows = 90};
     RecordingSink sink;
@@ -214,8 +214,7 @@ TEST(Rasterize, StreamsConsecutiveBandsNorthToSouth)
     EXPECT_EQ(next, spec.rows);
 }
 
-TEST(Rasterize, SnappedSpecCoversTheBoxWithEdgesOnCellMultiples)
-{
+TEST(Rasterize, SnappedSpecCoversTheBoxWithEdgesOnCellMultiples) {
     const dtm::Box2 box{-750'000.3, -1'050'000.8, -749'990.1, -1'049'995.0};
     const dtm::GridSpec s = dtm::snapped_grid_spec(box, 0.5);
     EXPECT_EQ(s.xmin, -750'000.5);
@@ -227,8 +226,7 @@ TEST(Rasterize, SnappedSpecCoversTheBoxWithEdgesOnCellMultiples)
     EXPECT_LE(s.ymin(), box.ymin);
 }
 
-TEST(Rasterize, ExtentSpecUsesTheExtentAsOuterEdges)
-{
+TEST(Rasterize, ExtentSpecUsesTheExtentAsOuterEdges) {
     const dtm::GridSpec s = dtm::extent_grid_spec({0.0, 0.0, 2000.0, 1000.0}, 1.0);
     EXPECT_EQ(s.cols, 2000U);
     EXPECT_EQ(s.rows, 1000U);
@@ -244,16 +242,18 @@ TEST(Rasterize, ExtentSpecUsesTheExtentAsOuterEdges)
 
 namespace {
 
-TEST(Rasterize, TriangulatedSurveyWithAHoleMatchesBruteForceAndIsNoDataInTheHole)
-{
+TEST(Rasterize, TriangulatedSurveyWithAHoleMatchesBruteForceAndIsNoDataInTheHole) {
     std::mt19937 rng(17);
     std::uniform_real_distribution<double> u(0.0, 60.0);
     dtm::TerrainInput input;
     for (int i = 0; i < 1500; ++i) {
         const double x = u(rng), y = u(rng);
-        input.points.push_back({-750'000.0 + x, -1'050'000.0 + y, 300.0 + std::sin(x / 9.0) * 5.0 + 0.2 * y});
+        input.points.push_back(
+            {-750'000.0 + x, -1'050'000.0 + y, 300.0 + std::sin(x / 9.0) * 5.0 + 0.2 * y});
     }
-    const auto p = [](double x, double y) { return Point3{-750'000.0 + x, -1'050'000.0 + y, 305.0}; };
+    const auto p = [](double x, double y) {
+        return Point3{-750'000.0 + x, -1'050'000.0 + y, 305.0};
+    };
     input.holes.push_back({{p(20, 20), p(40, 22), p(35, 41), p(21, 38), p(20, 20)}, true, "hole"});
     const Tin tin = dtm::triangulate(input).tin;
     ASSERT_GT(tin.triangles.size(), 2000U);
@@ -261,8 +261,12 @@ TEST(Rasterize, TriangulatedSurveyWithAHoleMatchesBruteForceAndIsNoDataInTheHole
     const dtm::Grid grid = dtm::rasterize(tin, spec);
     expect_matches_brute_force(tin, grid);
     // The centre of the hole is NoData, a point well outside it has data.
-    const auto col = [&](double x) { return static_cast<std::size_t>((-750'000.0 + x - spec.xmin) / spec.cell); };
-    const auto row = [&](double y) { return static_cast<std::size_t>((spec.ymax - (-1'050'000.0 + y)) / spec.cell); };
+    const auto col = [&](double x) {
+        return static_cast<std::size_t>((-750'000.0 + x - spec.xmin) / spec.cell);
+    };
+    const auto row = [&](double y) {
+        return static_cast<std::size_t>((spec.ymax - (-1'050'000.0 + y)) / spec.cell);
+    };
     EXPECT_TRUE(grid.is_nodata(row(30), col(30)));
     EXPECT_FALSE(grid.is_nodata(row(10), col(10)));
 }

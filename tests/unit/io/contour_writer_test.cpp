@@ -21,8 +21,7 @@ struct Closer {
 };
 using Dataset = std::unique_ptr<GDALDataset, Closer>;
 
-std::string epsg_wkt(int code)
-{
+std::string epsg_wkt(int code) {
     OGRSpatialReference srs;
     srs.importFromEPSG(code);
     char* wkt = nullptr;
@@ -32,12 +31,14 @@ std::string epsg_wkt(int code)
     return text;
 }
 
-void write_three(const std::filesystem::path& path, bool with_crs)
-{
+void write_three(const std::filesystem::path& path, bool with_crs) {
     dtm::io::ContourWriter writer(path, {.crs_wkt = with_crs ? epsg_wkt(5514) : std::string()});
-    const std::vector<dtm::Point3> open{{-750'000.0, -1'050'000.0, 100.0}, {-749'990.0, -1'050'000.5, 100.0}};
-    const std::vector<dtm::Point3> ring{{-750'000.0, -1'050'010.0, 105.0}, {-749'995.0, -1'050'010.0, 105.0},
-                                        {-749'995.0, -1'050'005.0, 105.0}, {-750'000.0, -1'050'010.0, 105.0}};
+    const std::vector<dtm::Point3> open{{-750'000.0, -1'050'000.0, 100.0},
+                                        {-749'990.0, -1'050'000.5, 100.0}};
+    const std::vector<dtm::Point3> ring{{-750'000.0, -1'050'010.0, 105.0},
+                                        {-749'995.0, -1'050'010.0, 105.0},
+                                        {-749'995.0, -1'050'005.0, 105.0},
+                                        {-750'000.0, -1'050'010.0, 105.0}};
     writer.add({100.0, 20, true}, open, false);
     writer.add({101.0, 21, false}, open, false);
     writer.add({105.0, 21, false}, ring, true);
@@ -46,8 +47,7 @@ void write_three(const std::filesystem::path& path, bool with_crs)
     writer.commit();
 }
 
-void expect_attributes_and_z(const std::filesystem::path& path, bool check_crs)
-{
+void expect_attributes_and_z(const std::filesystem::path& path, bool check_crs) {
     Dataset ds(GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY));
     ASSERT_TRUE(ds) << path;
     OGRLayer* layer = ds->GetLayer(0);
@@ -76,15 +76,13 @@ void expect_attributes_and_z(const std::filesystem::path& path, bool check_crs)
     }
 }
 
-TEST(ContourWriter, GeoPackageHasLineStringZWithElevationIndexClosedAndCrs)
-{
+TEST(ContourWriter, GeoPackageHasLineStringZWithElevationIndexClosedAndCrs) {
     const dtm::test::ScratchDir dir;
     write_three(dir / "c.gpkg", true);
     expect_attributes_and_z(dir / "c.gpkg", true);
 }
 
-TEST(ContourWriter, ShapefileComesWithAPrjAndNoTemporaryFilesRemain)
-{
+TEST(ContourWriter, ShapefileComesWithAPrjAndNoTemporaryFilesRemain) {
     const dtm::test::ScratchDir dir;
     write_three(dir / "c.shp", true);
     expect_attributes_and_z(dir / "c.shp", true);
@@ -95,15 +93,13 @@ TEST(ContourWriter, ShapefileComesWithAPrjAndNoTemporaryFilesRemain)
     }
 }
 
-TEST(ContourWriter, GeoJsonKeepsTheAttributes)
-{
+TEST(ContourWriter, GeoJsonKeepsTheAttributes) {
     const dtm::test::ScratchDir dir;
     write_three(dir / "c.geojson", false);
     expect_attributes_and_z(dir / "c.geojson", false);
 }
 
-TEST(ContourWriter, DxfPutsIndexAndIntermediateContoursOnSeparateLayers)
-{
+TEST(ContourWriter, DxfPutsIndexAndIntermediateContoursOnSeparateLayers) {
     const dtm::test::ScratchDir dir;
     write_three(dir / "c.dxf", false);
     Dataset ds(GDALDataset::Open((dir / "c.dxf").c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY));
@@ -119,8 +115,7 @@ TEST(ContourWriter, DxfPutsIndexAndIntermediateContoursOnSeparateLayers)
     EXPECT_EQ(layers.count("CONTOUR"), 2U);
 }
 
-TEST(ContourWriter, UnknownExtensionIsAUsageError)
-{
+TEST(ContourWriter, UnknownExtensionIsAUsageError) {
     const dtm::test::ScratchDir dir;
     EXPECT_THROW(dtm::io::ContourWriter(dir / "c.xyz", {}), dtm::UsageError);
 }

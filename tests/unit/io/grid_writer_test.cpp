@@ -19,13 +19,11 @@ struct Closer {
 };
 using Dataset = std::unique_ptr<GDALDataset, Closer>;
 
-Dataset open_raster(const std::filesystem::path& path)
-{
+Dataset open_raster(const std::filesystem::path& path) {
     return Dataset(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY));
 }
 
-std::string epsg_wkt(int code)
-{
+std::string epsg_wkt(int code) {
     OGRSpatialReference srs;
     srs.importFromEPSG(code);
     char* wkt = nullptr;
@@ -35,21 +33,22 @@ std::string epsg_wkt(int code)
     return text;
 }
 
-dtm::Grid sample_grid()
-{
+dtm::Grid sample_grid() {
     dtm::Grid grid;
     grid.spec = {.xmin = -750'010.0, .ymax = -1'049'990.0, .cell = 0.5, .cols = 300, .rows = 270};
     grid.nodata = -9999.0F;
     for (std::size_t r = 0; r < grid.spec.rows; ++r) {
         for (std::size_t c = 0; c < grid.spec.cols; ++c) {
-            grid.values.push_back(c < 10 ? grid.nodata : static_cast<float>(200.0 + 0.25 * static_cast<double>(r) + 0.5 * static_cast<double>(c)));
+            grid.values.push_back(c < 10
+                                      ? grid.nodata
+                                      : static_cast<float>(200.0 + 0.25 * static_cast<double>(r) +
+                                                           0.5 * static_cast<double>(c)));
         }
     }
     return grid;
 }
 
-void expect_same_raster(const std::filesystem::path& path, const dtm::Grid& grid, bool with_crs)
-{
+void expect_same_raster(const std::filesystem::path& path, const dtm::Grid& grid, bool with_crs) {
     Dataset ds = open_raster(path);
     ASSERT_TRUE(ds) << path;
     ASSERT_EQ(ds->GetRasterXSize(), static_cast<int>(grid.spec.cols));
@@ -64,11 +63,10 @@ void expect_same_raster(const std::filesystem::path& path, const dtm::Grid& grid
     EXPECT_EQ(ds->GetRasterBand(1)->GetNoDataValue(&has_nodata), -9999.0);
     EXPECT_TRUE(has_nodata);
     std::vector<float> values(grid.values.size());
-    ASSERT_EQ(ds->GetRasterBand(1)->RasterIO(GF_Read, 0, 0, static_cast<int>(grid.spec.cols),
-                                             static_cast<int>(grid.spec.rows), values.data(),
-                                             static_cast<int>(grid.spec.cols),
-                                             static_cast<int>(grid.spec.rows), GDT_Float32, 0, 0,
-                                             nullptr),
+    ASSERT_EQ(ds->GetRasterBand(1)->RasterIO(
+                  GF_Read, 0, 0, static_cast<int>(grid.spec.cols), static_cast<int>(grid.spec.rows),
+                  values.data(), static_cast<int>(grid.spec.cols), static_cast<int>(grid.spec.rows),
+                  GDT_Float32, 0, 0, nullptr),
               CE_None);
     EXPECT_EQ(values, grid.values);
     if (with_crs) {
@@ -80,8 +78,7 @@ void expect_same_raster(const std::filesystem::path& path, const dtm::Grid& grid
     }
 }
 
-TEST(GridWriter, GeoTiffIsTiledDeflateWithCrsNoDataAndStreamedRowsInPlace)
-{
+TEST(GridWriter, GeoTiffIsTiledDeflateWithCrsNoDataAndStreamedRowsInPlace) {
     const dtm::test::ScratchDir dir;
     const dtm::Grid grid = sample_grid();
     dtm::io::GridWriter writer(dir / "dem.tif", grid.spec, {.crs_wkt = epsg_wkt(5514)});
@@ -102,19 +99,18 @@ TEST(GridWriter, GeoTiffIsTiledDeflateWithCrsNoDataAndStreamedRowsInPlace)
     EXPECT_EQ(ds->GetRasterBand(1)->GetRasterDataType(), GDT_Float32);
 }
 
-TEST(GridWriter, CogOptionWritesACloudOptimizedGeoTiff)
-{
+TEST(GridWriter, CogOptionWritesACloudOptimizedGeoTiff) {
     const dtm::test::ScratchDir dir;
     const dtm::Grid grid = sample_grid();
     dtm::io::write_grid(grid, dir / "dem.tif", {.crs_wkt = epsg_wkt(5514), .cog = true});
     expect_same_raster(dir / "dem.tif", grid, true);
     Dataset ds = open_raster(dir / "dem.tif");
     EXPECT_STREQ(ds->GetMetadataItem("LAYOUT", "IMAGE_STRUCTURE"), "COG");
-    EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.path()), {}), 1);  // no staging left
+    EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.path()), {}),
+              1);  // no staging left
 }
 
-TEST(GridWriter, AscExtensionPicksTheArcInfoAsciiDriver)
-{
+TEST(GridWriter, AscExtensionPicksTheArcInfoAsciiDriver) {
     const dtm::test::ScratchDir dir;
     const dtm::Grid grid = sample_grid();
     dtm::io::write_grid(grid, dir / "dem.asc", {.crs_wkt = epsg_wkt(5514)});
@@ -126,8 +122,7 @@ TEST(GridWriter, AscExtensionPicksTheArcInfoAsciiDriver)
     EXPECT_FALSE(std::filesystem::exists(dir / "dem.stage.tif"));
 }
 
-TEST(GridWriter, UnknownExtensionIsAUsageErrorAndUncommittedOutputLeavesNothing)
-{
+TEST(GridWriter, UnknownExtensionIsAUsageErrorAndUncommittedOutputLeavesNothing) {
     const dtm::test::ScratchDir dir;
     const dtm::Grid grid = sample_grid();
     EXPECT_THROW(dtm::io::GridWriter(dir / "dem.nosuchformat", grid.spec, {}), dtm::UsageError);
@@ -138,18 +133,22 @@ TEST(GridWriter, UnknownExtensionIsAUsageErrorAndUncommittedOutputLeavesNothing)
     EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.path()), {}), 0);
 }
 
-TEST(GridWriter, DemDerivativesComeFromGdalDemProcessing)
-{
+TEST(GridWriter, DemDerivativesComeFromGdalDemProcessing) {
     const dtm::test::ScratchDir dir;
     const dtm::Grid grid = sample_grid();  // a plane: slope 0.25/0.5 and 0.5/0.5 per metre
     dtm::io::write_grid(grid, dir / "dem.tif", {.crs_wkt = epsg_wkt(5514)});
-    dtm::io::write_dem_derivative(dir / "dem.tif", dir / "slope.tif", dtm::io::DemDerivative::slope);
-    dtm::io::write_dem_derivative(dir / "dem.tif", dir / "hs.tif", dtm::io::DemDerivative::hillshade);
-    dtm::io::write_dem_derivative(dir / "dem.tif", dir / "aspect.tif", dtm::io::DemDerivative::aspect);
+    dtm::io::write_dem_derivative(dir / "dem.tif", dir / "slope.tif",
+                                  dtm::io::DemDerivative::slope);
+    dtm::io::write_dem_derivative(dir / "dem.tif", dir / "hs.tif",
+                                  dtm::io::DemDerivative::hillshade);
+    dtm::io::write_dem_derivative(dir / "dem.tif", dir / "aspect.tif",
+                                  dtm::io::DemDerivative::aspect);
     Dataset slope = open_raster(dir / "slope.tif");
     ASSERT_TRUE(slope);
     float v = 0.0F;
-    ASSERT_EQ(slope->GetRasterBand(1)->RasterIO(GF_Read, 100, 100, 1, 1, &v, 1, 1, GDT_Float32, 0, 0, nullptr), CE_None);
+    ASSERT_EQ(slope->GetRasterBand(1)->RasterIO(GF_Read, 100, 100, 1, 1, &v, 1, 1, GDT_Float32, 0,
+                                                0, nullptr),
+              CE_None);
     EXPECT_NEAR(v, std::atan(std::hypot(1.0, 0.5)) * 180.0 / M_PI, 1e-3);
     EXPECT_TRUE(open_raster(dir / "hs.tif"));
     EXPECT_TRUE(open_raster(dir / "aspect.tif"));

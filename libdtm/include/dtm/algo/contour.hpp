@@ -14,12 +14,12 @@
 namespace dtm {
 
 struct ContourOptions {
-    double interval = 1.0;             ///< distance between levels (> 0) when fixed_levels is empty
-    double base = 0.0;                 ///< levels are base + k * interval
-    std::vector<double> fixed_levels{};///< if non-empty, overrides interval/base
-    std::size_t index_every = 5;       ///< every k-th level (k % index_every == 0) is an index
-                                       ///< contour (0: none)
-    std::size_t max_levels = 100'000;  ///< guard against absurd intervals
+    double interval = 1.0;  ///< distance between levels (> 0) when fixed_levels is empty
+    double base = 0.0;      ///< levels are base + k * interval
+    std::vector<double> fixed_levels{};  ///< if non-empty, overrides interval/base
+    std::size_t index_every = 5;         ///< every k-th level (k % index_every == 0) is an index
+                                         ///< contour (0: none)
+    std::size_t max_levels = 100'000;    ///< guard against absurd intervals
     /// Corner-cutting passes (0: none). Smoothed vertices stay inside the triangles the line
     /// crosses, so lines still never cross; smoothed vertices are not on TIN edges any more.
     unsigned smooth = 0;
@@ -39,18 +39,22 @@ public:
 /// The levels that cut the height range [zmin, zmax] (a level L cuts it when zmin < L <= zmax:
 /// a vertex exactly on a level counts as slightly above it).
 /// @throws UsageError for interval <= 0 or more than options.max_levels levels.
-[[nodiscard]] std::vector<ContourLevel> contour_levels(double zmin, double zmax,
+[[nodiscard]] std::vector<ContourLevel> contour_levels(double zmin,
+                                                       double zmax,
                                                        const ContourOptions& options);
 
 /// Traces every contour of @p tin and streams it to @p sink. Lines are continuous polylines
 /// through the TIN; a vertex with z == level is treated as slightly above the level (no gaps, no
 /// doubled pieces), the output point stays exactly on the vertex; zero-length parts are dropped.
 /// @throws UsageError (see contour_levels); Cancelled
-void contour(const Tin& tin, const ContourOptions& options, ContourSink& sink,
+void contour(const Tin& tin,
+             const ContourOptions& options,
+             ContourSink& sink,
              const Progress& progress = {});
 
 /// Convenience for small data: collect into memory.
-[[nodiscard]] std::vector<Contour> contour(const Tin& tin, const ContourOptions& options = {},
+[[nodiscard]] std::vector<Contour> contour(const Tin& tin,
+                                           const ContourOptions& options = {},
                                            const Progress& progress = {});
 
 }  // namespace dtm

@@ -29,7 +29,8 @@ public:
     /// @param first_row index of the first row of the band
     /// @param row_count rows in the band
     /// @param values    row_count x spec.cols values, row-major
-    virtual void write_rows(std::size_t first_row, std::size_t row_count,
+    virtual void write_rows(std::size_t first_row,
+                            std::size_t row_count,
                             std::span<const float> values) = 0;
 };
 
@@ -40,12 +41,17 @@ public:
 /// triangles is assigned to exactly one of them and gets the same value from either.
 /// Bands are computed in parallel and handed to the sink in order.
 /// @throws Cancelled
-void rasterize(const Tin& tin, const GridSpec& spec, const RasterizeOptions& options,
-               GridSink& sink, const Progress& progress = {});
+void rasterize(const Tin& tin,
+               const GridSpec& spec,
+               const RasterizeOptions& options,
+               GridSink& sink,
+               const Progress& progress = {});
 
 /// Convenience for small rasters: the whole grid in memory.
-[[nodiscard]] Grid rasterize(const Tin& tin, const GridSpec& spec,
-                             const RasterizeOptions& options = {}, const Progress& progress = {});
+[[nodiscard]] Grid rasterize(const Tin& tin,
+                             const GridSpec& spec,
+                             const RasterizeOptions& options = {},
+                             const Progress& progress = {});
 
 /// Bounding box of the TIN's triangle vertices in xy (empty if there are no triangles).
 [[nodiscard]] Box2 tin_bounds(const Tin& tin);

@@ -4,8 +4,9 @@
 ///
 ///   (xmin, ymax) +-----+-----+-----+       row 0 is the northern row, col 0 the western column;
 ///                | 0,0 | 0,1 | 0,2 |       cell (r, c) covers [xmin + c*cell, xmin + (c+1)*cell] x
-///                +-----+-----+-----+       [ymax - (r+1)*cell, ymax - r*cell] and is sampled at its
-///                | 1,0 |  x  | 1,2 |       centre x (GDAL's "pixel is area" convention: the extent
+///                +-----+-----+-----+       [ymax - (r+1)*cell, ymax - r*cell] and is sampled at
+///                its | 1,0 |  x  | 1,2 |       centre x (GDAL's "pixel is area" convention: the
+///                extent
 ///                +-----+-----+-----+       is the raster's outer edges).
 ///                                 (xmax, ymin)
 #pragma once
@@ -29,13 +30,11 @@ struct GridSpec {
     [[nodiscard]] double xmax() const noexcept { return xmin + static_cast<double>(cols) * cell; }
     [[nodiscard]] double ymin() const noexcept { return ymax - static_cast<double>(rows) * cell; }
     /// x of the centre of column @p col.
-    [[nodiscard]] double center_x(std::size_t col) const noexcept
-    {
+    [[nodiscard]] double center_x(std::size_t col) const noexcept {
         return xmin + (static_cast<double>(col) + 0.5) * cell;
     }
     /// y of the centre of row @p row.
-    [[nodiscard]] double center_y(std::size_t row) const noexcept
-    {
+    [[nodiscard]] double center_y(std::size_t row) const noexcept {
         return ymax - (static_cast<double>(row) + 0.5) * cell;
     }
     [[nodiscard]] std::size_t cell_count() const noexcept { return cols * rows; }
@@ -48,9 +47,10 @@ struct Grid {
     float nodata = -9999.0F;
     std::vector<float> values;  ///< size spec.cell_count()
 
-    [[nodiscard]] float at(std::size_t row, std::size_t col) const { return values[row * spec.cols + col]; }
-    [[nodiscard]] bool is_nodata(std::size_t row, std::size_t col) const
-    {
+    [[nodiscard]] float at(std::size_t row, std::size_t col) const {
+        return values[row * spec.cols + col];
+    }
+    [[nodiscard]] bool is_nodata(std::size_t row, std::size_t col) const {
         const float v = at(row, col);
         return v == nodata || (std::isnan(v) && std::isnan(nodata));
     }

@@ -32,13 +32,15 @@ struct GridWriteOptions {
 class GridWriter final : public GridSink {
 public:
     /// @throws UsageError for an extension no GDAL raster driver writes; Error if GDAL fails.
-    GridWriter(const std::filesystem::path& target, const GridSpec& spec,
+    GridWriter(const std::filesystem::path& target,
+               const GridSpec& spec,
                const GridWriteOptions& options);
     GridWriter(const GridWriter&) = delete;
     GridWriter& operator=(const GridWriter&) = delete;
     ~GridWriter() override;
 
-    void write_rows(std::size_t first_row, std::size_t row_count,
+    void write_rows(std::size_t first_row,
+                    std::size_t row_count,
                     std::span<const float> values) override;
     /// Flushes, converts if needed, and renames onto the target. @throws Error
     void commit();
@@ -49,7 +51,8 @@ private:
 };
 
 /// Writes a whole in-memory grid (convenience for small rasters and samples).
-void write_grid(const Grid& grid, const std::filesystem::path& target,
+void write_grid(const Grid& grid,
+                const std::filesystem::path& target,
                 const GridWriteOptions& options);
 
 /// The surface derivatives GDAL computes from a DEM (gdaldem).
@@ -58,7 +61,8 @@ enum class DemDerivative { hillshade, slope, aspect };
 /// Runs GDALDEMProcessing on the DEM file @p dem and writes @p target atomically (format by
 /// extension as for GridWriter). Slope is in degrees, aspect in degrees from north; edges are
 /// computed. @throws UsageError for an unknown extension; Error if GDAL fails.
-void write_dem_derivative(const std::filesystem::path& dem, const std::filesystem::path& target,
+void write_dem_derivative(const std::filesystem::path& dem,
+                          const std::filesystem::path& target,
                           DemDerivative kind);
 
 /// Lower-case extensions (without dot) that some installed GDAL raster driver can write.

@@ -16,7 +16,8 @@ namespace dtm::detail {
 /// heights to the neighbouring levels); other corners stay fixed. Every smoothed point therefore
 /// lies in the triangle strip of the piece, and smoothed lines of different levels occupy
 /// disjoint height bands of the surface, so they cannot cross.
-[[nodiscard]] std::vector<Point3> smooth_chain(const Tin& tin, const RawChain& piece,
+[[nodiscard]] std::vector<Point3> smooth_chain(const Tin& tin,
+                                               const RawChain& piece,
                                                std::pair<double, double> band,
                                                unsigned iterations);
 

@@ -29,7 +29,10 @@ struct RawChain {
 /// Traces every chain of level @p level through the triangles @p crossing (ascending indices,
 /// exactly the triangles with zmin < level <= zmax). @p visited has one byte per triangle, all
 /// zero on entry and on return.
-void trace_level(const Tin& tin, double level, std::span<const TriangleIndex> crossing,
-                 std::vector<std::uint8_t>& visited, std::vector<RawChain>& chains);
+void trace_level(const Tin& tin,
+                 double level,
+                 std::span<const TriangleIndex> crossing,
+                 std::vector<std::uint8_t>& visited,
+                 std::vector<RawChain>& chains);
 
 }  // namespace dtm::detail

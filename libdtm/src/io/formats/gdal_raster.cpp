@@ -27,8 +27,7 @@ namespace dtm::io {
 namespace fs = std::filesystem;
 namespace {
 
-void register_gdal()
-{
+void register_gdal() {
     static std::once_flag once;
     std::call_once(once, [] {
         GDALAllRegister();
@@ -36,8 +35,7 @@ void register_gdal()
     });
 }
 
-std::string lower_extension(const fs::path& path)
-{
+std::string lower_extension(const fs::path& path) {
     std::string ext = path.extension().string();
     if (!ext.empty()) {
         ext.erase(0, 1);
@@ -47,8 +45,7 @@ std::string lower_extension(const fs::path& path)
     return ext;
 }
 
-bool declares_extension(GDALDriverH driver, const std::string& ext)
-{
+bool declares_extension(GDALDriverH driver, const std::string& ext) {
     const char* list = GDALGetMetadataItem(driver, GDAL_DMD_EXTENSIONS, nullptr);
     if (list == nullptr) {
         return false;
@@ -65,8 +62,7 @@ bool declares_extension(GDALDriverH driver, const std::string& ext)
     return false;
 }
 
-bool can_write_raster(GDALDriverH driver)
-{
+bool can_write_raster(GDALDriverH driver) {
     const auto yes = [driver](const char* key) {
         const char* v = GDALGetMetadataItem(driver, key, nullptr);
         return v != nullptr && EQUAL(v, "YES");
@@ -75,8 +71,7 @@ bool can_write_raster(GDALDriverH driver)
 }
 
 /// Short name of the driver that writes @p target. @throws UsageError
-std::string raster_driver_for(const fs::path& target)
-{
+std::string raster_driver_for(const fs::path& target) {
     register_gdal();
     const std::string ext = lower_extension(target);
     if (ext == "tif" || ext == "tiff") {
@@ -93,8 +88,7 @@ std::string raster_driver_for(const fs::path& target)
                      "); use .tif, .asc, or another extension from `gdalinfo --formats`");
 }
 
-[[noreturn]] void throw_gdal(const std::string& what)
-{
+[[noreturn]] void throw_gdal(const std::string& what) {
     throw Error("grid: " + what + ": " + CPLGetLastErrorMsg());
 }
 
@@ -105,13 +99,11 @@ public:
     Options(const Options&) = delete;
     Options& operator=(const Options&) = delete;
     ~Options() { CSLDestroy(list_); }
-    Options& add(const char* key, const char* value)
-    {
+    Options& add(const char* key, const char* value) {
         list_ = CSLSetNameValue(list_, key, value);
         return *this;
     }
-    Options& arg(const std::string& value)
-    {
+    Options& arg(const std::string& value) {
         list_ = CSLAddString(list_, value.c_str());
         return *this;
     }
@@ -121,9 +113,10 @@ private:
     char** list_ = nullptr;
 };
 
-GDALDatasetH create_geotiff(const fs::path& path, const GridSpec& spec,
-                            const GridWriteOptions& options, bool staging)
-{
+GDALDatasetH create_geotiff(const fs::path& path,
+                            const GridSpec& spec,
+                            const GridWriteOptions& options,
+                            bool staging) {
     GDALDriverH driver = GDALGetDriverByName("GTiff");
     Options co;
     co.add("TILED", "YES").add("BLOCKXSIZE", "256").add("BLOCKYSIZE", "256");
@@ -155,11 +148,8 @@ struct GridWriter::State {
     GDALDatasetH ds = nullptr;
 
     State(const fs::path& target, const GridSpec& s, const GridWriteOptions& o)
-        : spec(s), options(o), driver(raster_driver_for(target)), out(target)
-    {
-    }
-    ~State()
-    {
+        : spec(s), options(o), driver(raster_driver_for(target)), out(target) {}
+    ~State() {
         if (ds != nullptr) {
             GDALClose(ds);
         }
@@ -167,11 +157,12 @@ struct GridWriter::State {
     void copy_to_target();
 };
 
-GridWriter::GridWriter(const fs::path& target, const GridSpec& spec,
+GridWriter::GridWriter(const fs::path& target,
+                       const GridSpec& spec,
                        const GridWriteOptions& options)
-    : state_(std::make_unique<State>(target, spec, options))
-{
-    if (spec.cols == 0 || spec.rows == 0 || spec.cols > 2'000'000'000 || spec.rows > 2'000'000'000) {
+    : state_(std::make_unique<State>(target, spec, options)) {
+    if (spec.cols == 0 || spec.rows == 0 || spec.cols > 2'000'000'000 ||
+        spec.rows > 2'000'000'000) {
         throw UsageError("grid: raster size " + std::to_string(spec.cols) + " x " +
                          std::to_string(spec.rows) + " is not writable");
     }
@@ -191,38 +182,35 @@ GridWriter::GridWriter(const fs::path& target, const GridSpec& spec,
 
 GridWriter::~GridWriter() = default;
 
-void GridWriter::write_rows(std::size_t first_row, std::size_t row_count,
-                            std::span<const float> values)
-{
+void GridWriter::write_rows(std::size_t first_row,
+                            std::size_t row_count,
+                            std::span<const float> values) {
     const int cols = static_cast<int>(state_->spec.cols);
-    const CPLErr err = GDALRasterIO(GDALGetRasterBand(state_->ds, 1), GF_Write, 0,
-                                    static_cast<int>(first_row), cols, static_cast<int>(row_count),
-                                    const_cast<float*>(values.data()), cols,
-                                    static_cast<int>(row_count), GDT_Float32, 0, 0);
+    const CPLErr err =
+        GDALRasterIO(GDALGetRasterBand(state_->ds, 1), GF_Write, 0, static_cast<int>(first_row),
+                     cols, static_cast<int>(row_count), const_cast<float*>(values.data()), cols,
+                     static_cast<int>(row_count), GDT_Float32, 0, 0);
     if (err != CE_None) {
         throw_gdal("cannot write rows to " + state_->out.target().string());
     }
 }
 
-void GridWriter::State::copy_to_target()
-{
-    GDALDriverH target_driver =
-        GDALGetDriverByName(options.cog ? "COG" : driver.c_str());
+void GridWriter::State::copy_to_target() {
+    GDALDriverH target_driver = GDALGetDriverByName(options.cog ? "COG" : driver.c_str());
     Options co;
     if (options.cog) {
         co.add("COMPRESS", "DEFLATE").add("PREDICTOR", "YES").add("NUM_THREADS", "ALL_CPUS");
         co.add("BIGTIFF", "IF_SAFER");
     }
-    GDALDatasetH copy = GDALCreateCopy(target_driver, out.temp_path().c_str(), ds, FALSE,
-                                       co.get(), nullptr, nullptr);
+    GDALDatasetH copy = GDALCreateCopy(target_driver, out.temp_path().c_str(), ds, FALSE, co.get(),
+                                       nullptr, nullptr);
     if (copy == nullptr) {
         throw_gdal("cannot write " + out.target().string());
     }
     GDALClose(copy);
 }
 
-void GridWriter::commit()
-{
+void GridWriter::commit() {
     CPLErrorReset();
     GDALFlushCache(state_->ds);
     if (CPLGetLastErrorType() >= CE_Failure) {
@@ -239,8 +227,7 @@ void GridWriter::commit()
     state_->out.commit();
 }
 
-void write_grid(const Grid& grid, const fs::path& target, const GridWriteOptions& options)
-{
+void write_grid(const Grid& grid, const fs::path& target, const GridWriteOptions& options) {
     GridWriteOptions o = options;
     o.nodata = grid.nodata;
     GridWriter writer(target, grid.spec, o);
@@ -248,8 +235,7 @@ void write_grid(const Grid& grid, const fs::path& target, const GridWriteOptions
     writer.commit();
 }
 
-void write_dem_derivative(const fs::path& dem, const fs::path& target, DemDerivative kind)
-{
+void write_dem_derivative(const fs::path& dem, const fs::path& target, DemDerivative kind) {
     const std::string driver = raster_driver_for(target);
     GDALDatasetH src = GDALOpen(dem.c_str(), GA_ReadOnly);
     if (src == nullptr) {
@@ -266,8 +252,8 @@ void write_dem_derivative(const fs::path& dem, const fs::path& target, DemDeriva
                        : kind == DemDerivative::slope   ? "slope"
                                                         : "aspect";
     int usage_error = FALSE;
-    GDALDatasetH result = GDALDEMProcessing(out.temp_path().c_str(), src, mode, nullptr, options,
-                                            &usage_error);
+    GDALDatasetH result =
+        GDALDEMProcessing(out.temp_path().c_str(), src, mode, nullptr, options, &usage_error);
     GDALDEMProcessingOptionsFree(options);
     GDALClose(src);
     if (result == nullptr) {
@@ -277,8 +263,7 @@ void write_dem_derivative(const fs::path& dem, const fs::path& target, DemDeriva
     out.commit();
 }
 
-std::vector<std::string> grid_extensions()
-{
+std::vector<std::string> grid_extensions() {
     register_gdal();
     std::vector<std::string> out{"tif", "tiff"};
     for (int i = 0; i < GDALGetDriverCount(); ++i) {

@@ -32,8 +32,7 @@ constexpr std::array<Format, 5> formats{{{"gpkg", "GPKG"},
                                          {"geojson", "GeoJSON"},
                                          {"json", "GeoJSON"}}};
 
-const Format& format_for(const fs::path& target)
-{
+const Format& format_for(const fs::path& target) {
     std::string ext = target.extension().string();
     ext.erase(0, std::min<std::size_t>(1, ext.size()));
     std::transform(ext.begin(), ext.end(), ext.begin(),
@@ -47,8 +46,7 @@ const Format& format_for(const fs::path& target)
                      "); use .gpkg, .shp, .dxf or .geojson");
 }
 
-[[noreturn]] void throw_ogr(const std::string& what)
-{
+[[noreturn]] void throw_ogr(const std::string& what) {
     throw Error("contour: " + what + ": " + CPLGetLastErrorMsg());
 }
 
@@ -67,8 +65,7 @@ struct ContourWriter::State {
     bool in_transaction = false;
 
     explicit State(const fs::path& target) : out(target) {}
-    ~State()
-    {
+    ~State() {
         if (ds != nullptr) {
             GDALClose(ds);
         }
@@ -79,8 +76,7 @@ struct ContourWriter::State {
     void create_fields();
 };
 
-void ContourWriter::State::create_fields()
-{
+void ContourWriter::State::create_fields() {
     if (dxf) {
         dxf_layer_field = OGR_FD_GetFieldIndex(OGR_L_GetLayerDefn(layer), "Layer");
         return;
@@ -100,8 +96,7 @@ void ContourWriter::State::create_fields()
     closed_field = add("closed", OFTInteger, OFSTBoolean);
 }
 
-ContourWriter::ContourWriter(const fs::path& target, const ContourWriteOptions& options)
-{
+ContourWriter::ContourWriter(const fs::path& target, const ContourWriteOptions& options) {
     const Format& format = format_for(target);
     static std::once_flag once;
     std::call_once(once, [] { GDALAllRegister(); });
@@ -135,8 +130,7 @@ ContourWriter::ContourWriter(const fs::path& target, const ContourWriteOptions& 
 
 ContourWriter::~ContourWriter() = default;
 
-void ContourWriter::add(const ContourLevel& level, std::span<const Point3> line, bool closed)
-{
+void ContourWriter::add(const ContourLevel& level, std::span<const Point3> line, bool closed) {
     State& s = *state_;
     if (!s.in_transaction) {
         s.in_transaction = GDALDatasetStartTransaction(s.ds, FALSE) == OGRERR_NONE;
@@ -169,8 +163,7 @@ void ContourWriter::add(const ContourLevel& level, std::span<const Point3> line,
     }
 }
 
-void ContourWriter::commit()
-{
+void ContourWriter::commit() {
     State& s = *state_;
     if (s.in_transaction && GDALDatasetCommitTransaction(s.ds) != OGRERR_NONE) {
         throw_ogr("cannot write " + s.out.target().string());
@@ -187,8 +180,7 @@ void ContourWriter::commit()
 
 std::size_t ContourWriter::feature_count() const noexcept { return state_->features; }
 
-std::vector<std::string> contour_extensions()
-{
+std::vector<std::string> contour_extensions() {
     std::vector<std::string> out;
     for (const Format& f : formats) {
         out.emplace_back(f.extension);
