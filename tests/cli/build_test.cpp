@@ -389,6 +389,45 @@ TEST(Build, HpglHeightPlanGivesTheSameSurface) {
     RecordProperty("hpgl_dem_error_mean_mm", std::to_string(e.mean * 1000.0));
 }
 
+TEST(Build, ReportListsCrossingBreaklineConflicts) {
+    // Two breaklines cross at (-750050, -1050050): one at 300 m, the other rising from 300 to
+    // 302 m, so at the crossing their heights differ by 1 m.
+    dtm::test::ScratchDir scratch;
+    std::string points = "x,y,z\n";
+    for (int i = 0; i <= 11; ++i) {  // a 10 m grid that no breakline vertex falls on
+        for (int j = 0; j <= 11; ++j) {
+            points += std::to_string(-750105 + 10 * i) + "," + std::to_string(-1050105 + 10 * j) +
+                      ",300.5\n";
+        }
+    }
+    dtm::test::write_file(scratch / "points.csv", points);
+    dtm::test::write_file(
+        scratch / "lines.geojson",
+        R"({"type":"FeatureCollection","crs":{"type":"name","properties":)"
+        R"({"name":"urn:ogc:def:crs:EPSG::5514"}},"features":[)"
+        R"({"type":"Feature","properties":{},"geometry":{"type":"LineString","coordinates":)"
+        R"([[-750085,-1050050,300],[-750015,-1050050,300]]}},)"
+        R"({"type":"Feature","properties":{},"geometry":{"type":"LineString","coordinates":)"
+        R"([[-750050,-1050085,300],[-750050,-1050015,302]]}}]})");
+    const fs::path out = scratch / "out";
+    const dtm::test::RunResult r = dtm::test::run_dtm(
+        {"build", (scratch / "points.csv").string(), "--breaklines",
+         (scratch / "lines.geojson").string(), "--crs", "EPSG:5514", "-o", out.string(), "-q"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    CPLJSONDocument doc;
+    ASSERT_TRUE(doc.Load((out / "report.json").string()));
+    const CPLJSONObject root = doc.GetRoot();
+    EXPECT_EQ(root.GetObj("tin").GetLong("breakline_intersections"), 1);
+    const CPLJSONObject conflicts = root.GetObj("conflicts");
+    ASSERT_EQ(conflicts.GetLong("count"), 1);
+    const CPLJSONObject c = conflicts.GetArray("items")[0];
+    EXPECT_NEAR(c.GetDouble("x"), -750050.0, 1e-6);
+    EXPECT_NEAR(c.GetDouble("y"), -1050050.0, 1e-6);
+    EXPECT_NEAR(c.GetDouble("difference"), 1.0, 1e-9);
+    EXPECT_NEAR(std::min(c.GetDouble("z_first"), c.GetDouble("z_second")), 300.0, 1e-9);
+    EXPECT_NEAR(std::max(c.GetDouble("z_first"), c.GetDouble("z_second")), 301.0, 1e-9);
+}
+
 TEST(Build, FailedRunLeavesThePreviousProductsUntouched) {
     dtm::test::ScratchDir scratch;
     const fs::path out = scratch / "out";
