@@ -428,6 +428,31 @@ TEST(Build, ReportListsCrossingBreaklineConflicts) {
     EXPECT_NEAR(std::max(c.GetDouble("z_first"), c.GetDouble("z_second")), 301.0, 1e-9);
 }
 
+TEST(BuildSampleData, AnalyticTerrainIsContinuousAcrossTheRoadSection) {
+    // The truth the tests compare against must itself be a continuous surface: no step at any
+    // kink of the road cross-section (the breakline offsets), at any station.
+    const dtm::sample::Road road;
+    for (double s = 10.0; s < 250.0; s += 17.0) {
+        for (const double d : dtm::sample::breakline_offsets) {
+            const dtm::sample::Uv below = road.at(s, d - 1e-7);
+            const dtm::sample::Uv above = road.at(s, d + 1e-7);
+            EXPECT_NEAR(dtm::sample::true_z_local(below.u, below.v),
+                        dtm::sample::true_z_local(above.u, above.v), 1e-5)
+                << "station " << s << " offset " << d;
+        }
+    }
+    // The ditch is 0.6 m below the road edge; the crown 0.07 m above it.
+    const dtm::sample::Uv edge = road.at(100.0, 3.5);
+    const dtm::sample::Uv ditch = road.at(100.0, 4.5);
+    const dtm::sample::Uv crown = road.at(100.0, 0.0);
+    EXPECT_NEAR(
+        dtm::sample::true_z_local(edge.u, edge.v) - dtm::sample::true_z_local(ditch.u, ditch.v),
+        0.6, 1e-9);
+    EXPECT_NEAR(
+        dtm::sample::true_z_local(crown.u, crown.v) - dtm::sample::true_z_local(edge.u, edge.v),
+        0.07, 1e-9);
+}
+
 TEST(Build, FailedRunLeavesThePreviousProductsUntouched) {
     dtm::test::ScratchDir scratch;
     const fs::path out = scratch / "out";
