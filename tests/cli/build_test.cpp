@@ -474,6 +474,14 @@ TEST(Build, FailedRunLeavesThePreviousProductsUntouched) {
     }
 }
 
+TEST(Build, OutputThatIsAFileIsUsageError) {
+    dtm::test::ScratchDir scratch;
+    dtm::test::write_file(scratch / "out", "not a folder");
+    const dtm::test::RunResult r = dtm::test::run_dtm(build_args(scratch / "out"));
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_EQ(dtm::test::read_file(scratch / "out"), "not a folder");
+}
+
 TEST(Build, MissingOutputFolderOptionIsUsageError) {
     const fs::path s = sample_dir();
     const dtm::test::RunResult r = dtm::test::run_dtm({"build", (s / "points.csv").string()});

@@ -62,6 +62,10 @@ public:
         if (out_.filename().empty()) {
             out_ = out_.parent_path();  // "out/" -> "out"
         }
+        std::error_code exists_error;
+        if (fs::exists(out_, exists_error) && !fs::is_directory(out_, exists_error)) {
+            throw UsageError("build: -o " + out_.string() + " is a file, not a folder");
+        }
         const fs::path parent = out_.parent_path().empty() ? fs::path(".") : out_.parent_path();
         temp_ = parent / ("." + out_.filename().string() + ".tmp-" + std::to_string(::getpid()));
         std::error_code ec;
