@@ -104,10 +104,15 @@ int run_grid(const GridArgs& args) {
         }
     }
     progress.report(1.0, "done");
+    std::ostringstream extent;
+    extent.precision(15);
+    extent << spec.xmin << "," << spec.ymin() << "," << spec.xmax() << "," << spec.ymax;
     std::cout << "grid: " << spec.cols << " x " << spec.rows << " cells of " << spec.cell
-              << " (cell centres), extent " << spec.xmin << "," << spec.ymin() << "," << spec.xmax()
-              << "," << spec.ymax << ", " << counter.filled << " with data -> " << args.output
-              << '\n';
+              << " sampled at cell centres, extent " << extent.str() << ", " << counter.filled
+              << " cells with data -> " << args.output << '\n';
+    if (counter.filled == 0) {
+        std::cerr << "dtm grid: warning: no cell centre lies on the TIN (check --extent)\n";
+    }
     return 0;
 }
 

@@ -418,3 +418,13 @@ TEST(Contour, TriangulatedSurveyWithBreaklineAndHoleKeepsAllInvariants) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(Contour, CancellationFromTheProgressCallbackThrowsCancelled) {
+    const Tin tin = random_tin(12);
+    const dtm::Progress stop([](double fraction, std::string_view) { return fraction < 0.3; });
+    EXPECT_THROW((void)dtm::contour(tin, {.interval = 0.05}, stop), dtm::Cancelled);
+}
+
+}  // namespace

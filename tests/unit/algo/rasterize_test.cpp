@@ -9,6 +9,7 @@
 #include <map>
 #include <random>
 
+#include "dtm/core/error.hpp"
 #include "dtm/geom/predicates.hpp"
 
 namespace {
@@ -269,6 +270,17 @@ TEST(Rasterize, TriangulatedSurveyWithAHoleMatchesBruteForceAndIsNoDataInTheHole
     };
     EXPECT_TRUE(grid.is_nodata(row(30), col(30)));
     EXPECT_FALSE(grid.is_nodata(row(10), col(10)));
+}
+
+}  // namespace
+
+namespace {
+
+TEST(Rasterize, CancellationFromTheProgressCallbackThrowsCancelled) {
+    const Tin tin = grid_tin(0.0, 0.0, 20, 1.0, 0.2, 9);
+    const dtm::GridSpec spec{.xmin = 0.0, .ymax = 19.0, .cell = 0.05, .cols = 380, .rows = 380};
+    const dtm::Progress stop([](double fraction, std::string_view) { return fraction < 0.3; });
+    EXPECT_THROW((void)dtm::rasterize(tin, spec, {.band_rows = 4}, stop), dtm::Cancelled);
 }
 
 }  // namespace
