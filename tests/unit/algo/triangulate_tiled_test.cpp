@@ -5,6 +5,7 @@
 // sequential kernel (one tile, one thread), and checked for validity.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <string>
@@ -78,6 +79,24 @@ std::vector<SeamCase> seam_cases()
         }
         cases.push_back({"clustered", in});
     }
+    {
+        // Thousands of short breaklines on a cocircular grid, some crossing, some sharing
+        // endpoints: the parallel rounds must give the sequential result exactly.
+        TerrainInput in = grid_on_cut_lines();
+        std::mt19937_64 rng(17);
+        std::uniform_real_distribution<double> u(0.0, 63.0);
+        std::uniform_real_distribution<double> d(-2.0, 2.0);
+        for (int k = 0; k < 3000; ++k) {
+            const double x = u(rng), y = u(rng);
+            in.breaklines.push_back({{{test::sjtsk_e + x, test::sjtsk_n + y, 1.0},
+                                      {test::sjtsk_e + std::clamp(x + d(rng), 0.0, 63.0),
+                                       test::sjtsk_n + std::clamp(y + d(rng), 0.0, 63.0), 2.0},
+                                      {test::sjtsk_e + std::clamp(x + d(rng), 0.0, 63.0),
+                                       test::sjtsk_n + std::clamp(y + d(rng), 0.0, 63.0), 3.0}},
+                                     false, ""});
+        }
+        cases.push_back({"many_short_breaklines_on_a_grid", in});
+    }
     return cases;
 }
 
@@ -115,7 +134,7 @@ TEST_P(TiledSeams, EveryTileCountGivesTheSequentialTin)
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Cases, TiledSeams, ::testing::Range<std::size_t>(0, 6));
+INSTANTIATE_TEST_SUITE_P(Cases, TiledSeams, ::testing::Range<std::size_t>(0, 7));
 
 }  // namespace
 }  // namespace dtm

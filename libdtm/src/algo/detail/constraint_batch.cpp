@@ -19,6 +19,7 @@
 #include "algo/detail/constraint_batch.hpp"
 
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <atomic>
@@ -142,7 +143,20 @@ void insert_segments(MeshEditor& editor, const EdgeMesh& mesh,
     });
     const std::size_t total = segments.size();
     std::size_t done = 0;
-    // The rounds run the same way with one thread or many: same rounds, same result.
+    // With one thread, plain insertion in priority order gives the very result of the rounds
+    // (that is what the reservations guarantee) without their bookkeeping.
+    if (tbb::this_task_arena::max_concurrency() == 1) {
+        for (std::size_t k = 0; k < pending.size(); ++k) {
+            const InputSegment& s = segments[pending[k]];
+            editor.insert_segment(s.a, s.b, s.bits);
+            if ((k & 4095u) == 0) {
+                progress.report(static_cast<double>(k) / static_cast<double>(total),
+                                "inserting breaklines");
+            }
+        }
+        done = pending.size();
+        pending.clear();
+    }
     if (!pending.empty()) {
         constexpr std::uint32_t unreserved = 0xffffffffu;
         const std::size_t vertex_count = mesh.points.size();

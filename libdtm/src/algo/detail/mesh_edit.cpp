@@ -45,23 +45,6 @@ MeshEditor::MeshEditor(EdgeMesh& mesh, EdgeSlots& slots, std::vector<double>& z,
     }
 }
 
-int MeshEditor::orient(VertexId a, VertexId b, VertexId c) const
-{
-    return geom::orient2d(mesh_.p(a), mesh_.p(b), mesh_.p(c));
-}
-
-int MeshEditor::orient_p(VertexId a, VertexId b, Point2 c) const
-{
-    return geom::orient2d(mesh_.p(a), mesh_.p(b), c);
-}
-
-bool MeshEditor::is_triangle(EdgeId e) const
-{
-    const EdgeId e1 = mesh_.lnext(e);
-    const EdgeId e2 = mesh_.lnext(e1);
-    return mesh_.lnext(e2) == e && orient(mesh_.org[e], mesh_.dest(e), mesh_.dest(e1)) > 0;
-}
-
 EdgeId MeshEditor::find_edge(VertexId a, VertexId b) const
 {
     const EdgeId start = vertex_edge_[a];

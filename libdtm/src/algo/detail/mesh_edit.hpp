@@ -9,6 +9,7 @@
 
 #include "algo/detail/edge_mesh.hpp"
 #include "dtm/core/point.hpp"
+#include "dtm/geom/predicates.hpp"
 
 namespace dtm::detail {
 
@@ -77,9 +78,21 @@ private:
         bool legalize;  ///< restore the Delaunay property of edge a-b instead of inserting it
     };
 
-    [[nodiscard]] int orient(VertexId a, VertexId b, VertexId c) const;
-    [[nodiscard]] int orient_p(VertexId a, VertexId b, Point2 c) const;
-    [[nodiscard]] bool is_triangle(EdgeId e) const;
+    [[nodiscard]] int orient(VertexId a, VertexId b, VertexId c) const
+    {
+        return geom::orient2d(mesh_.p(a), mesh_.p(b), mesh_.p(c));
+    }
+    [[nodiscard]] int orient_p(VertexId a, VertexId b, Point2 c) const
+    {
+        return geom::orient2d(mesh_.p(a), mesh_.p(b), c);
+    }
+    /// The left face of e is a counter-clockwise triangle (not the outer face).
+    [[nodiscard]] bool is_triangle(EdgeId e) const
+    {
+        const EdgeId e1 = mesh_.lnext(e);
+        const EdgeId e2 = mesh_.lnext(e1);
+        return mesh_.lnext(e2) == e && orient(mesh_.org[e], mesh_.dest(e), mesh_.dest(e1)) > 0;
+    }
     [[nodiscard]] EdgeId find_edge(VertexId a, VertexId b) const;
     void ensure_slots(std::size_t count);
     VertexId add_vertex(Point2 p, double z);
