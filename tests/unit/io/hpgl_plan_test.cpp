@@ -143,8 +143,9 @@ TEST_P(HpglPlan, ParcelNumbersAndFrameAreNotTerrain)
     EXPECT_EQ(result_.terrain.points.size(), 30u);
     const auto& w = result_.summary.warnings;
     EXPECT_TRUE(std::any_of(w.begin(), w.end(), [](const std::string& s) {
-        return s.find("0 height labels have no marker") == s.npos && s.find("30 spot heights (30 on markers)") != s.npos;
+        return s.find("37 labels, 30 spot heights (30 on markers)") != s.npos;
     }));
+    EXPECT_TRUE(std::any_of(w.begin(), w.end(), [](const std::string& s) { return s.find("pen:lines 1:1") != s.npos; }));
 }
 
 INSTANTIATE_TEST_SUITE_P(Encodings, HpglPlan,
