@@ -145,6 +145,9 @@ TEST(CliGrid, BadUsageExitsWithTwoAndWritesNothing) {
         dtm::test::run_dtm({"grid", (dir / "missing.csv").string(), "-o", out, "--cell", "1", "-q"})
             .exit_code,
         2);
+    EXPECT_EQ(
+        dtm::test::run_dtm({"grid", points.string(), "-o", out, "--cell", "1e-6", "-q"}).exit_code,
+        2);  // absurd raster size
     EXPECT_FALSE(std::filesystem::exists(out));
 }
 

@@ -88,6 +88,11 @@ int run_grid(const GridArgs& args) {
     const GridSpec spec = args.extent.empty()
                               ? snapped_grid_spec(tin_bounds(tin), args.cell)
                               : extent_grid_spec(parse_extent(args.extent), args.cell);
+    constexpr double max_cells = 68'719'476'736.0;  // 2^36 cells: 256 GiB of Float32
+    if (static_cast<double>(spec.cols) * static_cast<double>(spec.rows) > max_cells) {
+        throw UsageError("grid: " + std::to_string(spec.cols) + " x " + std::to_string(spec.rows) +
+                         " cells is too many; use a larger --cell or a smaller --extent");
+    }
     io::GridWriter writer(args.output, spec,
                           {.crs_wkt = inputs.crs_wkt, .nodata = args.nodata, .cog = args.cog});
     CountingSink counter(writer, args.nodata);
