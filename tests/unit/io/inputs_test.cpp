@@ -40,6 +40,17 @@ TEST(LoadInputs, CzechListWithCrs5514BecomesKrovakEastNorthWhateverTheColumnOrde
     }
 }
 
+TEST(LoadInputs, TextFileTakesItsCrsFromASidecarPrj)
+{
+    dtm::test::ScratchDir dir;
+    dtm::test::write_file(dir / "list.txt",
+                          dtm::test::read_file(dtm::test::data_path("readers/czech_list_noheader.txt")));
+    dtm::test::write_file(dir / "list.prj", dtm::io::crs_to_wkt("EPSG:5514", "test"));
+    const auto loaded = dtm::io::load_inputs(files({{dir / "list.txt", InputRole::points}}));
+    EXPECT_EQ(loaded.summaries.at(0).crs, "EPSG:5514");
+    EXPECT_EQ(loaded.terrain.points.at(0), (dtm::Point3{-745123.45, -1045123.12, 312.45}));
+}
+
 TEST(LoadInputs, WithoutCrsCzechPositiveCoordinatesAreLeftAlone)
 {
     const auto loaded = dtm::io::load_inputs(

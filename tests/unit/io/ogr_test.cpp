@@ -94,6 +94,33 @@ TEST(OgrReader, MixedLayerAsPositionalInputGivesPointsAndBreaklines)
     EXPECT_NE(r.terrain.breaklines[0].source.find("feature"), std::string::npos);
 }
 
+TEST(OgrReader, DxfMixedLayerGivesPointsAndBreaklines)
+{
+    dtm::test::ScratchDir dir;
+    GDALAllRegister();
+    GDALDriver* driver = GetGDALDriverManager()->GetDriverByName("DXF");
+    ASSERT_NE(driver, nullptr);
+    GDALDataset* ds = driver->Create((dir / "survey.dxf").c_str(), 0, 0, 0, GDT_Unknown, nullptr);
+    ASSERT_NE(ds, nullptr);
+    OGRLayer* layer = ds->CreateLayer("entities", nullptr, wkbUnknown, nullptr);
+    for (const char* wkt : {"POINT Z (1 2 3)", "POINT Z (4 5 6)", "LINESTRING Z (0 0 1,10 0 2,10 10 3)"}) {
+        OGRFeature* f = OGRFeature::CreateFeature(layer->GetLayerDefn());
+        OGRGeometry* g = nullptr;
+        ASSERT_EQ(OGRGeometryFactory::createFromWkt(wkt, nullptr, &g), OGRERR_NONE);
+        f->SetGeometryDirectly(g);
+        ASSERT_EQ(layer->CreateFeature(f), OGRERR_NONE);
+        OGRFeature::DestroyFeature(f);
+    }
+    GDALClose(ds);
+    const ReadResult r = read(dir / "survey.dxf", InputRole::points);
+    ASSERT_EQ(r.terrain.points.size(), 2u);
+    EXPECT_EQ(r.terrain.points[1], (dtm::Point3{4, 5, 6}));
+    ASSERT_EQ(r.terrain.breaklines.size(), 1u);
+    EXPECT_EQ(r.terrain.breaklines[0].points.size(), 3u);
+    EXPECT_EQ(r.terrain.breaklines[0].points[2].z, 3.0);
+    EXPECT_EQ(r.summary.format, "OGR DXF");
+}
+
 TEST(OgrReader, ZFieldGivesEveryVertexOfAContourItsHeight)
 {
     dtm::test::ScratchDir dir;

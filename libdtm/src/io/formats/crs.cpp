@@ -24,7 +24,8 @@ OGRSpatialReference from_wkt(const std::string& wkt)
     OGRSpatialReference srs;
     srs.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
     if (srs.SetFromUserInput(wkt.c_str()) != OGRERR_NONE) {
-        throw Error("unknown coordinate reference system: " + wkt.substr(0, 80));
+        throw InputError("expected a coordinate reference system GDAL/PROJ knows, found '" +
+                         wkt.substr(0, 80) + "'");
     }
     return srs;
 }

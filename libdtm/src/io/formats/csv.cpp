@@ -267,7 +267,16 @@ ReadResult read_csv(const InputFile& file, const LoadOptions& options, const Pro
         r.summary.format = "text (OGR, geometry column)";
         return r;
     }
-    return parse_csv_text(text, file, options, progress);
+    ReadResult result = parse_csv_text(text, file, options, progress);
+    // A sidecar .prj (as next to a shapefile) gives the CRS of a text file.
+    std::filesystem::path prj = file.path;
+    prj.replace_extension(".prj");
+    if (result.crs_wkt.empty() && std::filesystem::is_regular_file(prj, ec)) {
+        std::ifstream prj_in(prj, std::ios::binary);
+        std::string wkt((std::istreambuf_iterator<char>(prj_in)), std::istreambuf_iterator<char>());
+        if (!wkt.empty()) result.crs_wkt = std::move(wkt);
+    }
+    return result;
 }
 
 }  // namespace dtm::io
