@@ -77,7 +77,8 @@ void add_hpgl_options(CLI::App& app, io::HpglOptions& options)
                    "Counter-clockwise angle in degrees of the plan's x axis from grid east (default 0)")
         ->group(group);
     app.add_option("--hpgl-control", options.control_file,
-                   "CSV of control points px,py,E,N (px,py in plotter units, 40 per mm): 2 points give a "
+                   "CSV of control points px,py,E,N (px,py in plotter units, 40 per mm; paper mm with a "
+                   "px_mm,py_mm header): 2 points give a "
                    "similarity, 3 or more a least-squares affine transform; excludes --hpgl-scale")
         ->check(CLI::ExistingFile)
         ->excludes("--hpgl-scale")

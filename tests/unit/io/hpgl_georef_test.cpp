@@ -93,6 +93,17 @@ TEST(HpglGeoref, ResidualsShowAMisplacedControlPoint)
     EXPECT_NE(g.notes[3].find("control point 4: residual 0.0500 m"), std::string::npos) << g.notes[3];
 }
 
+TEST(HpglGeoref, ControlHeaderWithPxMmMeansPaperMillimetres)
+{
+    dtm::test::ScratchDir dir;
+    dtm::test::write_file(dir / "c.csv", "px_mm,py_mm,E,N\n0,0,100,200\n10,0,105,200\n");
+    const auto points = dtm::io::hpgl::read_control_points(dir / "c.csv");
+    ASSERT_EQ(points.size(), 2u);
+    EXPECT_EQ(points[1].plotter, (Point2{400, 0}));
+    const auto t = fit_control_points(points, "c.csv");
+    EXPECT_NEAR(t.apply({400, 400}).y, 205.0, 1e-12);  // 1:500
+}
+
 TEST(HpglGeoref, CollinearOrTooFewControlPointsAreInputErrors)
 {
     EXPECT_THROW((void)fit_control_points({{{0, 0}, {0, 0}}}, "c.csv"), dtm::InputError);

@@ -9,6 +9,7 @@
 // coordinates such as S-JTSK well conditioned). Residuals and their RMS are reported.
 // Reference: Ghilani, "Adjustment Computations", 6th ed., ch. 18 (2-D conformal and affine
 // coordinate transformations).
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -66,6 +67,7 @@ std::vector<ControlPoint> read_control_points(const std::filesystem::path& file)
     std::vector<double> values;
     std::size_t number = 0;
     bool header = false;
+    double to_units = 1.0;  // a header naming px_mm, py_mm: paper millimetres
     while (std::getline(in, line)) {
         ++number;
         if (number == 1 && line.size() >= 3 && line.compare(0, 3, "\xEF\xBB\xBF") == 0) line.erase(0, 3);
@@ -75,6 +77,9 @@ std::vector<ControlPoint> read_control_points(const std::filesystem::path& file)
         if (!split_numbers(line, values, column)) {
             if (points.empty() && !header) {  // one header line before the data
                 header = true;
+                std::string lower = line;
+                for (char& ch : lower) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+                if (lower.find("px_mm") != std::string::npos) to_units = units_per_mm;
                 continue;
             }
             throw InputError(file, number, column, "expected four numbers px,py,E,N");
@@ -83,7 +88,7 @@ std::vector<ControlPoint> read_control_points(const std::filesystem::path& file)
             throw InputError(file, number, 0,
                              "expected four numbers px,py,E,N, found " + std::to_string(values.size()));
         }
-        points.push_back({{values[0], values[1]}, {values[2], values[3]}});
+        points.push_back({{values[0] * to_units, values[1] * to_units}, {values[2], values[3]}});
     }
     return points;
 }

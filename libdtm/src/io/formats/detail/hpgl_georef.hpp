@@ -34,7 +34,8 @@ struct Georeference {
 };
 
 /// Reads a control-point CSV: "px,py,E,N" per line (',', ';', tab or blanks between values),
-/// '#' comments, an optional header line. @throws InputError with file, line and column.
+/// '#' comments, an optional header line. px, py are plotter units, or paper millimetres when
+/// the header names them px_mm, py_mm. @throws InputError with file, line and column.
 [[nodiscard]] std::vector<ControlPoint> read_control_points(const std::filesystem::path& file);
 
 /// Least-squares fit: 2 points give the exact similarity, 3 or more an affine transform.
