@@ -128,6 +128,11 @@ Target choose_target(const LoadOptions& options, const std::vector<Loaded>& load
     Target target;
     if (!options.target_crs.empty()) {
         target.wkt = crs_to_wkt(options.target_crs, "--target-crs");
+        if (crs_is_geographic(target.wkt)) {
+            throw UsageError("--target-crs: expected a projected CRS (metres), found the "
+                             "geographic " + crs_label(target.wkt) +
+                             "; triangulating degrees is wrong");
+        }
         return target;
     }
     for (const Loaded& l : loaded) {

@@ -83,6 +83,14 @@ TEST(LoadInputs, TargetCrsTransformsEveryInput)
     EXPECT_LT(loaded.terrain.points[0].x, 166000.0 + 50000.0);  // far west of zone 34
 }
 
+TEST(LoadInputs, GeographicTargetCrsIsRefused)
+{
+    LoadOptions options = files({{dtm::test::data_path("readers/gnss_latlon.csv"),
+                                  InputRole::points}});
+    options.target_crs = "EPSG:4326";
+    EXPECT_THROW((void)dtm::io::load_inputs(options), dtm::UsageError);
+}
+
 TEST(LoadInputs, InputsInAnotherCrsGoIntoTheFirstOnes)
 {
     dtm::test::ScratchDir dir;
