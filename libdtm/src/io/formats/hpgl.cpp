@@ -78,16 +78,17 @@ struct Output {
     }
 };
 
-void emit(const hpgl::TerrainPlan& plan, const std::filesystem::path& path, Output& out)
+void emit(hpgl::TerrainPlan& plan, const std::filesystem::path& path, Output& out)
 {
     TerrainInput& t = out.result.terrain;
     for (const hpgl::SpotHeight& s : plan.spots) t.points.push_back(out.place({s.at.x, s.at.y, s.z}, true));
-    for (const hpgl::RoleLine& line : plan.lines) {
+    for (hpgl::RoleLine& line : plan.lines) {
         Polyline poly;
         poly.closed = line.closed;
         poly.source = path.string() + ":byte " + std::to_string(line.offset);
         const bool hard = line.role != PenRole::soft_breakline && line.height_vertices > 0;
-        for (const Point3& p : line.points) poly.points.push_back(out.place(p, hard));
+        for (Point3& p : line.points) p = out.place(p, hard);
+        poly.points = std::move(line.points);
         switch (line.role) {
         case PenRole::breakline: t.breaklines.push_back(std::move(poly)); break;
         case PenRole::soft_breakline: t.soft_breaklines.push_back(std::move(poly)); break;
@@ -192,7 +193,8 @@ ReadResult read_hpgl(const InputFile& file, const LoadOptions& options, const Pr
     plot_options.circle_marker_radius = hpgl_options.marker_radius_mm * hpgl::units_per_mm;
     plot_options.strict = !options.skip_bad_lines;
     hpgl::Plot plot = hpgl::plot_hpgl(bytes, file.path, plot_options, progress.sub(0.0, 0.9));
-    const hpgl::TerrainPlan plan = hpgl::build_terrain_plan(plot, hpgl_options);
+    hpgl::TerrainPlan plan = hpgl::build_terrain_plan(plot, hpgl_options);
+    std::vector<hpgl::PlotLine>().swap(plot.lines);  // the plan holds what is needed; free memory
     progress.check();
 
     ReadResult result;
