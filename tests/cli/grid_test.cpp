@@ -152,3 +152,68 @@ TEST(CliGrid, BadUsageExitsWithTwoAndWritesNothing) {
 }
 
 }  // namespace
+
+#include "dtm/geom/predicates.hpp"
+#include "dtm/io/tin_file.hpp"
+
+namespace {
+
+TEST(CliGrid, RealSjtskSurveyWithBreaklinesEqualsBruteForceOnItsTin) {
+    const std::string base = "points-cz-sjtsk-jvf-dtm/derived/";
+    if (!dtm::test::shared_data_available(base + "zps_points_pointz.shp")) {
+        GTEST_SKIP() << "shared data not available";
+    }
+    const dtm::test::ScratchDir dir;
+    const std::vector<std::string> inputs{
+        dtm::test::shared_data_path(base + "zps_points_pointz.shp").string(), "--breaklines",
+        dtm::test::shared_data_path(base + "zps_breaklines_polylinez.shp").string()};
+    std::vector<std::string> tin_args{"tin"}, grid_args{"grid"};
+    tin_args.insert(tin_args.end(), inputs.begin(), inputs.end());
+    grid_args.insert(grid_args.end(), inputs.begin(), inputs.end());
+    tin_args.insert(tin_args.end(), {"-o", (dir / "tin.ply").string(), "-q"});
+    grid_args.insert(grid_args.end(), {"-o", (dir / "dem.tif").string(), "--cell", "1.5", "-q"});
+    ASSERT_EQ(dtm::test::run_dtm(tin_args).exit_code, 0);
+    const auto r = dtm::test::run_dtm(grid_args);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const dtm::Tin tin = dtm::io::read_tin_ply(dir / "tin.ply").tin;
+    Dataset ds = open_raster(dir / "dem.tif");
+    ASSERT_TRUE(ds);
+    double gt[6];
+    ds->GetGeoTransform(gt);
+    const int cols = ds->GetRasterXSize(), rows = ds->GetRasterYSize();
+    std::vector<float> v(static_cast<std::size_t>(cols * rows));
+    ASSERT_EQ(ds->GetRasterBand(1)->RasterIO(GF_Read, 0, 0, cols, rows, v.data(), cols, rows,
+                                             GDT_Float32, 0, 0, nullptr),
+              CE_None);
+    const float nodata = static_cast<float>(ds->GetRasterBand(1)->GetNoDataValue());
+    std::size_t checked = 0;
+    for (int row = 0; row < rows; ++row) {
+        for (int col = 0; col < cols; ++col) {
+            const double x = gt[0] + (col + 0.5) * gt[1], y = gt[3] + (row + 0.5) * gt[5];
+            double expected = std::nan("");
+            for (const dtm::Triangle& t : tin.triangles) {
+                const auto &a = tin.vertices[t.v[0]], &b = tin.vertices[t.v[1]],
+                           &c = tin.vertices[t.v[2]];
+                if (dtm::geom::orient2d(a.x, a.y, b.x, b.y, x, y) >= 0 &&
+                    dtm::geom::orient2d(b.x, b.y, c.x, c.y, x, y) >= 0 &&
+                    dtm::geom::orient2d(c.x, c.y, a.x, a.y, x, y) >= 0) {
+                    const double det = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
+                    const double wb = ((x - a.x) * (c.y - a.y) - (c.x - a.x) * (y - a.y)) / det;
+                    const double wc = ((b.x - a.x) * (y - a.y) - (x - a.x) * (b.y - a.y)) / det;
+                    expected = (1 - wb - wc) * a.z + wb * b.z + wc * c.z;
+                    break;
+                }
+            }
+            const float got = v[static_cast<std::size_t>(row * cols + col)];
+            if (std::isnan(expected)) {
+                ASSERT_EQ(got, nodata) << row << "," << col;
+            } else {
+                ASSERT_NEAR(got, expected, 1e-3) << row << "," << col;
+                ++checked;
+            }
+        }
+    }
+    EXPECT_GT(checked, 1000U);
+}
+
+}  // namespace
