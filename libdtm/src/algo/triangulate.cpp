@@ -72,18 +72,20 @@ Kernel build_kernel(const MergedInput& in, bool with_soft, const TriangulateOpti
     points.reserve(in.vertices.size());
     for (std::size_t i = 0; i < in.vertices.size(); ++i) {
         if (!with_soft && !in.z_known[i]) continue;
-        points.push_back({in.vertices[i].x, in.vertices[i].y, static_cast<std::uint32_t>(i)});
+        points.push_back({{in.vertices[i].x, in.vertices[i].y}, static_cast<std::uint32_t>(i)});
     }
     detail::DelaunayDcOptions dc;
     dc.parallel_cutoff = parallel_cutoff(points.size(), options);
+    const std::size_t kernel_count = points.size();
     detail::delaunay_divide_and_conquer(points, k.mesh, k.slots, dc, progress.sub(0.0, 0.7));
     std::vector<detail::VertexId> kernel_of(in.vertices.size(), detail::no_edge);
-    k.vertex_of_kernel.resize(points.size());
-    k.z.resize(points.size());
-    for (std::size_t v = 0; v < points.size(); ++v) {
-        k.vertex_of_kernel[v] = points[v].id;
-        kernel_of[points[v].id] = static_cast<detail::VertexId>(v);
-        k.z[v] = in.vertices[points[v].id].z;
+    k.vertex_of_kernel.resize(kernel_count);
+    k.z.resize(kernel_count);
+    for (std::size_t v = 0; v < kernel_count; ++v) {
+        const std::uint32_t id = k.mesh.points[v].id;
+        k.vertex_of_kernel[v] = id;
+        kernel_of[id] = static_cast<detail::VertexId>(v);
+        k.z[v] = in.vertices[id].z;
     }
     k.seconds_triangulate = seconds_since(start);
 
@@ -97,8 +99,8 @@ Kernel build_kernel(const MergedInput& in, bool with_soft, const TriangulateOpti
     }
     detail::insert_segments(editor, k.mesh, segments, progress.sub(0.7, 1.0));
     const auto first_added = static_cast<VertexIndex>(in.vertices.size());
-    for (std::size_t v = points.size(); v < k.mesh.points.size(); ++v) {
-        k.vertex_of_kernel.push_back(first_added + static_cast<VertexIndex>(v - points.size()));
+    for (std::size_t v = kernel_count; v < k.mesh.points.size(); ++v) {
+        k.vertex_of_kernel.push_back(first_added + static_cast<VertexIndex>(v - kernel_count));
     }
     k.crossings = editor.crossings();
     k.seconds_constrain = seconds_since(start);
@@ -178,11 +180,13 @@ TriangulateResult run(TerrainInput&& input, const TriangulateOptions& options,
     start = std::chrono::steady_clock::now();
     std::vector<Point3> vertices = std::move(merged.vertices);
     const std::size_t merged_count = vertices.size();
+    vertices.reserve(std::max(merged_count, k.mesh.points.size()));
     for (std::size_t v = 0; v < k.mesh.points.size(); ++v) {
         if (k.vertex_of_kernel[v] >= merged_count) {  // added at crossings, in order
             vertices.push_back({k.mesh.points[v].x, k.mesh.points[v].y, k.z[v]});
         }
     }
+    k.z = {};  // heights live in `vertices` now
     detail::TinDraft draft = detail::mesh_to_tin(k.mesh, k.vertex_of_kernel, std::move(vertices));
     k.mesh = detail::EdgeMesh{};
     result.stats.removed_triangles =

@@ -112,13 +112,14 @@ inline constexpr double incircle_underflow_guard = 0x1p-500;
     return detail::incircle_adaptive(ax, ay, bx, by, cx, cy, dx, dy, permanent);
 }
 
-template <class P>
-[[nodiscard]] inline int orient2d(const P& a, const P& b, const P& c) noexcept {
+/// Point overloads: any types with x and y members (Point2, Point3, ...), mixed freely.
+template <class A, class B, class C>
+[[nodiscard]] inline int orient2d(const A& a, const B& b, const C& c) noexcept {
     return orient2d(a.x, a.y, b.x, b.y, c.x, c.y);
 }
 
-template <class P>
-[[nodiscard]] inline int incircle(const P& a, const P& b, const P& c, const P& d) noexcept {
+template <class A, class B, class C, class D>
+[[nodiscard]] inline int incircle(const A& a, const B& b, const C& c, const D& d) noexcept {
     return incircle(a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y);
 }
 

@@ -248,8 +248,8 @@ void delaunay_divide_and_conquer(std::vector<KernelPoint>& points, EdgeMesh& mes
         builder.build(0, n, 0, 0, slots, n + 1);
     }
     slots.end = static_cast<EdgeId>(mesh.slot_count());
-    mesh.points.resize(n);
-    for (std::size_t i = 0; i < n; ++i) mesh.points[i] = {points[i].x, points[i].y};
+    mesh.points = std::move(points);
+    points = {};
 }
 
 }  // namespace dtm::detail

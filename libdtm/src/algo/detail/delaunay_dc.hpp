@@ -12,13 +12,6 @@
 
 namespace dtm::detail {
 
-/// A point of the kernel: position and the caller's index.
-struct KernelPoint {
-    double x;
-    double y;
-    std::uint32_t id;
-};
-
 struct DelaunayDcOptions {
     /// Subtrees larger than this are built as parallel tasks (tiles); 0 = everything sequential.
     /// The triangulation never depends on it: only where the work runs does.
@@ -26,8 +19,8 @@ struct DelaunayDcOptions {
 };
 
 /// Delaunay triangulation of @p points (pairwise distinct in xy, at least 2) into @p mesh.
-/// Reorders @p points (the final order is the kernel vertex numbering: vertex v of the mesh is
-/// points[v]) and fills mesh.points. On return @p slots describes the free edge slots.
+/// Takes over @p points (left empty): reordered, they become mesh.points, and their order is the
+/// kernel vertex numbering. On return @p slots describes the free edge slots.
 /// Collinear input gives a chain of edges and no triangle.
 /// @throws Cancelled when @p progress asks to stop.
 void delaunay_divide_and_conquer(std::vector<KernelPoint>& points, EdgeMesh& mesh, EdgeSlots& slots,

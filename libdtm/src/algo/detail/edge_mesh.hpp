@@ -31,6 +31,11 @@ using EdgeId = std::uint32_t;
 using VertexId = std::uint32_t;
 inline constexpr EdgeId no_edge = 0xffffffffu;
 
+/// A vertex of the kernel: position and the caller's index (kept through the partitioning).
+struct KernelPoint : Point2 {
+    std::uint32_t id = 0;
+};
+
 /// Bit flags per undirected edge: which constraint kinds run along it.
 enum ConstraintBits : std::uint8_t {
     constraint_none = 0,
@@ -58,7 +63,7 @@ struct EdgeSlots {
 };
 
 struct EdgeMesh {
-    std::vector<Point2> points;   ///< vertex positions (kernel order)
+    std::vector<KernelPoint> points;  ///< vertex positions (kernel order) and caller's ids
     std::vector<VertexId> org;    ///< per directed edge
     std::vector<EdgeId> onext;    ///< per directed edge
     std::vector<EdgeId> oprev;    ///< per directed edge
@@ -92,7 +97,7 @@ struct EdgeMesh {
     [[nodiscard]] EdgeId lprev(EdgeId e) const noexcept { return onext[e] ^ 1u; }
     [[nodiscard]] EdgeId rprev(EdgeId e) const noexcept { return onext[e ^ 1u]; }
     [[nodiscard]] EdgeId rnext(EdgeId e) const noexcept { return oprev[e] ^ 1u; }
-    [[nodiscard]] const Point2& p(VertexId v) const noexcept { return points[v]; }
+    [[nodiscard]] const KernelPoint& p(VertexId v) const noexcept { return points[v]; }
     [[nodiscard]] bool is_constrained(EdgeId e) const noexcept { return constrained[e >> 1] != 0; }
 
     EdgeId make_edge(EdgeSlots& slots, VertexId a, VertexId b)

@@ -67,7 +67,7 @@ void MeshEditor::ensure_slots(std::size_t count)
 
 VertexId MeshEditor::add_vertex(Point2 p, double z)
 {
-    mesh_.points.push_back(p);
+    mesh_.points.push_back({p, no_edge});
     z_.push_back(z);
     vertex_edge_.push_back(no_edge);
     return static_cast<VertexId>(mesh_.points.size() - 1);

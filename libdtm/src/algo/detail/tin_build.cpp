@@ -138,6 +138,7 @@ TinDraft mesh_to_tin(EdgeMesh& m, const std::vector<VertexIndex>& kernel_to_vert
     release(m.onext);  // from here on only org and oprev (lnext) are read
     release(m.alive);
     release(m.constrained);
+    release(m.points);
 
     std::vector<Triangle>& tris = draft.tin.triangles;
     tris.resize(count);
