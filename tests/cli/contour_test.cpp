@@ -115,3 +115,98 @@ TEST(CliContour, BadUsageExitsWithTwoAndWritesNothing) {
 }
 
 }  // namespace
+
+#include <set>
+
+#include "dtm/io/tin_file.hpp"
+
+namespace {
+
+/// Level-set length of the TIN at @p level, triangle by triangle; a piece along an edge (both
+/// ends on the level) counts once, and only when a triangle beside it goes below the level.
+double independent_length(const dtm::Tin& tin, double level) {
+    double sum = 0.0;
+    std::set<std::pair<std::uint32_t, std::uint32_t>> along;
+    for (const dtm::Triangle& t : tin.triangles) {
+        std::vector<std::pair<double, double>> pts;
+        std::vector<std::uint32_t> on;
+        bool below = false;
+        for (std::size_t e = 0; e < 3; ++e) {
+            const dtm::Point3& p = tin.vertices[t.v[e]];
+            const dtm::Point3& q = tin.vertices[t.v[(e + 1) % 3]];
+            below = below || p.z < level;
+            if (p.z == level) {
+                pts.emplace_back(p.x, p.y);
+                on.push_back(t.v[e]);
+            } else if ((p.z < level && q.z > level) || (p.z > level && q.z < level)) {
+                const double s = (level - p.z) / (q.z - p.z);
+                pts.emplace_back(p.x + s * (q.x - p.x), p.y + s * (q.y - p.y));
+            }
+        }
+        if (pts.size() != 2 ||
+            (on.size() == 2 && (!below || !along.insert(std::minmax(on[0], on[1])).second))) {
+            continue;
+        }
+        sum += std::hypot(pts[0].first - pts[1].first, pts[0].second - pts[1].second);
+    }
+    return sum;
+}
+
+/// Whether (x, y) is the linear interpolation of @p level on some TIN edge crossing it.
+bool on_tin_edge(const dtm::Tin& tin, double x, double y, double level) {
+    for (const dtm::Triangle& t : tin.triangles) {
+        for (std::size_t e = 0; e < 3; ++e) {
+            dtm::Point3 a = tin.vertices[t.v[e]], b = tin.vertices[t.v[(e + 1) % 3]];
+            if (a.z > b.z) std::swap(a, b);
+            if (!(a.z < level && level <= b.z)) continue;
+            const double s = (level - a.z) / (b.z - a.z);
+            if (std::abs(a.x + s * (b.x - a.x) - x) < 1e-6 &&
+                std::abs(a.y + s * (b.y - a.y) - y) < 1e-6) {
+                return true;
+            }
+        }
+    }
+    return false;
+}
+
+TEST(CliContour, RealSjtskSurveyContoursLieOnTinEdgesWithTheIndependentLengthPerLevel) {
+    const std::string base = "points-cz-sjtsk-jvf-dtm/derived/";
+    if (!dtm::test::shared_data_available(base + "zps_points_pointz.shp")) {
+        GTEST_SKIP() << "shared data not available";
+    }
+    const dtm::test::ScratchDir dir;
+    const std::string points = dtm::test::shared_data_path(base + "zps_points_pointz.shp").string();
+    const std::string lines =
+        dtm::test::shared_data_path(base + "zps_breaklines_polylinez.shp").string();
+    ASSERT_EQ(dtm::test::run_dtm(
+                  {"tin", points, "--breaklines", lines, "-o", (dir / "tin.ply").string(), "-q"})
+                  .exit_code,
+              0);
+    // Contour the very same TIN (PLY input: no second triangulation).
+    const auto r = dtm::test::run_dtm({"contour", (dir / "tin.ply").string(), "-o",
+                                       (dir / "c.gpkg").string(), "--interval", "0.25", "-q"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const dtm::Tin tin = dtm::io::read_tin_ply(dir / "tin.ply").tin;
+    Dataset ds = open_vector(dir / "c.gpkg");
+    ASSERT_TRUE(ds);
+    std::map<double, double> length;
+    for (auto& feature : *ds->GetLayer(0)) {
+        const double level = feature->GetFieldAsDouble("elevation");
+        const OGRLineString* line = feature->GetGeometryRef()->toLineString();
+        for (int i = 0; i < line->getNumPoints(); ++i) {
+            ASSERT_EQ(line->getZ(i), level);
+            ASSERT_TRUE(on_tin_edge(tin, line->getX(i), line->getY(i), level))
+                << level << ": " << line->getX(i) << "," << line->getY(i);
+            if (i > 0) {
+                length[level] += std::hypot(line->getX(i) - line->getX(i - 1),
+                                            line->getY(i) - line->getY(i - 1));
+            }
+        }
+    }
+    ASSERT_GT(length.size(), 5U);
+    for (const auto& [level, got] : length) {
+        EXPECT_NEAR(got, independent_length(tin, level), 1e-6 * (1.0 + got)) << level;
+    }
+}
+
+}  // namespace
