@@ -22,6 +22,7 @@
 #include <memory>
 #include <string>
 #include <system_error>
+#include <utility>
 #include <vector>
 
 #include "command.hpp"
@@ -167,6 +168,7 @@ struct BuildState {
     SurfaceStats surface;
     io::BuildReport report;
     std::vector<std::string> files;  ///< written into the staging folder, in order
+    std::size_t survey_points = 0;   ///< survey points given to the triangulator
 };
 
 void triangulate_inputs(const BuildArgs& args, BuildState& state, const Progress& progress) {
@@ -175,13 +177,17 @@ void triangulate_inputs(const BuildArgs& args, BuildState& state, const Progress
         state.result.tin = std::move(*state.inputs.tin);
         state.inputs.tin.reset();
         state.result.stats.points_in = state.result.tin.vertices.size();
+        state.survey_points = state.result.tin.vertices.size();
         state.result.input_to_vertex.resize(state.result.tin.vertices.size());
         for (std::size_t i = 0; i < state.result.input_to_vertex.size(); ++i) {
             state.result.input_to_vertex[i] = static_cast<VertexIndex>(i);
         }
         return;
     }
-    state.result = triangulate(state.inputs.terrain, args.tin, progress);
+    // The input is consumed: its memory goes as soon as the vertices are merged.
+    state.survey_points = state.inputs.terrain.points.size();
+    state.result = triangulate(std::move(state.inputs.terrain), args.tin, progress);
+    state.inputs.terrain = TerrainInput{};
 }
 
 void write_tins(BuildState& state, const Staging& staging, const Progress& progress) {
@@ -267,7 +273,7 @@ void fill_report(BuildState& state) {
     r.inputs = state.inputs.summaries;
     r.skipped_lines = state.inputs.skipped_lines;
     r.crs_wkt = state.inputs.crs_wkt;
-    r.accounting = account_inputs(state.result, state.inputs.terrain.points.size());
+    r.accounting = account_inputs(state.result, state.survey_points);
     r.triangulation = state.result.stats;
     r.conflicts = state.result.conflicts;
     r.surface = state.surface;
