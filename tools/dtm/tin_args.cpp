@@ -28,8 +28,20 @@ void add_tin_options(CLI::App& app, TriangulateOptions& options)
                    "0.001)")
         ->check(CLI::NonNegativeNumber);
     app.add_option("--threads", options.threads, "Worker threads (default 0: all cores)");
-    app.add_option("--tiles", options.tiles,
-                   "Tiles for the parallel triangulation (default 0: auto); never changes the result");
+    app.add_option_function<std::string>(
+           "--tiles",
+           [&options](const std::string& value) {
+               options.tiles = value == "auto" ? 0 : std::stoul(value);
+           },
+           "Tiles of the parallel triangulation: N or auto (default auto); never changes the "
+           "result")
+        ->check([](const std::string& value) -> std::string {
+            if (value == "auto") return {};
+            const bool digits = !value.empty() && value.size() < 10 &&
+                                value.find_first_not_of("0123456789") == std::string::npos;
+            return digits && std::stoul(value) > 0 ? std::string{}
+                                                   : "--tiles takes a positive number or auto";
+        });
 }
 
 }  // namespace dtm::cli
