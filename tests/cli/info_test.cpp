@@ -84,3 +84,38 @@ TEST(CliInfo, ShapefilesReportTheirPrjCrs)
 }
 
 }  // namespace
+
+namespace {
+
+TEST(CliInputs, RepeatableRoleOptionsTakeOneFileEachAndLeavePositionalsAlone)
+{
+    const auto lines = dtm::test::data_path("readers/polylines.csv").string();
+    const auto points = dtm::test::data_path("readers/count_line.xyz").string();
+    const auto r = run_dtm({"info", "--breaklines", lines, points, "--holes", lines, "--holes",
+                            points, "--json"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    // order: positional points, then breaklines, then holes
+    const auto first = r.out.find("\"path\": \"" + points + "\", \"format\": \"text\", \"crs\": "
+                                  "null, \"points\": 3,");
+    EXPECT_NE(first, std::string::npos) << r.out;
+    EXPECT_TRUE(contains(r.out, "\"points\": 0, \"breaklines\": 0, \"breakline_vertices\": 0, "
+                                "\"boundaries\": 0, \"holes\": 3,"))
+        << r.out;  // the point file given as --holes: 3 seeds
+}
+
+TEST(CliInputs, HurdvilleSurveyTriangulatesWithBoundaryAndHoles)
+{
+    const std::string d = "points-breaklines-pputils-hurdville/";
+    if (!dtm::test::shared_data_available(d + "nodes.csv")) GTEST_SKIP();
+    const auto p = [&](const char* f) { return dtm::test::shared_data_path(d + f).string(); };
+    dtm::test::ScratchDir dir;
+    const auto out = (dir / "h.ply").string();
+    const auto r = run_dtm({"tin", p("nodes.csv"), "--soft-breaklines", p("lines.csv"),
+                            "--boundary", p("boundary.csv"), "--holes", p("holes.csv"), "--snap",
+                            "0.001", "-q", "-o", out, "--stats"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_TRUE(contains(r.out, "\"constrained_edges\":")) << r.out;
+    EXPECT_FALSE(dtm::test::read_file(out).empty());
+}
+
+}  // namespace
