@@ -10,10 +10,12 @@
 //    prefix sums, fill), so a band only looks at the triangles that can touch it.
 // 2. Scan conversion (parallel over bands, tbb::parallel_pipeline). For every triangle of the
 //    band and every row whose centre line crosses its y-extent, the x-interval of the triangle
-//    on that line is estimated in floating point and widened by one cell; candidate centres are
-//    then tested exactly with orient2d from both ends inwards. The triangle meets a row in one
+//    on that line is estimated in floating point (error bounded by a margin tol far above the
+//    few rounding errors involved) and widened by one cell; candidate centres are then examined
+//    from both ends inwards. A centre farther than tol from the estimated ends is decided by the
+//    estimate; one within tol is tested exactly with orient2d. The triangle meets a row in one
 //    segment (convexity), so every centre between the first and the last accepted one is inside
-//    without further tests: the exact predicate is the arbiter, the fill is the fast path.
+//    without further tests: the exact predicate decides every close call, the rest is fast.
 // 3. Output (serial, in order): finished bands go to the GridSink north to south while later
 //    bands are still being computed; at most a few bands are alive at once (bounded memory).
 //
@@ -143,10 +145,11 @@ public:
 
     /// x-interval of the triangle on the line y (floating point, approximate); false if the line
     /// misses the triangle (this test is exact).
-    bool span(double y, double& xl, double& xr) const {
+    bool span(double y, double& xl, double& xr, double& tol) const {
         bool hit = false;
         xl = std::numeric_limits<double>::infinity();
         xr = -xl;
+        double magnitude = 0.0;
         for (int e = 0; e < 3; ++e) {
             const Point3& a = *p_[(e + 1) % 3];
             const Point3& b = *p_[(e + 2) % 3];
@@ -154,6 +157,7 @@ public:
                 continue;
             }
             hit = true;
+            magnitude = std::max({magnitude, std::abs(a.x), std::abs(b.x)});
             if (a.y == b.y) {
                 xl = std::min({xl, a.x, b.x});
                 xr = std::max({xr, a.x, b.x});
@@ -163,6 +167,8 @@ public:
                 xr = std::max(xr, x);
             }
         }
+        // A few rounding errors of size eps * magnitude at most; the margin is 10^4 times that.
+        tol = 1e-12 * magnitude + std::numeric_limits<double>::min();
         return hit;
     }
 
@@ -268,8 +274,8 @@ void scan_triangle(const Tin& tin,
     const double max_col = static_cast<double>(spec.cols) - 1.0;
     for (auto r = static_cast<std::size_t>(first); r <= static_cast<std::size_t>(last); ++r) {
         const double y = spec.center_y(r);
-        double xl = 0.0, xr = 0.0;
-        if (!tri.span(y, xl, xr)) {
+        double xl = 0.0, xr = 0.0, tol = 0.0;
+        if (!tri.span(y, xl, xr, tol)) {
             continue;
         }
         const double clo = std::max(std::ceil((xl - spec.xmin) / spec.cell - 0.5) - 1.0, 0.0);
@@ -277,22 +283,36 @@ void scan_triangle(const Tin& tin,
         if (clo > chi) {
             continue;
         }
+        const int flat = tri.horizontal_edge_at(y);
+        // Fast path: centres farther than tol from the estimated span ends are decided by the
+        // estimate (clearly outside, or strictly inside the span on a row that is not a
+        // horizontal edge); only the others go to the exact test.
+        const auto owns = [&](std::size_t c, float& z) {
+            const double x = spec.center_x(c);
+            if (x < xl - tol || x > xr + tol) {
+                return false;
+            }
+            if (flat < 0 && x > xl + tol && x < xr - tol) {
+                z = static_cast<float>(tri.plane(x, y));
+                return true;
+            }
+            return tri.sample(x, y, z);
+        };
         float* out = band.data() + (r - row0) * spec.cols;
         auto lo = static_cast<std::size_t>(clo);
         auto hi = static_cast<std::size_t>(chi);
         float z = 0.0F;
-        while (lo <= hi && !tri.sample(spec.center_x(lo), y, z)) {
+        while (lo <= hi && !owns(lo, z)) {
             ++lo;
         }
         if (lo > hi) {
             continue;
         }
         out[lo] = z;
-        while (hi > lo && !tri.sample(spec.center_x(hi), y, z)) {
+        while (hi > lo && !owns(hi, z)) {
             --hi;
         }
         out[hi] = z;
-        const int flat = tri.horizontal_edge_at(y);
         for (std::size_t c = lo + 1; c < hi; ++c) {
             const double x = spec.center_x(c);
             out[c] = static_cast<float>(flat >= 0 ? tri.along_edge(flat, x, y) : tri.plane(x, y));
