@@ -435,14 +435,27 @@ Box2 tin_bounds(const Tin& tin) {
 GridSpec snapped_grid_spec(const Box2& box, double cell) {
     GridSpec spec;
     spec.cell = cell;
+    // Multiples of the cell size, moved out by one more cell if rounding put them inside the box.
     spec.xmin = std::floor(box.xmin / cell) * cell;
     spec.ymax = std::ceil(box.ymax / cell) * cell;
-    const double xmax = std::ceil(box.xmax / cell) * cell;
-    const double ymin = std::floor(box.ymin / cell) * cell;
-    spec.cols =
-        std::max<std::size_t>(1, static_cast<std::size_t>(std::llround((xmax - spec.xmin) / cell)));
-    spec.rows =
-        std::max<std::size_t>(1, static_cast<std::size_t>(std::llround((spec.ymax - ymin) / cell)));
+    if (spec.xmin > box.xmin) {
+        spec.xmin -= cell;
+    }
+    if (spec.ymax < box.ymax) {
+        spec.ymax += cell;
+    }
+    const auto count = [cell](double from, double to) {  // whole cells covering [from, to]
+        auto n = std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil((to - from) / cell)));
+        while (from + static_cast<double>(n) * cell < to) {
+            ++n;
+        }
+        return n;
+    };
+    spec.cols = count(spec.xmin, box.xmax);
+    spec.rows = count(box.ymin, spec.ymax);
+    while (spec.ymin() > box.ymin) {
+        ++spec.rows;
+    }
     return spec;
 }
 

@@ -227,6 +227,23 @@ TEST(Rasterize, SnappedSpecCoversTheBoxWithEdgesOnCellMultiples) {
     EXPECT_LE(s.ymin(), box.ymin);
 }
 
+TEST(Rasterize, SnappedSpecCoversTheBoxForCellSizesThatAreNotBinaryFractions) {
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> u(-1000.0, 1000.0);
+    for (const double cell : {0.1, 0.3, 0.7, 1.1, 2.5}) {
+        for (int i = 0; i < 200; ++i) {
+            const double x = -750'000.0 + u(rng), y = -1'050'000.0 + u(rng);
+            const dtm::Box2 box{x, y, x + std::abs(u(rng)), y + std::abs(u(rng))};
+            const dtm::GridSpec s = dtm::snapped_grid_spec(box, cell);
+            ASSERT_LE(s.xmin, box.xmin);
+            ASSERT_GE(s.xmax(), box.xmax);
+            ASSERT_LE(s.ymin(), box.ymin);
+            ASSERT_GE(s.ymax, box.ymax);
+            ASSERT_LT(s.xmax() - box.xmax, cell * 1.000001 + (box.xmin - s.xmin));
+        }
+    }
+}
+
 TEST(Rasterize, ExtentSpecUsesTheExtentAsOuterEdges) {
     const dtm::GridSpec s = dtm::extent_grid_spec({0.0, 0.0, 2000.0, 1000.0}, 1.0);
     EXPECT_EQ(s.cols, 2000U);
