@@ -39,7 +39,8 @@ public:
 /// vertex heights; a centre outside every triangle (outside the hull, the boundary, in a hole)
 /// gets options.nodata. Inside tests are exact (orient2d); a centre on an edge shared by two
 /// triangles is assigned to exactly one of them and gets the same value from either.
-/// Bands are computed in parallel and handed to the sink in order.
+/// Bands are computed in parallel and handed to the sink in order. Memory: the bands in flight
+/// plus a copy of the TIN with its vertices renumbered in first-use order (cache-friendly reads).
 /// @throws Cancelled
 void rasterize(const Tin& tin,
                const GridSpec& spec,
