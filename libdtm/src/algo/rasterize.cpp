@@ -44,6 +44,7 @@
 #include <string>
 #include <vector>
 
+#include "algo/detail/raster_vertex_order.hpp"
 #include "dtm/core/error.hpp"
 #include "dtm/geom/predicates.hpp"
 
@@ -320,28 +321,6 @@ void scan_triangle(const Tin& tin,
     }
 }
 
-/// A copy of the TIN whose vertices are renumbered in first-use order. Triangles come in a
-/// spatially coherent order but vertices keep the input order (often random), so reading the
-/// corners of each triangle would be three cache misses, once when bucketing and once when
-/// scanning; after one renumbering pass the reads follow the triangles through memory.
-Tin with_coherent_vertices(const Tin& tin) {
-    Tin out;
-    out.triangles = tin.triangles;
-    out.vertices.reserve(tin.vertices.size());
-    std::vector<VertexIndex> renumber(tin.vertices.size(), no_vertex);
-    for (Triangle& t : out.triangles) {
-        for (VertexIndex& v : t.v) {
-            VertexIndex& to = renumber[v];
-            if (to == no_vertex) {
-                to = static_cast<VertexIndex>(out.vertices.size());
-                out.vertices.push_back(tin.vertices[v]);
-            }
-            v = to;
-        }
-    }
-    return out;
-}
-
 std::size_t choose_band_rows(const GridSpec& spec, const RasterizeOptions& options) {
     if (options.band_rows > 0) {
         return options.band_rows;
@@ -424,7 +403,7 @@ void rasterize(const Tin& tin,
         throw UsageError("rasterize: " + std::to_string(spec.cols) + " x " +
                          std::to_string(spec.rows) + " cells is too large");
     }
-    const Tin local = with_coherent_vertices(tin);
+    const Tin local = detail::with_coherent_vertices(tin);
     const Buckets buckets = make_buckets(local, spec, choose_band_rows(spec, options));
     progress.report(0.0, "rasterize");
     if (options.threads > 0) {
