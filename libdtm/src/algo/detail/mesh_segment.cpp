@@ -200,18 +200,21 @@ void MeshEditor::cross_constraint(VertexId u, VertexId w, std::uint8_t bits, Edg
     } else if (at == m.p(r)) {
         x = r;
     } else {
-        m.constrained[f >> 1] = 0;  // the old constraint is re-inserted through x below
+        // Take the old constraint out and restore the constrained Delaunay property without it
+        // (Lawson flips), so that inserting x and then the four pieces keeps the mesh a CDT at
+        // every step; the old line is re-inserted through x below.
+        m.constrained[f >> 1] = 0;
+        legalize(f);
         // A soft (2-D) line takes its height from the hard one it crosses.
         const double z_x = bits == constraint_soft ? z_old
                            : f_bits == constraint_soft ? z_new
                                                        : 0.5 * (z_new + z_old);
-        x = insert_point(at, z_x, f);
+        x = insert_point(at, z_x, vertex_edge_[p]);
         if (x != p && x != r) {
-            stack.push_back({p, r, 0, true});
             stack.push_back({x, r, f_bits, false});
             stack.push_back({p, x, f_bits, false});
         } else {
-            m.constrained[f >> 1] = f_bits;
+            stack.push_back({p, r, f_bits, false});
         }
     }
     const double z_at_x = x == p || x == r ? z_[x] : z_old;
