@@ -7,6 +7,7 @@
 #include "dtm/algo/validate.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <numeric>
 #include <set>
@@ -38,6 +39,22 @@ struct XyHash {
         return std::hash<double>()(p.first) * 31u ^ std::hash<double>()(p.second);
     }
 };
+
+/// q lies on segment a-b: exactly, or within rounding of it. After two breaklines cross, each is
+/// continued from the rounded intersection point, and a vertex exactly on such a piece can sit a
+/// few units of the last place off the original segment: 1 micrometre plus 1e-9 of the length.
+bool on_or_next_to(const Point3& a, const Point3& b, const Point3& q)
+{
+    const double lo_x = std::min(a.x, b.x), hi_x = std::max(a.x, b.x);
+    const double lo_y = std::min(a.y, b.y), hi_y = std::max(a.y, b.y);
+    if (geom::orient2d(a, b, q) == 0) return lo_x <= q.x && q.x <= hi_x && lo_y <= q.y && q.y <= hi_y;
+    const double dx = b.x - a.x, dy = b.y - a.y;
+    const double length = std::hypot(dx, dy);
+    const double tolerance = 1e-6 + 1e-9 * length;
+    const double distance = std::abs(dx * (q.y - a.y) - dy * (q.x - a.x)) / length;
+    return distance <= tolerance && lo_x - tolerance <= q.x && q.x <= hi_x + tolerance &&
+           lo_y - tolerance <= q.y && q.y <= hi_y + tolerance;
+}
 
 }  // namespace
 
@@ -174,9 +191,7 @@ CheckReport verify_constraints(const Tin& tin, const TerrainInput& input,
                             break;
                         }
                         const Point3& q = tin.vertices[w];
-                        const bool on_segment = geom::orient2d(pa, pb, q) == 0 &&
-                                                std::min(pa.x, pb.x) <= q.x && q.x <= std::max(pa.x, pb.x) &&
-                                                std::min(pa.y, pb.y) <= q.y && q.y <= std::max(pa.y, pb.y);
+                        const bool on_segment = on_or_next_to(pa, pb, q);
                         const bool added = !given.count({q.x, q.y});
                         if ((on_segment || added) && seen.insert(w).second) frontier.push_back(w);
                     }

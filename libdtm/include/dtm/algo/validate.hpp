@@ -28,7 +28,9 @@ struct CheckReport {
 [[nodiscard]] CheckReport verify_constrained_delaunay(const Tin& tin);
 
 /// Every segment of every polyline of @p input (breaklines, soft breaklines, boundaries, holes) is
-/// present as a chain of constrained TIN edges along it. Polyline vertices are found by position,
+/// present as a chain of constrained TIN edges along it: through vertices exactly on it (or
+/// within rounding of it, 1 um + 1e-9 of its length, where crossings split it) and vertices
+/// added at crossings. Polyline vertices are found by position,
 /// or through @p input_to_vertex (TriangulateResult::input_to_vertex) when given, which is needed
 /// when points were snapped.
 [[nodiscard]] CheckReport verify_constraints(const Tin& tin, const TerrainInput& input,
