@@ -68,7 +68,7 @@ Kernel build_kernel(const MergedInput& in, bool with_soft, const TriangulateOpti
 {
     Kernel k;
     auto start = std::chrono::steady_clock::now();
-    std::vector<detail::KernelPoint> points;
+    detail::BigArray<detail::KernelPoint> points;
     points.reserve(in.vertices.size());
     for (std::size_t i = 0; i < in.vertices.size(); ++i) {
         if (!with_soft && !in.z_known[i]) continue;

@@ -52,7 +52,7 @@ inline bool before(int axis, const KernelPoint& a, const KernelPoint& b) noexcep
 
 class Builder {
 public:
-    Builder(std::vector<KernelPoint>& points, EdgeMesh& mesh, const DelaunayDcOptions& options,
+    Builder(BigArray<KernelPoint>& points, EdgeMesh& mesh, const DelaunayDcOptions& options,
             const Progress& progress)
         : pts_(points.data()), mesh_(mesh), options_(options), progress_(progress),
           total_(points.size()),
@@ -237,7 +237,7 @@ private:
 
 }  // namespace
 
-void delaunay_divide_and_conquer(std::vector<KernelPoint>& points, EdgeMesh& mesh, EdgeSlots& slots,
+void delaunay_divide_and_conquer(BigArray<KernelPoint>& points, EdgeMesh& mesh, EdgeSlots& slots,
                                  const DelaunayDcOptions& options, const Progress& progress)
 {
     const std::size_t n = points.size();

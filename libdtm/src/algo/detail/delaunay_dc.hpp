@@ -23,7 +23,7 @@ struct DelaunayDcOptions {
 /// kernel vertex numbering. On return @p slots describes the free edge slots.
 /// Collinear input gives a chain of edges and no triangle.
 /// @throws Cancelled when @p progress asks to stop.
-void delaunay_divide_and_conquer(std::vector<KernelPoint>& points, EdgeMesh& mesh, EdgeSlots& slots,
+void delaunay_divide_and_conquer(BigArray<KernelPoint>& points, EdgeMesh& mesh, EdgeSlots& slots,
                                  const DelaunayDcOptions& options, const Progress& progress);
 
 }  // namespace dtm::detail

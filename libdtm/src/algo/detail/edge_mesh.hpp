@@ -23,6 +23,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "algo/detail/big_array.hpp"
 #include "dtm/core/point.hpp"
 
 namespace dtm::detail {
@@ -63,12 +64,12 @@ struct EdgeSlots {
 };
 
 struct EdgeMesh {
-    std::vector<KernelPoint> points;  ///< vertex positions (kernel order) and caller's ids
-    std::vector<VertexId> org;    ///< per directed edge
-    std::vector<EdgeId> onext;    ///< per directed edge
-    std::vector<EdgeId> oprev;    ///< per directed edge
-    std::vector<std::uint8_t> constrained;  ///< per undirected edge: ConstraintBits
-    std::vector<std::uint8_t> alive;        ///< per undirected edge
+    BigArray<KernelPoint> points;  ///< vertex positions (kernel order) and caller's ids
+    BigArray<VertexId> org;        ///< per directed edge
+    BigArray<EdgeId> onext;        ///< per directed edge
+    BigArray<EdgeId> oprev;        ///< per directed edge
+    BigArray<std::uint8_t> constrained;  ///< per undirected edge: ConstraintBits
+    BigArray<std::uint8_t> alive;        ///< per undirected edge
 
     /// Reserve room for @p slot_count undirected edges.
     void resize_slots(std::size_t slot_count)

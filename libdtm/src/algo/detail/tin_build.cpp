@@ -74,10 +74,10 @@ void triangles_at(const EdgeMesh& m, VertexId v, EdgeId start, std::vector<EdgeI
     });
 }
 
-template <class T>
-void release(std::vector<T>& v)
+template <class Vector>
+void release(Vector& v)
 {
-    std::vector<T>().swap(v);
+    Vector().swap(v);
 }
 
 }  // namespace
@@ -149,7 +149,7 @@ TinDraft mesh_to_tin(EdgeMesh& m, const std::vector<VertexIndex>& kernel_to_vert
                      kernel_to_vertex[m.org[m.lnext(f1)]]};
     });
     // Neighbours through a face id per directed edge, stored in the origin array.
-    std::vector<std::uint32_t>& face = m.org;
+    auto& face = m.org;
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, directed), [&](const auto& r) {
         std::fill(face.begin() + static_cast<std::ptrdiff_t>(r.begin()),
                   face.begin() + static_cast<std::ptrdiff_t>(r.end()), no_triangle);
