@@ -144,6 +144,10 @@ CheckReport verify_constraints(const Tin& tin, const TerrainInput& input,
     for (VertexIndex v = 0; v < tin.vertices.size(); ++v) at[{tin.vertices[v].x, tin.vertices[v].y}] = v;
     std::unordered_set<std::pair<double, double>, XyHash> given;
     for (const Point3& p : input.points) given.insert({p.x, p.y});
+    std::vector<bool> used(tin.vertices.size(), false);
+    for (const Triangle& t : tin.triangles) {
+        for (const VertexIndex v : t.v) used[v] = true;
+    }
     std::unordered_map<VertexIndex, std::vector<VertexIndex>> adjacent;
     for (const ConstrainedEdge& c : tin.constraints) {
         adjacent[c.a].push_back(c.b);
@@ -175,6 +179,7 @@ CheckReport verify_constraints(const Tin& tin, const TerrainInput& input,
                     continue;
                 }
                 if (va == vb) continue;
+                if (!used[va] || !used[vb]) continue;  // outside the boundary or in a hole
                 const Point3& pa = tin.vertices[va];
                 const Point3& pb = tin.vertices[vb];
 
