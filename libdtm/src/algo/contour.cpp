@@ -162,8 +162,6 @@ std::vector<detail::RawChain> split_chain(const detail::RawChain& chain) {
     return pieces;
 }
 
-using LevelOutput = std::pair<std::size_t, std::vector<Contour>>;
-
 /// Smoothing bounds: the midpoints to the neighbouring levels (infinite at the ends).
 std::pair<double, double> level_band(const std::vector<double>& values,
                                      std::size_t k,
@@ -219,26 +217,31 @@ void run_levels(const Tin& tin,
         }
         return next++;
     };
-    auto compute = [&](std::size_t k) -> LevelOutput {
+    // Each level's lines live in `traced` (owned here), and only level indices travel through the
+    // pipeline: when a cancellation unwinds it, nothing in flight can be left undestroyed.
+    std::vector<std::vector<Contour>> traced(levels.size());
+    auto compute = [&](std::size_t k) -> std::size_t {
         progress.check();
         const std::span<const TriangleIndex> crossing(buckets.triangles.data() + buckets.offsets[k],
                                                       buckets.offsets[k + 1] - buckets.offsets[k]);
-        return {k, trace_one_level(tin, levels[k], crossing, level_band(values, k, options),
-                                   options.smooth, visited.local())};
+        traced[k] = trace_one_level(tin, levels[k], crossing, level_band(values, k, options),
+                                    options.smooth, visited.local());
+        return k;
     };
-    auto emit = [&](const LevelOutput& output) {
-        for (const Contour& c : output.second) {
+    auto emit = [&](std::size_t k) {
+        for (const Contour& c : traced[k]) {
             sink.add(c.level, c.line, c.closed);
         }
-        progress.report(static_cast<double>(output.first + 1) / static_cast<double>(levels.size()),
+        std::vector<Contour>().swap(traced[k]);
+        progress.report(static_cast<double>(k + 1) / static_cast<double>(levels.size()),
                         "contour");
     };
     const auto tokens = static_cast<std::size_t>(2 * tbb::this_task_arena::max_concurrency());
     tbb::parallel_pipeline(
         tokens,
         tbb::make_filter<void, std::size_t>(tbb::filter_mode::serial_in_order, source) &
-            tbb::make_filter<std::size_t, LevelOutput>(tbb::filter_mode::parallel, compute) &
-            tbb::make_filter<LevelOutput, void>(tbb::filter_mode::serial_in_order, emit));
+            tbb::make_filter<std::size_t, std::size_t>(tbb::filter_mode::parallel, compute) &
+            tbb::make_filter<std::size_t, void>(tbb::filter_mode::serial_in_order, emit));
 }
 
 class ContourCollector final : public ContourSink {
