@@ -3,6 +3,7 @@
 # warnings as errors, and runs the test suite.
 # Usage: scripts/run-tests.sh [build-dir]
 #   DTM_SLOW_TESTS=1  also run the tests labelled `slow`
+#   DTM_HARDENING=1   also run the fuzzers and the sanitizer test build (always on when CI=true)
 #   DTM_SHARED_DATA_DIR is a CMake cache option: tests needing the real data skip when it is absent.
 set -euo pipefail
 
@@ -20,8 +21,14 @@ fi
 echo "run-tests: ctest ${ctest_options[*]}"
 ctest "${ctest_options[@]}"
 
-# ---- LATER STAGES: add further stages below this line ----------------------------------------
-# (sanitizer build: scripts/build.sh build-asan -DDTM_SANITIZE=ON ... + ctest; fuzzers: -DDTM_FUZZ=ON)
+# ---- Hardening: libFuzzer targets for the text and HPGL parsers (bounded time) and the whole test
+# suite under AddressSanitizer + UndefinedBehaviorSanitizer, in their own build directories.
+# On in CI (CI=true) or with DTM_HARDENING=1; DTM_HARDENING=0 skips it. About 20-35 minutes on
+# 2 cores from scratch, mostly the sanitizer build.
+if [[ "${DTM_HARDENING:-${CI:-0}}" == "1" || "${DTM_HARDENING:-${CI:-0}}" == "true" ]]; then
+    echo "run-tests: hardening (fuzzers ${FUZZ_SECONDS:-30} s each, sanitizer test build)"
+    FUZZ_SECONDS=${FUZZ_SECONDS:-30} BUILD_ROOT="$(dirname "$build_dir")" scripts/fuzz-and-sanitize.sh
+fi
 # ----------------------------------------------------------------------------------------------
 
 echo "run-tests: all stages passed"
