@@ -6,12 +6,15 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <mutex>
 #include <random>
 #include <string>
 
 #include "dtm/algo/triangulate.hpp"
 #include "dtm/algo/validate.hpp"
+#include "dtm/core/error.hpp"
 #include "support/terrain_fixtures.hpp"
 
 namespace dtm {
@@ -135,6 +138,36 @@ TEST_P(TiledSeams, EveryTileCountGivesTheSequentialTin)
 }
 
 INSTANTIATE_TEST_SUITE_P(Cases, TiledSeams, ::testing::Range<std::size_t>(0, 7));
+
+}  // namespace
+}  // namespace dtm
+
+namespace dtm {
+namespace {
+
+TEST(TiledProgress, ReportsFromTheParallelPhaseAndCancelsCleanly)
+{
+    TerrainInput input;
+    input.points = test::random_points(300000, 31);
+    for (const unsigned threads : {1u, 2u}) {
+        std::vector<double> seen;
+        std::mutex mutex;
+        const Progress watch([&](double fraction, std::string_view) {
+            std::lock_guard lock(mutex);
+            seen.push_back(fraction);
+            return true;
+        });
+        TriangulateOptions options;
+        options.threads = threads;
+        (void)triangulate(input, options, watch);
+        ASSERT_GE(seen.size(), 3u) << "threads " << threads;
+        EXPECT_DOUBLE_EQ(seen.back(), 1.0);
+
+        std::atomic<int> calls{0};
+        const Progress stop([&](double, std::string_view) { return ++calls < 2; });
+        EXPECT_THROW((void)triangulate(input, options, stop), Cancelled) << "threads " << threads;
+    }
+}
 
 }  // namespace
 }  // namespace dtm
