@@ -200,7 +200,7 @@ void MeshEditor::legalize(EdgeId first)
 
 void MeshEditor::insert_segment(VertexId a, VertexId b, std::uint8_t bits)
 {
-    std::vector<Work> stack{{a, b, bits, false}};
+    std::vector<Work> stack{{a, b, bits}};
     std::size_t steps = 0;
     const std::size_t limit = 64 * mesh_.points.size() + 1'000'000;
     while (!stack.empty()) {
@@ -208,11 +208,6 @@ void MeshEditor::insert_segment(VertexId a, VertexId b, std::uint8_t bits)
         const Work work = stack.back();
         stack.pop_back();
         if (work.a == work.b) continue;
-        if (work.legalize) {
-            const EdgeId e = find_edge(work.a, work.b);
-            if (e != no_edge) legalize(e);
-            continue;
-        }
         insert_piece(work, stack);
     }
 }

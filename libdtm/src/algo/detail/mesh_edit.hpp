@@ -75,7 +75,6 @@ private:
         VertexId a;
         VertexId b;
         std::uint8_t bits;
-        bool legalize;  ///< restore the Delaunay property of edge a-b instead of inserting it
     };
 
     [[nodiscard]] int orient(VertexId a, VertexId b, VertexId c) const

@@ -108,7 +108,7 @@ void MeshEditor::insert_piece(const Work& work, std::vector<Work>& stack)
     }
     ensure_slots(plan.crossed.size() + 4);
     apply_piece(plan, work.bits, slots_);
-    if (plan.to != work.b) stack.push_back({plan.to, work.b, work.bits, false});
+    if (plan.to != work.b) stack.push_back({plan.to, work.b, work.bits});
 }
 
 MeshEditor::SegmentPlan MeshEditor::plan_segment(VertexId a, VertexId b) const
@@ -211,18 +211,18 @@ void MeshEditor::cross_constraint(VertexId u, VertexId w, std::uint8_t bits, Edg
                                                        : 0.5 * (z_new + z_old);
         x = insert_point(at, z_x, vertex_edge_[p]);
         if (x != p && x != r) {
-            stack.push_back({x, r, f_bits, false});
-            stack.push_back({p, x, f_bits, false});
+            stack.push_back({x, r, f_bits});
+            stack.push_back({p, x, f_bits});
         } else {
-            stack.push_back({p, r, f_bits, false});
+            stack.push_back({p, r, f_bits});
         }
     }
     const double z_at_x = x == p || x == r ? z_[x] : z_old;
     const bool heights_compared = bits != constraint_soft && f_bits != constraint_soft;
     crossings_.push_back({m.p(x), z_at_x, z_new,
                           heights_compared && std::abs(z_at_x - z_new) > z_tolerance_});
-    stack.push_back({x, w, bits, false});
-    stack.push_back({u, x, bits, false});
+    stack.push_back({x, w, bits});
+    stack.push_back({u, x, bits});
 }
 
 }  // namespace dtm::detail
