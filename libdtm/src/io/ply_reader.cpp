@@ -390,49 +390,53 @@ void read_ascii_body(BodyReader& reader, std::string_view body) {
 // ---- neighbours --------------------------------------------------------------------------------
 
 /// Sets Triangle::n from the faces. Directed edge i of triangle t runs v[i+1] -> v[i+2] (the edge
-/// opposite v[i]) and is numbered 3 t + i; its neighbour holds the reversed edge. The directed
-/// edges are grouped by origin vertex (compressed rows holding the target and the edge number), so
-/// both the duplicate check and the twin search scan short contiguous lists.
+/// opposite v[i]) and is numbered 3 t + i; its neighbour holds the reversed edge. Every directed
+/// edge is listed (counting sort) under the smaller of its two vertices, so an edge and its twin
+/// land in the same short row: both the duplicate check and the twin search scan that one
+/// contiguous row, with no jump to the other vertex's row (which is what costs on large TINs,
+/// whose vertex numbering follows the survey, not the space).
 void link_neighbours(Tin& tin, const fs::path& path) {
     const std::size_t n = tin.vertices.size();
     if (tin.triangles.size() > std::numeric_limits<std::uint32_t>::max() / 3) {
         throw InputError(path, 0, 0, "too many faces");
     }
-    struct Outgoing {
-        VertexIndex target;
-        std::uint32_t edge;
+    struct Listed {
+        VertexIndex other;   ///< the larger vertex of the edge
+        std::uint32_t edge;  ///< 3 t + i
+        bool forward;        ///< the edge runs from the row's vertex to `other`
     };
     std::vector<std::uint32_t> first(n + 1, 0);
     for (const Triangle& t : tin.triangles) {
-        for (const VertexIndex v : t.v) ++first[v + 1];
+        for (std::uint32_t i = 0; i < 3; ++i) {
+            ++first[std::min(t.v[(i + 1) % 3], t.v[(i + 2) % 3]) + 1];
+        }
     }
     for (std::size_t v = 0; v < n; ++v) first[v + 1] += first[v];
-    std::vector<Outgoing> outgoing(first[n]);
+    std::vector<Listed> rows(first[n]);
     std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
     for (std::size_t t = 0; t < tin.triangles.size(); ++t) {
         const auto& v = tin.triangles[t].v;
         for (std::uint32_t i = 0; i < 3; ++i) {
-            outgoing[fill[v[(i + 1) % 3]]++] = {v[(i + 2) % 3],
-                                                static_cast<std::uint32_t>(3 * t + i)};
+            const VertexIndex a = v[(i + 1) % 3];
+            const VertexIndex b = v[(i + 2) % 3];
+            rows[fill[std::min(a, b)]++] = {std::max(a, b), static_cast<std::uint32_t>(3 * t + i),
+                                            a < b};
         }
     }
     for (VertexIndex a = 0; a < n; ++a) {
         for (std::uint32_t k = first[a]; k < first[a + 1]; ++k) {
-            const VertexIndex b = outgoing[k].target;
             for (std::uint32_t j = k + 1; j < first[a + 1]; ++j) {
-                if (outgoing[j].target == b) {
+                if (rows[j].other != rows[k].other) continue;
+                if (rows[j].forward == rows[k].forward) {
+                    const VertexIndex from = rows[k].forward ? a : rows[k].other;
+                    const VertexIndex to = rows[k].forward ? rows[k].other : a;
                     throw InputError(path, 0, 0,
-                                     "edge " + std::to_string(a) + "-" + std::to_string(b) +
+                                     "edge " + std::to_string(from) + "-" + std::to_string(to) +
                                          " is used twice in the same direction (faces "
                                          "overlap or are not consistently oriented)");
                 }
-            }
-            for (std::uint32_t j = first[b]; j < first[b + 1]; ++j) {
-                if (outgoing[j].target == a) {
-                    tin.triangles[outgoing[k].edge / 3].n[outgoing[k].edge % 3] =
-                        outgoing[j].edge / 3;
-                    break;
-                }
+                tin.triangles[rows[k].edge / 3].n[rows[k].edge % 3] = rows[j].edge / 3;
+                tin.triangles[rows[j].edge / 3].n[rows[j].edge % 3] = rows[k].edge / 3;
             }
         }
     }
