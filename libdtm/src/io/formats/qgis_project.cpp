@@ -283,6 +283,11 @@ void write_properties(XmlWriter& xml) {
     xml.text("DistanceUnits", "meters", {{"type", "QString"}});
     xml.text("AreaUnits", "m2", {{"type", "QString"}});
     xml.close("Measurement");
+    // QGIS 3.x before 3.28 reads <projectCrs> only when on-the-fly projection is flagged here
+    // (checked: QGIS 3.22 opens the project with an empty project CRS without it).
+    xml.open("SpatialRefSys");
+    xml.text("ProjectionsEnabled", "1", {{"type", "int"}});
+    xml.close("SpatialRefSys");
     xml.close("properties");
 }
 
