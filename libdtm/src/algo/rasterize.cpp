@@ -330,11 +330,6 @@ std::size_t choose_band_rows(const GridSpec& spec, const RasterizeOptions& optio
                                    std::max<std::size_t>(spec.rows, 1));
 }
 
-struct Band {
-    std::size_t index = 0;
-    std::vector<float> values;
-};
-
 void run_pipeline(const Tin& tin,
                   const GridSpec& spec,
                   const RasterizeOptions& options,
@@ -350,29 +345,32 @@ void run_pipeline(const Tin& tin,
         }
         return next++;
     };
-    auto compute = [&](std::size_t b) -> Band {
+    // Band values live in `bands` (owned here) and only band indices travel through the
+    // pipeline: when a cancellation unwinds it, nothing in flight can be left undestroyed.
+    std::vector<std::vector<float>> bands(buckets.band_count);
+    auto compute = [&](std::size_t b) -> std::size_t {
         progress.check();
         const std::size_t row0 = b * buckets.band_rows;
         const std::size_t row_count = std::min(buckets.band_rows, spec.rows - row0);
-        Band band{b, std::vector<float>(row_count * spec.cols, options.nodata)};
+        std::vector<float> values(row_count * spec.cols, options.nodata);
         for (std::size_t k = buckets.offsets[b]; k < buckets.offsets[b + 1]; ++k) {
             const TriangleIndex t = buckets.triangles[k];
-            scan_triangle(tin, tin.triangles[t], buckets.rows[t], spec, row0, row_count,
-                          band.values);
+            scan_triangle(tin, tin.triangles[t], buckets.rows[t], spec, row0, row_count, values);
         }
-        return band;
+        bands[b] = std::move(values);
+        return b;
     };
-    auto emit = [&](Band band) {
-        const std::size_t row0 = band.index * buckets.band_rows;
-        sink.write_rows(row0, band.values.size() / spec.cols, band.values);
-        progress.report(
-            static_cast<double>(band.index + 1) / static_cast<double>(buckets.band_count),
-            "rasterize");
+    auto emit = [&](std::size_t b) {
+        const std::size_t row0 = b * buckets.band_rows;
+        sink.write_rows(row0, bands[b].size() / spec.cols, bands[b]);
+        std::vector<float>().swap(bands[b]);
+        progress.report(static_cast<double>(b + 1) / static_cast<double>(buckets.band_count),
+                        "rasterize");
     };
     tbb::parallel_pipeline(
         tokens, tbb::make_filter<void, std::size_t>(tbb::filter_mode::serial_in_order, source) &
-                    tbb::make_filter<std::size_t, Band>(tbb::filter_mode::parallel, compute) &
-                    tbb::make_filter<Band, void>(tbb::filter_mode::serial_in_order, emit));
+                    tbb::make_filter<std::size_t, std::size_t>(tbb::filter_mode::parallel, compute) &
+                    tbb::make_filter<std::size_t, void>(tbb::filter_mode::serial_in_order, emit));
 }
 
 /// Collects the streamed bands into a Grid.

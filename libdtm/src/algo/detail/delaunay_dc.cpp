@@ -31,6 +31,7 @@
 #include <algorithm>
 #include <atomic>
 
+#include "dtm/core/error.hpp"
 #include "dtm/geom/predicates.hpp"
 
 namespace dtm::detail {
@@ -88,9 +89,21 @@ private:
         if (options_.parallel_cutoff > 0 && n > options_.parallel_cutoff) {
             EdgeSlots left_slots{static_cast<EdgeId>(3 * lo), static_cast<EdgeId>(3 * mid), {}};
             EdgeSlots right_slots{static_cast<EdgeId>(3 * mid), static_cast<EdgeId>(3 * hi), {}};
+            bool left_done = false;
+            bool right_done = false;
             tbb::parallel_invoke(
-                [&] { left = build(lo, mid, 1 - cut, cut, left_slots, n); },
-                [&] { right = build(mid, hi, 1 - cut, cut, right_slots, n); });
+                [&] {
+                    left = build(lo, mid, 1 - cut, cut, left_slots, n);
+                    left_done = true;
+                },
+                [&] {
+                    right = build(mid, hi, 1 - cut, cut, right_slots, n);
+                    right_done = true;
+                });
+            // When a task elsewhere in the tree threw (cancellation), TBB cancels the shared
+            // context and a nested parallel_invoke may return without running its tasks and
+            // without an exception: never merge halves that were not built.
+            if (!left_done || !right_done) throw Cancelled();
             slots = std::move(right_slots);
             slots.absorb(left_slots);
         } else {
