@@ -12,31 +12,15 @@
 #include "dtm/core/error.hpp"
 #include "dtm/geom/predicates.hpp"
 
+#include "support/tin_links.hpp"
+
 namespace {
 
 using dtm::Point3;
 using dtm::Tin;
 using dtm::Triangle;
 
-/// Rebuilds the neighbour links of @p tin from its triangles.
-void link_neighbours(Tin& tin) {
-    std::map<std::pair<std::uint32_t, std::uint32_t>, std::pair<std::uint32_t, int>> edges;
-    for (std::uint32_t t = 0; t < tin.triangles.size(); ++t) {
-        Triangle& tri = tin.triangles[t];
-        tri.n = {dtm::no_triangle, dtm::no_triangle, dtm::no_triangle};
-        for (int e = 0; e < 3; ++e) {
-            const auto a = tri.v[static_cast<std::size_t>((e + 1) % 3)];
-            const auto b = tri.v[static_cast<std::size_t>((e + 2) % 3)];
-            const auto it = edges.find({b, a});
-            if (it != edges.end()) {
-                tri.n[static_cast<std::size_t>(e)] = it->second.first;
-                tin.triangles[it->second.first].n[static_cast<std::size_t>(it->second.second)] = t;
-            } else {
-                edges[{a, b}] = {t, e};
-            }
-        }
-    }
-}
+using dtm::test::link_neighbours;
 
 /// A (jittered) regular grid of n x n vertices with spacing h, split into triangles with
 /// alternating diagonals; triangles whose centroid falls in @p hole (x0,y0,x1,y1 relative to the
