@@ -12,38 +12,10 @@
 #include "command.hpp"
 #include "dtm/io/inputs.hpp"
 #include "input_args.hpp"
+#include "json_text.hpp"
 
 namespace dtm::cli {
 namespace {
-
-std::string json_string(std::string_view text)
-{
-    std::string out = "\"";
-    for (char c : text) {
-        const auto u = static_cast<unsigned char>(c);
-        if (c == '"' || c == '\\') {
-            out += '\\';
-            out += c;
-        } else if (c == '\n') {
-            out += "\\n";
-        } else if (u < 0x20) {
-            char buffer[8];
-            std::snprintf(buffer, sizeof buffer, "\\u%04x", u);
-            out += buffer;
-        } else {
-            out += c;
-        }
-    }
-    return out + "\"";
-}
-
-std::string json_number(double v)
-{
-    if (!std::isfinite(v)) return "null";
-    char buffer[32];
-    const auto r = std::to_chars(buffer, buffer + sizeof buffer, v);
-    return std::string(buffer, r.ptr);
-}
 
 bool has_extent(const io::InputSummary& s)
 {

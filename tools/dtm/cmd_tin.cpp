@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: MIT
 // `dtm tin`: read points and breaklines, build the constrained Delaunay TIN, write it by extension.
 // Thin: parse -> options -> io::load_inputs -> dtm::triangulate -> io::write_tin -> report.
-#include <charconv>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -14,6 +13,7 @@
 #include "dtm/io/atomic_file.hpp"
 #include "dtm/io/tin_file.hpp"
 #include "input_args.hpp"
+#include "json_text.hpp"
 #include "terminal_progress.hpp"
 #include "tin_args.hpp"
 
@@ -36,14 +36,6 @@ double since(std::chrono::steady_clock::time_point t)
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 
-/// Shortest text that reads back to the same double.
-std::string number(double v)
-{
-    char buffer[32];
-    const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, v);
-    return std::string(buffer, end);
-}
-
 void write_report(const std::string& path, const TriangulateResult& r)
 {
     io::AtomicOutput out(path);
@@ -53,17 +45,17 @@ void write_report(const std::string& path, const TriangulateResult& r)
         for (std::size_t i = 0; i < r.merges.size(); ++i) {
             const DuplicateMerge& m = r.merges[i];
             f << (i ? ",\n    " : "\n    ") << "{\"kept_input\": " << m.kept_input
-              << ", \"merged_input\": " << m.merged_input << ", \"kept\": [" << number(m.kept.x)
-              << ", " << number(m.kept.y) << ", " << number(m.kept.z) << "], \"merged\": ["
-              << number(m.merged.x) << ", " << number(m.merged.y) << ", " << number(m.merged.z)
+              << ", \"merged_input\": " << m.merged_input << ", \"kept\": [" << json_number(m.kept.x)
+              << ", " << json_number(m.kept.y) << ", " << json_number(m.kept.z) << "], \"merged\": ["
+              << json_number(m.merged.x) << ", " << json_number(m.merged.y) << ", " << json_number(m.merged.z)
               << "]}";
         }
         f << "\n  ],\n  \"conflicts\": [";
         for (std::size_t i = 0; i < r.conflicts.size(); ++i) {
             const ConstraintConflict& c = r.conflicts[i];
-            f << (i ? ",\n    " : "\n    ") << "{\"x\": " << number(c.at.x) << ", \"y\": "
-              << number(c.at.y) << ", \"z_first\": " << number(c.z_first)
-              << ", \"z_second\": " << number(c.z_second) << "}";
+            f << (i ? ",\n    " : "\n    ") << "{\"x\": " << json_number(c.at.x) << ", \"y\": "
+              << json_number(c.at.y) << ", \"z_first\": " << json_number(c.z_first)
+              << ", \"z_second\": " << json_number(c.z_second) << "}";
         }
         f << "\n  ]\n}\n";
         if (!f) throw Error("cannot write the report " + path);
@@ -112,8 +104,8 @@ int run_tin(const TinArgs& a)
     if (result.stats.conflicts > 0 && !a.stats) {
         std::cerr << "dtm: warning: " << result.stats.conflicts
                   << " breakline crossings with heights differing by more than "
-                  << a.triangulate.z_tolerance << " (first at " << number(result.conflicts[0].at.x)
-                  << ", " << number(result.conflicts[0].at.y) << "; --report lists them all)\n";
+                  << a.triangulate.z_tolerance << " (first at " << json_number(result.conflicts[0].at.x)
+                  << ", " << json_number(result.conflicts[0].at.y) << "; --report lists them all)\n";
     }
     if (a.stats) {
         const TriangulateStats& s = result.stats;
@@ -125,9 +117,9 @@ int run_tin(const TinArgs& a)
                   << ", \"constrained_edges\": " << result.tin.constraints.size()
                   << ", \"intersections\": " << s.intersections << ", \"conflicts\": " << s.conflicts
                   << ", \"removed_triangles\": " << s.removed_triangles << ", \"seconds\": {\"read\": "
-                  << number(read_s) << ", \"triangulate\": " << number(s.seconds_triangulate)
-                  << ", \"constrain\": " << number(s.seconds_constrain)
-                  << ", \"write\": " << number(write_s) << ", \"total\": " << number(since(start))
+                  << json_number(read_s) << ", \"triangulate\": " << json_number(s.seconds_triangulate)
+                  << ", \"constrain\": " << json_number(s.seconds_constrain)
+                  << ", \"write\": " << json_number(write_s) << ", \"total\": " << json_number(since(start))
                   << "}}" << std::endl;
     }
     return 0;
