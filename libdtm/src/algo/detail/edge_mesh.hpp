@@ -74,11 +74,12 @@ struct EdgeMesh {
     /// Reserve room for @p slot_count undirected edges.
     void resize_slots(std::size_t slot_count)
     {
-        org.assign(2 * slot_count, 0);
-        onext.assign(2 * slot_count, no_edge);
-        oprev.assign(2 * slot_count, no_edge);
-        constrained.assign(slot_count, 0);
-        alive.assign(slot_count, 0);
+        org.clear();
+        onext.clear();
+        oprev.clear();
+        constrained.clear();
+        alive.clear();
+        grow_slots(slot_count);
     }
     [[nodiscard]] std::size_t slot_count() const noexcept { return alive.size(); }
 

@@ -238,7 +238,7 @@ std::size_t apply_domain(TinDraft& draft, bool has_boundary, const std::vector<P
         }
     }
     std::size_t removed = static_cast<std::size_t>(std::count(keep.begin(), keep.end(), false));
-    compact(draft, keep);
+    if (removed > 0) compact(draft, keep);
     if (max_edge > 0.0) removed += trim_long_edges(draft, max_edge);
     return removed;
 }

@@ -56,7 +56,7 @@ std::size_t trim_long_edges(TinDraft& draft, double max_edge)
             if (n != no_triangle && keep[n]) stack.push_back(n);
         }
     }
-    compact(draft, keep);
+    if (removed > 0) compact(draft, keep);
     return removed;
 }
 
