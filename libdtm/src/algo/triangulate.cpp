@@ -15,7 +15,6 @@
 // of steps 2-3 without soft lines), then everything is built again with them.
 #include "dtm/algo/triangulate.hpp"
 
-#include <tbb/global_control.h>
 #include <tbb/task_arena.h>
 
 #include <chrono>

@@ -3,8 +3,6 @@
 // Finishing a TinDraft: trimming long border triangles and listing the constraints in sorted
 // order, so that output files are byte-identical whatever the thread or tile count.
 #include <algorithm>
-#include <cmath>
-#include <numeric>
 
 #include "algo/detail/tin_build.hpp"
 
