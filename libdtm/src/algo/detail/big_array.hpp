@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <cstdlib>
 #include <new>
 #include <vector>
@@ -55,5 +56,25 @@ struct BigArrayAllocator {
 /// A std::vector for the kernel's large arrays.
 template <class T>
 using BigArray = std::vector<T, BigArrayAllocator<T>>;
+
+/// Reserves room for @p n elements in an ordinary std::vector (one that must keep the standard
+/// allocator, such as the Tin's arrays) and, before anything touches that memory, marks its whole
+/// 2 MiB pages for transparent huge pages: a large array then costs a few hundred page faults
+/// instead of one per 4 KiB.
+template <class T>
+void reserve_huge(std::vector<T>& v, std::size_t n)
+{
+    v.reserve(n);
+#if defined(__linux__)
+    constexpr std::uintptr_t huge = std::uintptr_t{2} << 20;
+    const auto begin = reinterpret_cast<std::uintptr_t>(v.data() + v.size());
+    const auto end = reinterpret_cast<std::uintptr_t>(v.data() + v.capacity());
+    const std::uintptr_t first = (begin + huge - 1) / huge * huge;
+    const std::uintptr_t last = end / huge * huge;
+    if (last > first) {
+        madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE);
+    }
+#endif
+}
 
 }  // namespace dtm::detail

@@ -14,8 +14,9 @@
 // The recursion tree depends only on the input (a median split of a canonically sorted array),
 // so the triangulation is the same whether a subtree runs sequentially or as a parallel task:
 // the top levels of the tree are the "tiles" and their merges are the exact seam stitches.
-// Each parallel subtree allocates edges from its own slot range (3 slots per point always
-// suffice: a planar straight-line graph on m >= 3 points has at most 3m - 6 edges).
+// Every subtree allocates edges from its own slot range (3 slots per point always suffice: a
+// planar straight-line graph on m >= 3 points has at most 3m - 6 edges), whether it runs as a
+// parallel task or not, so every edge gets the same slot for every tile and thread count.
 //
 // References:
 //   L. Guibas, J. Stolfi, "Primitives for the manipulation of general subdivisions and the
@@ -26,11 +27,13 @@
 //     triangulator", 1996 (alternating cuts, robust predicates).
 #include "algo/detail/delaunay_dc.hpp"
 
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_invoke.h>
 
 #include <algorithm>
 #include <atomic>
 
+#include "algo/detail/median_split.hpp"
 #include "dtm/core/error.hpp"
 #include "dtm/geom/predicates.hpp"
 
@@ -51,6 +54,16 @@ inline bool before(int axis, const KernelPoint& a, const KernelPoint& b) noexcep
     return a.y < b.y || (a.y == b.y && a.x > b.x);
 }
 
+/// The same order without branches, for the median selection.
+template <int Axis>
+struct Before {
+    bool operator()(const KernelPoint& a, const KernelPoint& b) const noexcept
+    {
+        if constexpr (Axis == 0) return (a.x < b.x) | ((a.x == b.x) & (a.y < b.y));
+        return (a.y < b.y) | ((a.y == b.y) & (a.x > b.x));
+    }
+};
+
 class Builder {
 public:
     Builder(BigArray<KernelPoint>& points, EdgeMesh& mesh, const DelaunayDcOptions& options,
@@ -61,10 +74,13 @@ public:
     {
     }
 
+    /// Triangulates points [lo, hi) with edges from the slots [3 lo, 3 hi); @p slots receives
+    /// what is left of that range.
     Hull build(std::size_t lo, std::size_t hi, int cut, int frame, EdgeSlots& slots,
                std::size_t parent_n)
     {
         const std::size_t n = hi - lo;
+        slots = EdgeSlots{static_cast<EdgeId>(3 * lo), static_cast<EdgeId>(3 * hi)};
         if (n <= 3) return base_case(lo, n, frame, slots);
         const Hull hull = build_inner(lo, hi, cut, frame, slots);
         if (n <= progress_unit_ && parent_n > progress_unit_) {
@@ -80,15 +96,15 @@ private:
     {
         const std::size_t n = hi - lo;
         const std::size_t mid = lo + n / 2;
-        std::nth_element(pts_ + lo, pts_ + mid, pts_ + hi,
-                         [cut](const KernelPoint& a, const KernelPoint& b) {
-                             return before(cut, a, b);
-                         });
+        if (cut == 0) {
+            select_kth(pts_ + lo, n, n / 2, Before<0>{}, scratch_.local());
+        } else {
+            select_kth(pts_ + lo, n, n / 2, Before<1>{}, scratch_.local());
+        }
         Hull left{};
         Hull right{};
+        EdgeSlots left_slots;
         if (options_.parallel_cutoff > 0 && n > options_.parallel_cutoff) {
-            EdgeSlots left_slots{static_cast<EdgeId>(3 * lo), static_cast<EdgeId>(3 * mid), {}};
-            EdgeSlots right_slots{static_cast<EdgeId>(3 * mid), static_cast<EdgeId>(3 * hi), {}};
             bool left_done = false;
             bool right_done = false;
             tbb::parallel_invoke(
@@ -97,19 +113,20 @@ private:
                     left_done = true;
                 },
                 [&] {
-                    right = build(mid, hi, 1 - cut, cut, right_slots, n);
+                    right = build(mid, hi, 1 - cut, cut, slots, n);
                     right_done = true;
                 });
             // When a task elsewhere in the tree threw (cancellation), TBB cancels the shared
             // context and a nested parallel_invoke may return without running its tasks and
             // without an exception: never merge halves that were not built.
             if (!left_done || !right_done) throw Cancelled();
-            slots = std::move(right_slots);
-            slots.absorb(left_slots);
         } else {
-            left = build(lo, mid, 1 - cut, cut, slots, n);
+            left = build(lo, mid, 1 - cut, cut, left_slots, n);
             right = build(mid, hi, 1 - cut, cut, slots, n);
         }
+        // The merge allocates from both halves' leftovers, in an order that does not depend on
+        // whether the halves ran in parallel.
+        mesh_.absorb_slots(slots, left_slots);
         const Hull merged = merge(left, right, slots);
         return frame == cut ? merged : rehull(merged, frame);
     }
@@ -246,6 +263,7 @@ private:
     std::size_t total_;
     std::size_t progress_unit_;
     std::atomic<std::size_t> done_{0};
+    tbb::enumerable_thread_specific<SelectScratch<KernelPoint>> scratch_;
 };
 
 }  // namespace
@@ -255,7 +273,7 @@ void delaunay_divide_and_conquer(BigArray<KernelPoint>& points, EdgeMesh& mesh, 
 {
     const std::size_t n = points.size();
     mesh.resize_slots(3 * n + 16);
-    slots = EdgeSlots{0, static_cast<EdgeId>(3 * n), {}};
+    slots = EdgeSlots{0, static_cast<EdgeId>(3 * n)};
     if (n >= 2) {
         Builder builder(points, mesh, options, progress);
         builder.build(0, n, 0, 0, slots, n + 1);

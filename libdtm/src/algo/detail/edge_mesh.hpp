@@ -20,8 +20,8 @@
 #pragma once
 
 #include <cstdint>
+#include <cstddef>
 #include <stdexcept>
-#include <vector>
 
 #include "algo/detail/big_array.hpp"
 #include "dtm/core/point.hpp"
@@ -46,21 +46,19 @@ enum ConstraintBits : std::uint8_t {
     constraint_hole = 8,
 };
 
-/// Allocator of undirected edge slots within a contiguous range, with a free list. Each parallel
-/// subtree of the divide and conquer owns one, over its own slot range.
+/// Allocator of undirected edge slots: a never-used range [next, end) and a free list of
+/// released slots (LIFO), threaded through the slots themselves (see EdgeMesh::release_slot).
+/// Each subtree of the divide and conquer owns one over its own range [3 lo, 3 hi), whether it
+/// runs as a parallel task or not, so the slot of every edge (and with it the order in which the
+/// TIN is read off the mesh) is the same for every tile and thread count.
 struct EdgeSlots {
     EdgeId next = 0;  ///< next never-used undirected slot
     EdgeId end = 0;   ///< one past the last slot of the range
-    std::vector<EdgeId> free;
+    EdgeId free_head = no_edge;
+    EdgeId free_tail = no_edge;
+    std::size_t free_count = 0;
 
-    /// Takes over another range's unused slots (used when two subtrees are merged).
-    void absorb(EdgeSlots& other)
-    {
-        for (EdgeId s = other.next; s < other.end; ++s) free.push_back(s);
-        free.insert(free.end(), other.free.begin(), other.free.end());
-        other.next = other.end;
-        other.free.clear();
-    }
+    [[nodiscard]] std::size_t available() const noexcept { return free_count + (end - next); }
 };
 
 struct EdgeMesh {
@@ -102,12 +100,42 @@ struct EdgeMesh {
     [[nodiscard]] const KernelPoint& p(VertexId v) const noexcept { return points[v]; }
     [[nodiscard]] bool is_constrained(EdgeId e) const noexcept { return constrained[e >> 1] != 0; }
 
+    /// Puts slot s (not alive) on the free list of @p slots. The link to the next free slot is
+    /// kept in oprev of the slot's second direction; a dead edge is otherwise a pair of loops.
+    void release_slot(EdgeSlots& slots, EdgeId s) noexcept
+    {
+        oprev[2 * s + 1] = slots.free_head;
+        if (slots.free_head == no_edge) slots.free_tail = s;
+        slots.free_head = s;
+        ++slots.free_count;
+    }
+
+    /// Moves every slot @p other can still hand out (free list and never-used range) to the end
+    /// of @p into's free list; @p other is left empty.
+    void absorb_slots(EdgeSlots& into, EdgeSlots& other) noexcept
+    {
+        for (EdgeId s = other.end; s > other.next; --s) release_slot(other, s - 1);
+        other.next = other.end;
+        if (other.free_head == no_edge) return;
+        if (into.free_head == no_edge) {
+            into.free_head = other.free_head;
+        } else {
+            oprev[2 * into.free_tail + 1] = other.free_head;
+        }
+        into.free_tail = other.free_tail;
+        into.free_count += other.free_count;
+        other.free_head = other.free_tail = no_edge;
+        other.free_count = 0;
+    }
+
     EdgeId make_edge(EdgeSlots& slots, VertexId a, VertexId b)
     {
         EdgeId s;
-        if (!slots.free.empty()) {
-            s = slots.free.back();
-            slots.free.pop_back();
+        if (slots.free_head != no_edge) {
+            s = slots.free_head;
+            slots.free_head = oprev[2 * s + 1];
+            if (slots.free_head == no_edge) slots.free_tail = no_edge;
+            --slots.free_count;
         } else if (slots.next < slots.end) {
             s = slots.next++;
         } else {
@@ -150,7 +178,7 @@ struct EdgeMesh {
         splice(e ^ 1u, oprev[e ^ 1u]);
         alive[e >> 1] = 0;
         constrained[e >> 1] = 0;
-        slots.free.push_back(e >> 1);
+        release_slot(slots, e >> 1);
     }
 
     /// Flip e, the diagonal of the quadrilateral formed by its two triangles.

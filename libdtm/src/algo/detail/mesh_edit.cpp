@@ -59,7 +59,7 @@ EdgeId MeshEditor::find_edge(VertexId a, VertexId b) const
 
 void MeshEditor::ensure_slots(std::size_t count)
 {
-    if (slots_.free.size() + (slots_.end - slots_.next) >= count) return;
+    if (slots_.available() >= count) return;
     const std::size_t grown = mesh_.slot_count() + mesh_.slot_count() / 2 + count + 64;
     mesh_.grow_slots(grown);
     slots_.end = static_cast<EdgeId>(grown);

@@ -1,0 +1,185 @@
+// SPDX-License-Identifier: MIT
+//
+// From the kernel's edge mesh to the Tin value type: triangles with neighbour links in the
+// canonical order.
+//
+// Canonical order: triangles in the order of their canonical edge's slot, the canonical edge being
+// the one out of the triangle's smallest vertex. Every subtree of the divide and conquer
+// allocates its edges in its own slot range, and constraint insertion is deterministic, so slot
+// order depends on the input only (never on threads or tiles; see delaunay_dc.cpp and
+// constraint_batch.cpp), and it follows the recursion, so it is spatially coherent: each pass
+// below reads the mesh almost sequentially.
+//
+//   1. one pass over the directed edges counts the canonical edges per block of slots; the outer
+//      face is recognised by walking it once from a corner of the hull, not by an orientation
+//      test per face;
+//   2. a prefix sum gives every block its place, a second pass writes the canonical edges;
+//   3. per triangle: vertices, constraint bits, then neighbours through a face id per directed
+//      edge, stored in the (no longer needed) origin array to keep the peak memory low.
+// Every pass runs in parallel over blocks and writes only its own elements.
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+
+#include "algo/detail/tin_build.hpp"
+#include "dtm/geom/predicates.hpp"
+
+namespace dtm::detail {
+namespace {
+
+template <class Vector>
+void release(Vector& v)
+{
+    Vector().swap(v);
+}
+
+/// An edge with the outer face on its left, found at the lexicographically smallest vertex (a
+/// corner of the hull, where the outer face is the one wedge wider than a half turn); no_edge when
+/// the mesh has no triangle.
+EdgeId outer_face_edge(const EdgeMesh& m)
+{
+    const std::size_t kernel_count = m.points.size();
+    if (kernel_count < 3) return no_edge;
+    VertexId corner = 0;
+    for (VertexId v = 1; v < kernel_count; ++v) {
+        const KernelPoint& p = m.points[v];
+        const KernelPoint& c = m.points[corner];
+        if (p.x < c.x || (p.x == c.x && p.y < c.y)) corner = v;
+    }
+    EdgeId start = no_edge;
+    for (EdgeId e = 0; e < 2 * m.slot_count(); ++e) {
+        if (m.alive[e >> 1] && m.org[e] == corner) {
+            start = e;
+            break;
+        }
+    }
+    if (start == no_edge) return no_edge;
+    EdgeId e = start;
+    do {
+        const EdgeId next = m.onext[e];
+        if (next != e && geom::orient2d(m.p(corner), m.p(m.dest(e)), m.p(m.dest(next))) < 0) {
+            return e;
+        }
+        e = next;
+    } while (e != start);
+    return no_edge;  // collinear: no triangle
+}
+
+/// The three edges of the outer face when it is a 3-cycle (hull of three vertices), which the
+/// canonical-edge test must not take for a triangle; else no_edge three times.
+std::array<EdgeId, 3> outer_triangle(const EdgeMesh& m, EdgeId outer)
+{
+    if (outer == no_edge) return {no_edge, no_edge, no_edge};
+    const EdgeId e1 = m.lnext(outer);
+    const EdgeId e2 = m.lnext(e1);
+    if (m.lnext(e2) != outer) return {no_edge, no_edge, no_edge};
+    return {outer, e1, e2};
+}
+
+/// The canonical edge of slot s, when s has one: the direction out of the smaller vertex (the
+/// other direction can never be canonical), if its left face is a triangle, not the outer face,
+/// and that vertex is the triangle's smallest. Returns the edge with bit 31 set when there is
+/// none. Branch-free past the alive test: the outcome is unpredictable, the loads are not.
+inline EdgeId canonical_edge_of(const EdgeMesh& m, std::size_t s, const std::array<EdgeId, 3>& outer)
+{
+    constexpr EdgeId none = 0x80000000u;
+    if (!m.alive[s]) return none;
+    const auto e = static_cast<EdgeId>(2 * s + (m.org[2 * s] > m.org[2 * s + 1] ? 1 : 0));
+    const EdgeId e1 = m.oprev[e ^ 1u];
+    const EdgeId e2 = m.oprev[e1 ^ 1u];
+    const bool triangle = m.oprev[e2 ^ 1u] == e;
+    const bool smallest = m.org[e] < m.org[e2];
+    const bool inner = (e != outer[0]) & (e != outer[1]) & (e != outer[2]);
+    return (triangle & smallest & inner) ? e : none;
+}
+
+constexpr std::size_t grain = 1 << 14;
+constexpr std::size_t block = 1 << 15;  ///< slots per block of the slot passes
+
+}  // namespace
+
+TinDraft mesh_to_tin(EdgeMesh& m, const std::vector<VertexIndex>& kernel_to_vertex,
+                     std::vector<Point3> vertices)
+{
+    TinDraft draft;
+    draft.tin.vertices = std::move(vertices);
+    const EdgeId outer_edge = outer_face_edge(m);
+    const std::array<EdgeId, 3> outer = outer_triangle(m, outer_edge);
+
+    // 1-2. Canonical edges in slot order: counted per block, then written per block.
+    const std::size_t slot_count = m.slot_count();
+    const std::size_t blocks = (slot_count + block - 1) / block;
+    std::vector<std::size_t> offset(blocks + 1, 0);
+    tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
+        std::size_t c = 0;
+        for (std::size_t s = b * block; s < std::min(slot_count, (b + 1) * block); ++s) {
+            c += canonical_edge_of(m, s, outer) >> 31 ^ 1u;
+        }
+        offset[b + 1] = c;
+    });
+    for (std::size_t b = 0; b < blocks; ++b) offset[b + 1] += offset[b];
+    const std::size_t count = offset[blocks];
+    std::vector<EdgeId> first_edge;
+    reserve_huge(first_edge, count);
+    first_edge.resize(count);
+    tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
+        std::size_t at = offset[b];
+        const std::size_t end = offset[b + 1];
+        for (std::size_t s = b * block; s < std::min(slot_count, (b + 1) * block) && at < end; ++s) {
+            const EdgeId e = canonical_edge_of(m, s, outer);
+            first_edge[at] = e;
+            at += e >> 31 ^ 1u;
+        }
+    });
+    release(m.onext);  // from here on only org, oprev (lnext) and the constraint bits are read
+    release(m.alive);
+    release(m.points);
+
+    // 3. Vertices and constraint bits, then neighbours through face ids kept in the origin array.
+    std::vector<Triangle>& tris = draft.tin.triangles;
+    reserve_huge(tris, count);
+    tris.resize(count);
+    reserve_huge(draft.edge_bits, count);
+    draft.edge_bits.resize(count);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, grain), [&](const auto& r) {
+        for (std::size_t t = r.begin(); t < r.end(); ++t) {
+            const EdgeId e = first_edge[t];
+            const EdgeId e1 = m.lnext(e);
+            const EdgeId e2 = m.lnext(e1);
+            tris[t].v = {kernel_to_vertex[m.org[e]], kernel_to_vertex[m.org[e1]],
+                         kernel_to_vertex[m.org[e2]]};
+            draft.edge_bits[t] = {m.constrained[e1 >> 1], m.constrained[e2 >> 1],
+                                  m.constrained[e >> 1]};
+        }
+    });
+    release(m.constrained);
+    auto& face = m.org;
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, grain), [&](const auto& r) {
+        for (std::size_t t = r.begin(); t < r.end(); ++t) {
+            const EdgeId e = first_edge[t];
+            const EdgeId e1 = m.lnext(e);
+            face[e] = face[e1] = face[m.lnext(e1)] = static_cast<TriangleIndex>(t);
+        }
+    });
+    // The outer face's edges have no triangle on their left.
+    if (outer_edge != no_edge) {
+        EdgeId e = outer_edge;
+        do {
+            face[e] = no_triangle;
+            e = m.lnext(e);
+        } while (e != outer_edge);
+    }
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, grain), [&](const auto& r) {
+        for (std::size_t t = r.begin(); t < r.end(); ++t) {
+            const EdgeId e = first_edge[t];
+            const EdgeId e1 = m.lnext(e);
+            const EdgeId e2 = m.lnext(e1);
+            tris[t].n = {face[e1 ^ 1u], face[e2 ^ 1u], face[e ^ 1u]};
+        }
+    });
+    return draft;
+}
+
+}  // namespace dtm::detail
