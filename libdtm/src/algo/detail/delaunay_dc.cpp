@@ -54,6 +54,12 @@ inline bool before(int axis, const KernelPoint& a, const KernelPoint& b) noexcep
     return a.y < b.y || (a.y == b.y && a.x > b.x);
 }
 
+/// Subtrees of at most this many points are not cut alternately but sorted by x once and cut
+/// vertically by index (Guibas and Stolfi's original scheme): at this size the shape of the pieces
+/// hardly changes the merges, and selecting medians for every tiny subtree cost more than all the
+/// larger cuts together.
+constexpr std::size_t strip_size = 16;
+
 /// The same order without branches, for the median selection.
 template <int Axis>
 struct Before {
@@ -74,6 +80,33 @@ public:
     {
     }
 
+    /// Orders points [lo, hi) as the recursion will cut them: the median split by the cut's order,
+    /// recursively, and each leaf sorted in its parent's frame. Done as a pass of its own, before
+    /// any merge, so the partitioning streams through the points without the mesh in the caches.
+    void split(std::size_t lo, std::size_t hi, int cut, int frame, std::size_t parent_n)
+    {
+        const std::size_t n = hi - lo;
+        if (n <= strip_size) {
+            std::sort(pts_ + lo, pts_ + hi, Before<0>{});
+            (void)frame;
+            return;
+        }
+        const std::size_t mid = lo + n / 2;
+        if (cut == 0) {
+            select_kth(pts_ + lo, n, n / 2, Before<0>{}, scratch_.local());
+        } else {
+            select_kth(pts_ + lo, n, n / 2, Before<1>{}, scratch_.local());
+        }
+        if (options_.parallel_cutoff > 0 && n > options_.parallel_cutoff) {
+            tbb::parallel_invoke([&] { split(lo, mid, 1 - cut, cut, n); },
+                                 [&] { split(mid, hi, 1 - cut, cut, n); });
+        } else {
+            split(lo, mid, 1 - cut, cut, n);
+            split(mid, hi, 1 - cut, cut, n);
+        }
+        if (n <= progress_unit_ && parent_n > progress_unit_) report(n);
+    }
+
     /// Triangulates points [lo, hi) with edges from the slots [3 lo, 3 hi); @p slots receives
     /// what is left of that range.
     Hull build(std::size_t lo, std::size_t hi, int cut, int frame, EdgeSlots& slots,
@@ -83,24 +116,26 @@ public:
         slots = EdgeSlots{static_cast<EdgeId>(3 * lo), static_cast<EdgeId>(3 * hi)};
         if (n <= 3) return base_case(lo, n, frame, slots);
         const Hull hull = build_inner(lo, hi, cut, frame, slots);
-        if (n <= progress_unit_ && parent_n > progress_unit_) {
-            const std::size_t done = done_.fetch_add(n) + n;
-            progress_.report(static_cast<double>(done) / static_cast<double>(total_),
-                             "triangulating");
-        }
+        if (n <= progress_unit_ && parent_n > progress_unit_) report(n);
         return hull;
     }
 
 private:
+    /// Progress over both passes (split, then build), about a fifth of the work in the first.
+    void report(std::size_t n)
+    {
+        const std::size_t done = done_.fetch_add(n) + n;
+        const double total = static_cast<double>(total_);
+        const double fraction = done <= total_ ? 0.2 * static_cast<double>(done) / total
+                                               : 0.2 + 0.8 * static_cast<double>(done - total_) / total;
+        progress_.report(fraction, "triangulating");
+    }
+
     Hull build_inner(std::size_t lo, std::size_t hi, int cut, int frame, EdgeSlots& slots)
     {
         const std::size_t n = hi - lo;
+        if (n <= strip_size) cut = 0;  // sorted by x: cut by index, vertically
         const std::size_t mid = lo + n / 2;
-        if (cut == 0) {
-            select_kth(pts_ + lo, n, n / 2, Before<0>{}, scratch_.local());
-        } else {
-            select_kth(pts_ + lo, n, n / 2, Before<1>{}, scratch_.local());
-        }
         Hull left{};
         Hull right{};
         EdgeSlots left_slots;
@@ -149,11 +184,18 @@ private:
         return orient(x, mesh_.org[e], mesh_.dest(e)) > 0;
     }
 
+    /// Two or three points, sorted by x by split(); put in the order of the frame.
     Hull base_case(std::size_t lo, std::size_t n, int frame, EdgeSlots& slots)
     {
-        std::sort(pts_ + lo, pts_ + lo + n, [frame](const KernelPoint& a, const KernelPoint& b) {
-            return before(frame, a, b);
-        });
+        if (frame == 1) {
+            const Before<1> less;
+            KernelPoint* p = pts_ + lo;
+            if (less(p[1], p[0])) std::swap(p[0], p[1]);
+            if (n == 3) {
+                if (less(p[2], p[1])) std::swap(p[1], p[2]);
+                if (less(p[1], p[0])) std::swap(p[0], p[1]);
+            }
+        }
         const auto v0 = static_cast<VertexId>(lo);
         const EdgeId a = mesh_.make_edge(slots, v0, v0 + 1);
         if (n == 2) return {a, EdgeMesh::sym(a)};
@@ -276,6 +318,7 @@ void delaunay_divide_and_conquer(BigArray<KernelPoint>& points, EdgeMesh& mesh, 
     slots = EdgeSlots{0, static_cast<EdgeId>(3 * n)};
     if (n >= 2) {
         Builder builder(points, mesh, options, progress);
+        builder.split(0, n, 0, 0, n + 1);
         builder.build(0, n, 0, 0, slots, n + 1);
     }
     slots.end = static_cast<EdgeId>(mesh.slot_count());

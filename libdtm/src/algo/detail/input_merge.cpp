@@ -69,31 +69,39 @@ void add_polylines(const std::vector<Polyline>& lines, std::uint8_t bits, bool r
     }
 }
 
-/// Exact duplicates by an open-addressing hash table on the coordinate bits (-0.0 counts as 0.0).
-std::vector<std::size_t> exact_representatives(const std::vector<Point3>& pts)
+/// rep[i]: the combined index of the point i is merged into (rep[i] == i when kept).
+using Representatives = std::vector<VertexIndex>;
+
+/// Exact duplicates by an open-addressing hash table of 32-bit indices on the coordinate bits
+/// (-0.0 counts as 0.0). Half the table's slots stay empty, so probes are short.
+Representatives exact_representatives(const std::vector<Point3>& pts)
 {
     const std::size_t n = pts.size();
-    std::vector<std::size_t> rep(n);
+    Representatives rep(n);
     std::size_t capacity = 16;
     while (capacity < 2 * n) capacity *= 2;
-    constexpr std::size_t empty = std::numeric_limits<std::size_t>::max();
-    std::vector<std::size_t> table(capacity, empty);
+    constexpr VertexIndex empty = no_vertex;
+    std::vector<VertexIndex> table(capacity, empty);
     const auto bits = [](double v) {
         return std::bit_cast<std::uint64_t>(v == 0.0 ? 0.0 : v);
     };
-    for (std::size_t i = 0; i < n; ++i) {
-        const std::uint64_t bx = bits(pts[i].x);
-        const std::uint64_t by = bits(pts[i].y);
+    const auto slot_of = [&](const Point3& p) {
+        const std::uint64_t bx = bits(p.x);
+        const std::uint64_t by = bits(p.y);
         std::uint64_t h = (bx * 0x9e3779b97f4a7c15ull) ^ (by + 0x7f4a7c159e3779b9ull + (bx << 6));
         h ^= h >> 29;
         h *= 0xbf58476d1ce4e5b9ull;
         h ^= h >> 32;
-        std::size_t slot = static_cast<std::size_t>(h) & (capacity - 1);
-        rep[i] = i;
-        for (;; slot = (slot + 1) & (capacity - 1)) {
-            const std::size_t j = table[slot];
+        return static_cast<std::size_t>(h) & (capacity - 1);
+    };
+    constexpr std::size_t ahead = 16;  // prefetch distance: the table is far larger than the caches
+    for (std::size_t i = 0; i < n; ++i) {
+        if (i + ahead < n) __builtin_prefetch(&table[slot_of(pts[i + ahead])]);
+        rep[i] = static_cast<VertexIndex>(i);
+        for (std::size_t slot = slot_of(pts[i]);; slot = (slot + 1) & (capacity - 1)) {
+            const VertexIndex j = table[slot];
             if (j == empty) {
-                table[slot] = i;
+                table[slot] = static_cast<VertexIndex>(i);
                 break;
             }
             if (pts[j].x == pts[i].x && pts[j].y == pts[i].y) {
@@ -106,29 +114,29 @@ std::vector<std::size_t> exact_representatives(const std::vector<Point3>& pts)
 }
 
 /// rep[i]: the combined index of the point i is merged into (rep[i] == i when kept).
-std::vector<std::size_t> find_representatives(const std::vector<Point3>& pts, double snap)
+Representatives find_representatives(const std::vector<Point3>& pts, double snap)
 {
     const std::size_t n = pts.size();
-    std::vector<std::size_t> rep(n);
     if (snap <= 0.0) return exact_representatives(pts);
+    Representatives rep(n);
     struct CellHash {
         std::size_t operator()(const std::pair<std::int64_t, std::int64_t>& c) const noexcept
         {
             return std::hash<std::int64_t>()(c.first * 0x9e3779b97f4a7c15LL ^ c.second);
         }
     };
-    std::unordered_map<std::pair<std::int64_t, std::int64_t>, std::vector<std::size_t>, CellHash>
+    std::unordered_map<std::pair<std::int64_t, std::int64_t>, std::vector<VertexIndex>, CellHash>
         grid;
     const double snap2 = snap * snap;
     for (std::size_t i = 0; i < n; ++i) {
         const auto cx = static_cast<std::int64_t>(std::floor(pts[i].x / snap));
         const auto cy = static_cast<std::int64_t>(std::floor(pts[i].y / snap));
-        std::size_t found = i;
+        auto found = static_cast<VertexIndex>(i);
         for (std::int64_t dx = -1; dx <= 1; ++dx) {
             for (std::int64_t dy = -1; dy <= 1; ++dy) {
                 const auto it = grid.find({cx + dx, cy + dy});
                 if (it == grid.end()) continue;
-                for (const std::size_t r : it->second) {
+                for (const VertexIndex r : it->second) {
                     const double ex = pts[r].x - pts[i].x;
                     const double ey = pts[r].y - pts[i].y;
                     if (ex * ex + ey * ey < snap2 && r < found) found = r;
@@ -136,7 +144,7 @@ std::vector<std::size_t> find_representatives(const std::vector<Point3>& pts, do
             }
         }
         rep[i] = found;
-        if (found == i) grid[{cx, cy}].push_back(i);
+        if (found == i) grid[{cx, cy}].push_back(found);
     }
     return rep;
 }
@@ -150,6 +158,41 @@ double rule_z(DuplicateRule rule, double current, double z, std::size_t count)
         case DuplicateRule::max: return std::max(current, z);
     }
     return current;
+}
+
+/// Fills out.vertices, z_known, input_to_vertex and merges when some points merge.
+void merge_duplicates(const Combined& c, const Representatives& rep, std::size_t kept_count,
+                      DuplicateRule rule, MergedInput& out)
+{
+    std::vector<VertexIndex> vertex_of(c.points.size(), no_vertex);
+    std::vector<std::uint32_t> z_count;
+    out.vertices.reserve(kept_count);  // exact: no growth slack in the largest array
+    out.z_known.reserve(kept_count);
+    z_count.reserve(kept_count);
+    for (std::size_t i = 0; i < c.points.size(); ++i) {
+        if (rep[i] == i) {
+            vertex_of[i] = static_cast<VertexIndex>(out.vertices.size());
+            out.vertices.push_back(c.points[i]);
+            out.z_known.push_back(c.z_known[i]);
+            z_count.push_back(c.z_known[i] ? 1 : 0);
+            continue;
+        }
+        const VertexIndex v = vertex_of[rep[i]];
+        vertex_of[i] = v;
+        if (c.z_known[i]) {
+            Point3& kept = out.vertices[v];
+            ++z_count[v];
+            kept.z = out.z_known[v] ? rule_z(rule, kept.z, c.points[i].z, z_count[v])
+                                    : c.points[i].z;
+            out.z_known[v] = true;
+        }
+    }
+    for (std::size_t i = 0; i < c.points.size(); ++i) {
+        if (rep[i] != i) {
+            out.merges.push_back({rep[i], i, out.vertices[vertex_of[i]], c.points[i]});
+        }
+    }
+    out.input_to_vertex = std::move(vertex_of);
 }
 
 }  // namespace
@@ -180,38 +223,21 @@ MergedInput merge_input(TerrainInput&& input, const TriangulateOptions& options)
 
     MergedInput out;
     out.points_in = c.points.size();
-    const std::vector<std::size_t> rep = find_representatives(c.points, options.snap_distance);
-    std::vector<VertexIndex> vertex_of(c.points.size(), no_vertex);
-    std::vector<std::size_t> z_count;
+    if (c.points.size() >= no_vertex) {
+        throw InputError("more than " + std::to_string(no_vertex - 1) + " input points");
+    }
+    const Representatives rep = find_representatives(c.points, options.snap_distance);
     std::size_t kept_count = 0;
     for (std::size_t i = 0; i < rep.size(); ++i) kept_count += rep[i] == i ? 1 : 0;
-    out.vertices.reserve(kept_count);  // exact: no growth slack in the largest array
-    out.z_known.reserve(kept_count);
-    z_count.reserve(kept_count);
-    for (std::size_t i = 0; i < c.points.size(); ++i) {
-        if (rep[i] == i) {
-            vertex_of[i] = static_cast<VertexIndex>(out.vertices.size());
-            out.vertices.push_back(c.points[i]);
-            out.z_known.push_back(c.z_known[i]);
-            z_count.push_back(c.z_known[i] ? 1 : 0);
-            continue;
-        }
-        const VertexIndex v = vertex_of[rep[i]];
-        vertex_of[i] = v;
-        if (c.z_known[i]) {
-            Point3& kept = out.vertices[v];
-            ++z_count[v];
-            kept.z = out.z_known[v] ? rule_z(options.duplicates, kept.z, c.points[i].z, z_count[v])
-                                    : c.points[i].z;
-            out.z_known[v] = true;
-        }
+    if (kept_count == c.points.size()) {
+        // Nothing to merge (the usual case): the points become the vertices as they are.
+        out.vertices = std::move(c.points);
+        out.z_known = std::move(c.z_known);
+        out.input_to_vertex.resize(out.vertices.size());
+        std::iota(out.input_to_vertex.begin(), out.input_to_vertex.end(), VertexIndex{0});
+    } else {
+        merge_duplicates(c, rep, kept_count, options.duplicates, out);
     }
-    for (std::size_t i = 0; i < c.points.size(); ++i) {
-        if (rep[i] != i) {
-            out.merges.push_back({rep[i], i, out.vertices[vertex_of[i]], c.points[i]});
-        }
-    }
-    out.input_to_vertex = std::move(vertex_of);
     for (const InputSegment& s : c.segments) {
         const VertexIndex a = out.input_to_vertex[s.a];
         const VertexIndex b = out.input_to_vertex[s.b];

@@ -31,7 +31,7 @@ namespace dtm::detail {
 /// Scratch memory of one thread for select_kth.
 template <class T>
 struct SelectScratch {
-    static constexpr std::size_t capacity = std::size_t{1} << 16;
+    static constexpr std::size_t capacity = std::size_t{1} << 14;  // 384 KiB of points: in L2
     std::unique_ptr<T[]> data;
     T* get()
     {
@@ -76,7 +76,7 @@ std::size_t partition_branch_free(T* a, std::size_t n, const T& pivot, Less less
 template <class T, class Less>
 void select_kth(T* a, std::size_t n, std::size_t k, Less less, SelectScratch<T>& scratch)
 {
-    constexpr std::size_t small = 64;
+    constexpr std::size_t small = 1024;  // in cache: std::nth_element is as fast
     constexpr std::size_t max_sample = 127;
     while (n > small && k > 0 && k < n) {
         const std::size_t s = n > 8192 ? max_sample : (n > 512 ? 31 : 9);
