@@ -10,12 +10,12 @@
 // constraint_batch.cpp), and it follows the recursion, so it is spatially coherent: each pass
 // below reads the mesh almost sequentially.
 //
-//   1. one pass over the directed edges counts the canonical edges per block of slots; the outer
-//      face is recognised by walking it once from a corner of the hull, not by an orientation
-//      test per face;
-//   2. a prefix sum gives every block its place, a second pass writes the canonical edges;
-//   3. per triangle: vertices, constraint bits, then neighbours through a face id per directed
-//      edge, stored in the (no longer needed) origin array to keep the peak memory low.
+//   1. one pass over the slots collects the canonical edges per block of slots (branch-free: one
+//      candidate direction per slot); the outer face is recognised by walking it once from a
+//      corner of the hull, not by an orientation test per face;
+//   2. the blocks are concatenated in order;
+//   3. per triangle: vertices, constraint bits and its id at its three directed edges, stored in
+//      the origin array to keep the peak memory low; then the neighbours through those ids.
 // Every pass runs in parallel over blocks and writes only its own elements.
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -108,41 +108,45 @@ TinDraft mesh_to_tin(EdgeMesh& m, const std::vector<VertexIndex>& kernel_to_vert
     const EdgeId outer_edge = outer_face_edge(m);
     const std::array<EdgeId, 3> outer = outer_triangle(m, outer_edge);
 
-    // 1-2. Canonical edges in slot order: counted per block, then written per block.
+    // 1-2. Canonical edges in slot order, collected per block of slots, then concatenated.
     const std::size_t slot_count = m.slot_count();
     const std::size_t blocks = (slot_count + block - 1) / block;
-    std::vector<std::size_t> offset(blocks + 1, 0);
+    std::vector<std::vector<EdgeId>> found(blocks);
     tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
-        std::size_t c = 0;
-        for (std::size_t s = b * block; s < std::min(slot_count, (b + 1) * block); ++s) {
-            c += canonical_edge_of(m, s, outer) >> 31 ^ 1u;
+        const std::size_t end = std::min(slot_count, (b + 1) * block);
+        std::vector<EdgeId>& out = found[b];
+        out.resize(end - b * block + 1);
+        std::size_t at = 0;
+        for (std::size_t s = b * block; s < end; ++s) {
+            const EdgeId e = canonical_edge_of(m, s, outer);
+            out[at] = e;
+            at += e >> 31 ^ 1u;
         }
-        offset[b + 1] = c;
+        out.resize(at);
     });
-    for (std::size_t b = 0; b < blocks; ++b) offset[b + 1] += offset[b];
+    std::vector<std::size_t> offset(blocks + 1, 0);
+    for (std::size_t b = 0; b < blocks; ++b) offset[b + 1] = offset[b] + found[b].size();
     const std::size_t count = offset[blocks];
     std::vector<EdgeId> first_edge;
     reserve_huge(first_edge, count);
     first_edge.resize(count);
     tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
-        std::size_t at = offset[b];
-        const std::size_t end = offset[b + 1];
-        for (std::size_t s = b * block; s < std::min(slot_count, (b + 1) * block) && at < end; ++s) {
-            const EdgeId e = canonical_edge_of(m, s, outer);
-            first_edge[at] = e;
-            at += e >> 31 ^ 1u;
-        }
+        std::copy(found[b].begin(), found[b].end(),
+                  first_edge.begin() + static_cast<std::ptrdiff_t>(offset[b]));
+        release(found[b]);
     });
     release(m.onext);  // from here on only org, oprev (lnext) and the constraint bits are read
     release(m.alive);
     release(m.points);
 
-    // 3. Vertices and constraint bits, then neighbours through face ids kept in the origin array.
+    // 3. Vertices and constraint bits; then each triangle's id goes into the origin array at its
+    // own three directed edges (no other triangle reads those entries), for the neighbours.
     std::vector<Triangle>& tris = draft.tin.triangles;
     reserve_huge(tris, count);
     tris.resize(count);
     reserve_huge(draft.edge_bits, count);
     draft.edge_bits.resize(count);
+    auto& face = m.org;
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, grain), [&](const auto& r) {
         for (std::size_t t = r.begin(); t < r.end(); ++t) {
             const EdgeId e = first_edge[t];
@@ -152,17 +156,10 @@ TinDraft mesh_to_tin(EdgeMesh& m, const std::vector<VertexIndex>& kernel_to_vert
                          kernel_to_vertex[m.org[e2]]};
             draft.edge_bits[t] = {m.constrained[e1 >> 1], m.constrained[e2 >> 1],
                                   m.constrained[e >> 1]};
+            face[e] = face[e1] = face[e2] = static_cast<TriangleIndex>(t);
         }
     });
     release(m.constrained);
-    auto& face = m.org;
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, grain), [&](const auto& r) {
-        for (std::size_t t = r.begin(); t < r.end(); ++t) {
-            const EdgeId e = first_edge[t];
-            const EdgeId e1 = m.lnext(e);
-            face[e] = face[e1] = face[m.lnext(e1)] = static_cast<TriangleIndex>(t);
-        }
-    });
     // The outer face's edges have no triangle on their left.
     if (outer_edge != no_edge) {
         EdgeId e = outer_edge;
