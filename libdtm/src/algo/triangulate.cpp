@@ -15,6 +15,8 @@
 // of steps 2-3 without soft lines), then everything is built again with them.
 #include "dtm/algo/triangulate.hpp"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
 #include <chrono>
@@ -68,10 +70,21 @@ Kernel build_kernel(const MergedInput& in, bool with_soft, const TriangulateOpti
     Kernel k;
     auto start = std::chrono::steady_clock::now();
     detail::BigArray<detail::KernelPoint> points;
-    points.reserve(in.vertices.size());
-    for (std::size_t i = 0; i < in.vertices.size(); ++i) {
-        if (!with_soft && !in.z_known[i]) continue;
-        points.push_back({{in.vertices[i].x, in.vertices[i].y}, static_cast<std::uint32_t>(i)});
+    if (with_soft) {  // every vertex: filled in parallel
+        points.resize(in.vertices.size());
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, points.size(), 1 << 14),
+                          [&](const auto& r) {
+                              for (std::size_t i = r.begin(); i < r.end(); ++i) {
+                                  points[i] = {{in.vertices[i].x, in.vertices[i].y},
+                                               static_cast<std::uint32_t>(i)};
+                              }
+                          });
+    } else {
+        points.reserve(in.vertices.size());
+        for (std::size_t i = 0; i < in.vertices.size(); ++i) {
+            if (!in.z_known[i]) continue;
+            points.push_back({{in.vertices[i].x, in.vertices[i].y}, static_cast<std::uint32_t>(i)});
+        }
     }
     detail::DelaunayDcOptions dc;
     dc.parallel_cutoff = parallel_cutoff(points.size(), options);
@@ -80,28 +93,32 @@ Kernel build_kernel(const MergedInput& in, bool with_soft, const TriangulateOpti
     std::vector<detail::VertexId> kernel_of(in.vertices.size(), detail::no_edge);
     k.vertex_of_kernel.resize(kernel_count);
     k.z.resize(kernel_count);
-    for (std::size_t v = 0; v < kernel_count; ++v) {
-        const std::uint32_t id = k.mesh.points[v].id;
-        k.vertex_of_kernel[v] = id;
-        kernel_of[id] = static_cast<detail::VertexId>(v);
-        k.z[v] = in.vertices[id].z;
-    }
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, kernel_count, 1 << 14), [&](const auto& r) {
+        for (std::size_t v = r.begin(); v < r.end(); ++v) {
+            const std::uint32_t id = k.mesh.points[v].id;  // ids are distinct: no write conflicts
+            k.vertex_of_kernel[v] = id;
+            kernel_of[id] = static_cast<detail::VertexId>(v);
+            k.z[v] = in.vertices[id].z;
+        }
+    });
     k.seconds_triangulate = seconds_since(start);
 
     start = std::chrono::steady_clock::now();
-    detail::MeshEditor editor(k.mesh, k.slots, k.z, options.z_tolerance);
     std::vector<detail::InputSegment> segments;
     segments.reserve(in.segments.size());
     for (const detail::InputSegment& seg : in.segments) {
         if (!with_soft && seg.bits == detail::constraint_soft) continue;
         segments.push_back({kernel_of[seg.a], kernel_of[seg.b], seg.bits});
     }
-    detail::insert_segments(editor, k.mesh, segments, progress.sub(0.7, 1.0));
+    if (!segments.empty()) {
+        detail::MeshEditor editor(k.mesh, k.slots, k.z, options.z_tolerance);
+        detail::insert_segments(editor, k.mesh, segments, progress.sub(0.7, 1.0));
+        k.crossings = editor.crossings();
+    }
     const auto first_added = static_cast<VertexIndex>(in.vertices.size());
     for (std::size_t v = kernel_count; v < k.mesh.points.size(); ++v) {
         k.vertex_of_kernel.push_back(first_added + static_cast<VertexIndex>(v - kernel_count));
     }
-    k.crossings = editor.crossings();
     k.seconds_constrain = seconds_since(start);
     return k;
 }
@@ -187,6 +204,7 @@ TriangulateResult run(TerrainInput&& input, const TriangulateOptions& options,
     }
     k.z = {};  // heights live in `vertices` now
     detail::TinDraft draft = detail::mesh_to_tin(k.mesh, k.vertex_of_kernel, std::move(vertices));
+    draft.any_constraint = !merged.segments.empty();
     k.mesh = detail::EdgeMesh{};
     result.stats.removed_triangles =
         detail::apply_domain(draft, has_boundary, hole_seeds, options.max_edge);

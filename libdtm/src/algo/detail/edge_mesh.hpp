@@ -81,12 +81,13 @@ struct EdgeMesh {
     }
     [[nodiscard]] std::size_t slot_count() const noexcept { return alive.size(); }
 
-    /// Grows the slot arrays to @p slot_count, keeping every existing edge.
+    /// Grows the slot arrays to @p slot_count, keeping every existing edge. The links of a new
+    /// slot are left unset: make_edge sets them, and nothing reads a slot that is not alive.
     void grow_slots(std::size_t slot_count)
     {
-        org.resize(2 * slot_count, 0);
-        onext.resize(2 * slot_count, no_edge);
-        oprev.resize(2 * slot_count, no_edge);
+        org.resize(2 * slot_count);
+        onext.resize(2 * slot_count);
+        oprev.resize(2 * slot_count);
         constrained.resize(slot_count, 0);
         alive.resize(slot_count, 0);
     }

@@ -52,8 +52,10 @@ std::size_t apply_domain(TinDraft& draft, bool has_boundary, const std::vector<P
     std::vector<bool> keep(count, true);
     // Rings: 0-1 BFS over crossings of boundary/hole edges.
     bool any_ring = has_boundary;
-    for (const auto& bits : draft.edge_bits) {
-        for (const std::uint8_t b : bits) any_ring = any_ring || (b & domain_bits) != 0;
+    if (draft.any_constraint) {
+        for (const auto& bits : draft.edge_bits) {
+            for (const std::uint8_t b : bits) any_ring = any_ring || (b & domain_bits) != 0;
+        }
     }
     if (any_ring) {
         constexpr std::uint32_t unset = 0xffffffffu;

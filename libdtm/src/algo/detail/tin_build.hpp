@@ -16,6 +16,7 @@ namespace dtm::detail {
 /// A Tin under construction: per triangle, the ConstraintBits of the edge opposite v[i].
 struct TinDraft {
     Tin tin;
+    bool any_constraint = true;  ///< false: every edge_bits entry is 0 (nothing to scan)
     std::vector<std::array<std::uint8_t, 3>> edge_bits;
 };
 

@@ -64,7 +64,7 @@ void finish_tin(TinDraft& draft)
     const std::vector<Triangle>& tris = draft.tin.triangles;
     std::vector<ConstrainedEdge>& constraints = draft.tin.constraints;
     constraints.clear();
-    for (std::size_t t = 0; t < tris.size(); ++t) {
+    for (std::size_t t = 0; draft.any_constraint && t < tris.size(); ++t) {
         const Triangle& tri = tris[t];
         const auto& bits = draft.edge_bits[t];
         for (int j = 0; j < 3; ++j) {
