@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <random>
 
 #include "dtm/algo/validate.hpp"
@@ -131,6 +132,41 @@ TEST(Triangulate, DuplicatesAreMergedWithTheChosenHeightRuleAndListed)
         EXPECT_EQ(r.merges[0].merged_input, 3u);
         EXPECT_EQ(r.tin.vertices.size(), 4u);
         EXPECT_DOUBLE_EQ(r.tin.vertices[r.input_to_vertex[4]].z, z);
+    }
+}
+
+TEST(Triangulate, ManyDuplicatesMergeIntoTheirFirstOccurrenceWithOneOrTwoThreads)
+{
+    // Large enough for the parallel hash table; every 7th point repeats an earlier one (and
+    // some repeat a repeat), in shuffled order, with -0.0 standing for 0.0.
+    TerrainInput input;
+    input.points = random_points(150000, 11);
+    input.points.push_back({0.0, 0.0, 1.0});
+    std::mt19937 rng(5);
+    const std::size_t originals = input.points.size();
+    for (std::size_t i = 0; i < originals / 7; ++i) {
+        Point3 p = input.points[rng() % input.points.size()];
+        p.z += 1.0;
+        input.points.push_back(p);
+    }
+    input.points.push_back({-0.0, 0.0, 2.0});
+    std::map<std::pair<double, double>, std::size_t> first;
+    for (std::size_t i = 0; i < input.points.size(); ++i) {
+        const double x = input.points[i].x == 0.0 ? 0.0 : input.points[i].x;
+        first.emplace(std::make_pair(x, input.points[i].y), i);
+    }
+    for (const unsigned threads : {1u, 2u}) {
+        TriangulateOptions o;
+        o.threads = threads;
+        const TriangulateResult r = triangulate(input, o);
+        EXPECT_EQ(r.tin.vertices.size(), first.size()) << threads << " threads";
+        ASSERT_EQ(r.stats.duplicates_merged, input.points.size() - first.size());
+        for (const DuplicateMerge& m : r.merges) {
+            const Point3& p = input.points[m.merged_input];
+            const double x = p.x == 0.0 ? 0.0 : p.x;
+            ASSERT_EQ(m.kept_input, first.at({x, p.y})) << "merged input " << m.merged_input;
+            ASSERT_EQ(r.input_to_vertex[m.merged_input], r.input_to_vertex[m.kept_input]);
+        }
     }
 }
 

@@ -8,7 +8,12 @@
 // DuplicateRule over the points that carry a height (soft breakline vertices carry none).
 #include "algo/detail/input_merge.hpp"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
 #include <algorithm>
+#include <atomic>
 #include <bit>
 #include <limits>
 #include <cmath>
@@ -16,6 +21,7 @@
 #include <string>
 #include <unordered_map>
 
+#include "algo/detail/big_array.hpp"
 #include "algo/detail/edge_mesh.hpp"
 #include "dtm/core/error.hpp"
 
@@ -72,35 +78,35 @@ void add_polylines(const std::vector<Polyline>& lines, std::uint8_t bits, bool r
 /// rep[i]: the combined index of the point i is merged into (rep[i] == i when kept).
 using Representatives = std::vector<VertexIndex>;
 
-/// Exact duplicates by an open-addressing hash table of 32-bit indices on the coordinate bits
-/// (-0.0 counts as 0.0). Half the table's slots stay empty, so probes are short.
-Representatives exact_representatives(const std::vector<Point3>& pts)
+/// Hash-table slot of a position (-0.0 counts as 0.0).
+std::size_t slot_of(const Point3& p, std::size_t capacity)
+{
+    const auto bits = [](double v) { return std::bit_cast<std::uint64_t>(v == 0.0 ? 0.0 : v); };
+    const std::uint64_t bx = bits(p.x);
+    const std::uint64_t by = bits(p.y);
+    std::uint64_t h = (bx * 0x9e3779b97f4a7c15ull) ^ (by + 0x7f4a7c159e3779b9ull + (bx << 6));
+    h ^= h >> 29;
+    h *= 0xbf58476d1ce4e5b9ull;
+    h ^= h >> 32;
+    return static_cast<std::size_t>(h) & (capacity - 1);
+}
+
+/// Exact duplicates by an open-addressing hash table of 32-bit indices on the coordinate bits.
+/// Half the table's slots stay empty, so probes are short. Sequential: the first occurrence of a
+/// position claims its slot.
+Representatives exact_representatives_sequential(const std::vector<Point3>& pts,
+                                                 std::vector<VertexIndex>& table)
 {
     const std::size_t n = pts.size();
+    const std::size_t capacity = table.size();
     Representatives rep(n);
-    std::size_t capacity = 16;
-    while (capacity < 2 * n) capacity *= 2;
-    constexpr VertexIndex empty = no_vertex;
-    std::vector<VertexIndex> table(capacity, empty);
-    const auto bits = [](double v) {
-        return std::bit_cast<std::uint64_t>(v == 0.0 ? 0.0 : v);
-    };
-    const auto slot_of = [&](const Point3& p) {
-        const std::uint64_t bx = bits(p.x);
-        const std::uint64_t by = bits(p.y);
-        std::uint64_t h = (bx * 0x9e3779b97f4a7c15ull) ^ (by + 0x7f4a7c159e3779b9ull + (bx << 6));
-        h ^= h >> 29;
-        h *= 0xbf58476d1ce4e5b9ull;
-        h ^= h >> 32;
-        return static_cast<std::size_t>(h) & (capacity - 1);
-    };
     constexpr std::size_t ahead = 16;  // prefetch distance: the table is far larger than the caches
     for (std::size_t i = 0; i < n; ++i) {
-        if (i + ahead < n) __builtin_prefetch(&table[slot_of(pts[i + ahead])]);
+        if (i + ahead < n) __builtin_prefetch(&table[slot_of(pts[i + ahead], capacity)]);
         rep[i] = static_cast<VertexIndex>(i);
-        for (std::size_t slot = slot_of(pts[i]);; slot = (slot + 1) & (capacity - 1)) {
+        for (std::size_t slot = slot_of(pts[i], capacity);; slot = (slot + 1) & (capacity - 1)) {
             const VertexIndex j = table[slot];
-            if (j == empty) {
+            if (j == no_vertex) {
                 table[slot] = static_cast<VertexIndex>(i);
                 break;
             }
@@ -111,6 +117,65 @@ Representatives exact_representatives(const std::vector<Point3>& pts)
         }
     }
     return rep;
+}
+
+/// The same table filled by all threads at once: a slot, once claimed, only ever holds the same
+/// position, and among equal positions the smallest index wins by an atomic minimum, so the
+/// table ends as the sequential one would (the first occurrence in every slot) whatever the
+/// schedule. A second parallel pass reads the representatives when any position repeats.
+Representatives exact_representatives_parallel(const std::vector<Point3>& pts,
+                                               std::vector<VertexIndex>& table)
+{
+    const std::size_t n = pts.size();
+    const std::size_t capacity = table.size();
+    std::atomic<bool> repeats{false};
+    const auto find = [&](std::size_t i, bool claim) {
+        for (std::size_t slot = slot_of(pts[i], capacity);; slot = (slot + 1) & (capacity - 1)) {
+            std::atomic_ref<VertexIndex> cell(table[slot]);
+            VertexIndex j = cell.load(std::memory_order_acquire);
+            if (j == no_vertex) {
+                if (!claim) return slot;  // cannot happen after the first pass
+                if (cell.compare_exchange_strong(j, static_cast<VertexIndex>(i),
+                                                 std::memory_order_acq_rel)) {
+                    return slot;
+                }
+                // j now holds the winner: fall through and compare with it
+            }
+            if (pts[j].x == pts[i].x && pts[j].y == pts[i].y) {
+                if (claim) {
+                    repeats.store(true, std::memory_order_relaxed);
+                    while (i < j && !cell.compare_exchange_weak(j, static_cast<VertexIndex>(i),
+                                                                std::memory_order_acq_rel)) {
+                    }
+                }
+                return slot;
+            }
+        }
+    };
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1 << 14), [&](const auto& r) {
+        for (std::size_t i = r.begin(); i < r.end(); ++i) find(i, true);
+    });
+    Representatives rep(n);
+    const bool any = repeats.load();
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1 << 14), [&](const auto& r) {
+        for (std::size_t i = r.begin(); i < r.end(); ++i) {
+            rep[i] = any ? table[find(i, false)] : static_cast<VertexIndex>(i);
+        }
+    });
+    return rep;
+}
+
+Representatives exact_representatives(const std::vector<Point3>& pts)
+{
+    std::size_t capacity = 16;
+    while (capacity < 2 * pts.size()) capacity *= 2;
+    std::vector<VertexIndex> table;
+    reserve_huge(table, capacity);
+    table.resize(capacity, no_vertex);
+    if (tbb::this_task_arena::max_concurrency() > 1 && pts.size() > 100'000) {
+        return exact_representatives_parallel(pts, table);
+    }
+    return exact_representatives_sequential(pts, table);
 }
 
 /// rep[i]: the combined index of the point i is merged into (rep[i] == i when kept).
