@@ -13,7 +13,7 @@
 //   1. one pass over the slots collects the canonical edges per block of slots (branch-free: one
 //      candidate direction per slot); the outer face is recognised by walking it once from a
 //      corner of the hull, not by an orientation test per face;
-//   2. the blocks are concatenated in order;
+//   2. a prefix sum over the blocks numbers the triangles;
 //   3. per triangle: vertices, constraint bits and its id at its three directed edges, stored in
 //      the origin array to keep the peak memory low; then the neighbours through those ids.
 // Every pass runs in parallel over blocks and writes only its own elements.
@@ -95,7 +95,6 @@ inline EdgeId canonical_edge_of(const EdgeMesh& m, std::size_t s, const std::arr
     return (triangle & smallest & inner) ? e : none;
 }
 
-constexpr std::size_t grain = 1 << 14;
 constexpr std::size_t block = 1 << 15;  ///< slots per block of the slot passes
 
 }  // namespace
@@ -107,8 +106,11 @@ TinDraft mesh_to_tin(EdgeMesh& m, const std::vector<VertexIndex>& kernel_to_vert
     draft.tin.vertices = std::move(vertices);
     const EdgeId outer_edge = outer_face_edge(m);
     const std::array<EdgeId, 3> outer = outer_triangle(m, outer_edge);
+    release(m.points);  // from here on: org, oprev (lnext), alive until step 1, constraint bits
+    release(m.onext);
 
-    // 1-2. Canonical edges in slot order, collected per block of slots, then concatenated.
+    // 1-2. Canonical edges in slot order, collected per block of slots; the blocks are used as
+    // they are (no concatenated copy) and give the triangles their numbers by a prefix sum.
     const std::size_t slot_count = m.slot_count();
     const std::size_t blocks = (slot_count + block - 1) / block;
     std::vector<std::vector<EdgeId>> found(blocks);
@@ -123,41 +125,35 @@ TinDraft mesh_to_tin(EdgeMesh& m, const std::vector<VertexIndex>& kernel_to_vert
             at += e >> 31 ^ 1u;
         }
         out.resize(at);
+        out.shrink_to_fit();
     });
+    release(m.alive);
     std::vector<std::size_t> offset(blocks + 1, 0);
     for (std::size_t b = 0; b < blocks; ++b) offset[b + 1] = offset[b] + found[b].size();
     const std::size_t count = offset[blocks];
-    std::vector<EdgeId> first_edge;
-    reserve_huge(first_edge, count);
-    first_edge.resize(count);
-    tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
-        std::copy(found[b].begin(), found[b].end(),
-                  first_edge.begin() + static_cast<std::ptrdiff_t>(offset[b]));
-        release(found[b]);
-    });
-    release(m.onext);  // from here on only org, oprev (lnext) and the constraint bits are read
-    release(m.alive);
-    release(m.points);
+    const auto for_each_triangle = [&](const auto& body) {
+        tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
+            const std::vector<EdgeId>& edges = found[b];
+            for (std::size_t j = 0; j < edges.size(); ++j) body(offset[b] + j, edges[j]);
+        });
+    };
 
-    // 3. Vertices and constraint bits; then each triangle's id goes into the origin array at its
-    // own three directed edges (no other triangle reads those entries), for the neighbours.
+    // 3. Vertices and constraint bits; each triangle's id goes into the origin array at its own
+    // three directed edges (no other triangle reads those entries); then the neighbours.
     std::vector<Triangle>& tris = draft.tin.triangles;
     reserve_huge(tris, count);
     tris.resize(count);
     reserve_huge(draft.edge_bits, count);
     draft.edge_bits.resize(count);
     auto& face = m.org;
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, grain), [&](const auto& r) {
-        for (std::size_t t = r.begin(); t < r.end(); ++t) {
-            const EdgeId e = first_edge[t];
-            const EdgeId e1 = m.lnext(e);
-            const EdgeId e2 = m.lnext(e1);
-            tris[t].v = {kernel_to_vertex[m.org[e]], kernel_to_vertex[m.org[e1]],
-                         kernel_to_vertex[m.org[e2]]};
-            draft.edge_bits[t] = {m.constrained[e1 >> 1], m.constrained[e2 >> 1],
-                                  m.constrained[e >> 1]};
-            face[e] = face[e1] = face[e2] = static_cast<TriangleIndex>(t);
-        }
+    for_each_triangle([&](std::size_t t, EdgeId e) {
+        const EdgeId e1 = m.lnext(e);
+        const EdgeId e2 = m.lnext(e1);
+        tris[t].v = {kernel_to_vertex[m.org[e]], kernel_to_vertex[m.org[e1]],
+                     kernel_to_vertex[m.org[e2]]};
+        draft.edge_bits[t] = {m.constrained[e1 >> 1], m.constrained[e2 >> 1],
+                              m.constrained[e >> 1]};
+        face[e] = face[e1] = face[e2] = static_cast<TriangleIndex>(t);
     });
     release(m.constrained);
     // The outer face's edges have no triangle on their left.
@@ -168,13 +164,10 @@ TinDraft mesh_to_tin(EdgeMesh& m, const std::vector<VertexIndex>& kernel_to_vert
             e = m.lnext(e);
         } while (e != outer_edge);
     }
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, grain), [&](const auto& r) {
-        for (std::size_t t = r.begin(); t < r.end(); ++t) {
-            const EdgeId e = first_edge[t];
-            const EdgeId e1 = m.lnext(e);
-            const EdgeId e2 = m.lnext(e1);
-            tris[t].n = {face[e1 ^ 1u], face[e2 ^ 1u], face[e ^ 1u]};
-        }
+    for_each_triangle([&](std::size_t t, EdgeId e) {
+        const EdgeId e1 = m.lnext(e);
+        const EdgeId e2 = m.lnext(e1);
+        tris[t].n = {face[e1 ^ 1u], face[e2 ^ 1u], face[e ^ 1u]};
     });
     return draft;
 }
