@@ -11,17 +11,23 @@
 // applied, concurrently with the other winners, whose vertex sets are disjoint from it; the rest
 // try again in the next round on the updated mesh. A plan whose vertices are disjoint from every
 // earlier pending plan cannot be changed by them, so the result equals sequential insertion in
-// input order whatever the schedule (Blelloch, Fineman, Gibbons, Shun, "Internally deterministic
-// parallel algorithms can be fast", PPoPP 2012); the priority order is a fixed hash of the input
-// index, so polyline chains do not serialise the rounds. Segments that cross, overlap or touch others
+// priority order whatever the schedule (Blelloch, Fineman, Gibbons, Shun, "Internally
+// deterministic parallel algorithms can be fast", PPoPP 2012). The priority order takes blocks of
+// nearby segments one after another and a fixed hash of the input index within a block, so the
+// mesh a window works on stays in the caches and polyline chains do not serialise the rounds.
+// Which segments touch others is found on a uniform grid (counting sort by cell, the pairs of
+// every cell tested in parallel). Segments that cross, overlap or touch others
 // are inserted afterwards one by one in input order, which keeps the vertices added at
 // crossings numbered the same way for every tile and thread count.
 #include "algo/detail/constraint_batch.hpp"
 
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <memory>
@@ -85,36 +91,57 @@ std::vector<bool> find_free_segments(const EdgeMesh& m, const std::vector<InputS
     const auto cell_of = [&](double v, double lo, std::size_t n) {
         return std::min(static_cast<std::size_t>((v - lo) / cell), n - 1);
     };
-    std::vector<std::pair<std::size_t, std::uint32_t>> entries;  // (cell, segment)
-    entries.reserve(2 * count);
-    for (std::size_t i = 0; i < count; ++i) {
+    // Bucket the segments by cell (counting sort: cell-major lists), then test the pairs of every
+    // cell in parallel; a flag only ever goes from free to not free, so the order of the writes
+    // does not matter.
+    const auto cell_range = [&](std::size_t i) {
         const Point2 &a = m.p(segments[i].a), &b = m.p(segments[i].b);
-        const std::size_t c0 = cell_of(std::min(a.x, b.x), box.xmin, cols);
-        const std::size_t c1 = cell_of(std::max(a.x, b.x), box.xmin, cols);
-        const std::size_t r0 = cell_of(std::min(a.y, b.y), box.ymin, rows);
-        const std::size_t r1 = cell_of(std::max(a.y, b.y), box.ymin, rows);
+        return std::array<std::size_t, 4>{cell_of(std::min(a.x, b.x), box.xmin, cols),
+                                          cell_of(std::max(a.x, b.x), box.xmin, cols),
+                                          cell_of(std::min(a.y, b.y), box.ymin, rows),
+                                          cell_of(std::max(a.y, b.y), box.ymin, rows)};
+    };
+    const std::size_t cells = cols * rows;
+    std::vector<std::uint32_t> start(cells + 1, 0);
+    for (std::size_t i = 0; i < count; ++i) {
+        const auto [c0, c1, r0, r1] = cell_range(i);
         for (std::size_t r = r0; r <= r1; ++r) {
-            for (std::size_t c = c0; c <= c1; ++c) {
-                entries.emplace_back(r * cols + c, static_cast<std::uint32_t>(i));
-            }
+            for (std::size_t c = c0; c <= c1; ++c) ++start[r * cols + c + 1];
         }
     }
-    std::sort(entries.begin(), entries.end());
-    for (std::size_t lo = 0; lo < entries.size();) {
-        std::size_t hi = lo;
-        while (hi < entries.size() && entries[hi].first == entries[lo].first) ++hi;
-        for (std::size_t i = lo; i < hi; ++i) {
-            for (std::size_t j = i + 1; j < hi; ++j) {
-                const std::uint32_t s = entries[i].second;
-                const std::uint32_t t = entries[j].second;
-                if ((free[s] || free[t]) && touch(m, segments[s], segments[t])) {
-                    free[s] = false;
-                    free[t] = false;
+    for (std::size_t c = 0; c < cells; ++c) start[c + 1] += start[c];
+    std::vector<std::uint32_t> listed(start[cells]);
+    {
+        std::vector<std::uint32_t> at(start.begin(), start.end() - 1);
+        for (std::size_t i = 0; i < count; ++i) {
+            const auto [c0, c1, r0, r1] = cell_range(i);
+            for (std::size_t r = r0; r <= r1; ++r) {
+                for (std::size_t c = c0; c <= c1; ++c) {
+                    listed[at[r * cols + c]++] = static_cast<std::uint32_t>(i);
                 }
             }
         }
-        lo = hi;
     }
+    std::vector<std::uint8_t> busy(count, 0);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, cells, 1024), [&](const auto& range) {
+        for (std::size_t c = range.begin(); c < range.end(); ++c) {
+            for (std::uint32_t i = start[c]; i < start[c + 1]; ++i) {
+                for (std::uint32_t j = i + 1; j < start[c + 1]; ++j) {
+                    const std::uint32_t a = listed[i];
+                    const std::uint32_t b = listed[j];
+                    std::atomic_ref<std::uint8_t> busy_a(busy[a]);
+                    std::atomic_ref<std::uint8_t> busy_b(busy[b]);
+                    if ((busy_a.load(std::memory_order_relaxed) == 0 ||
+                         busy_b.load(std::memory_order_relaxed) == 0) &&
+                        touch(m, segments[a], segments[b])) {
+                        busy_a.store(1, std::memory_order_relaxed);
+                        busy_b.store(1, std::memory_order_relaxed);
+                    }
+                }
+            }
+        }
+    });
+    for (std::size_t i = 0; i < count; ++i) free[i] = busy[i] == 0;
     return free;
 }
 
@@ -128,7 +155,7 @@ void insert_segments(MeshEditor& editor, const EdgeMesh& mesh,
         (free[i] ? pending : later).push_back(static_cast<std::uint32_t>(i));
     }
     // Priorities: blocks of nearby segments, in random order within each block. The block is the
-    // kernel number of the segment's smaller endpoint divided by 2^14: kernel numbers follow the
+    // kernel number of the segment's smaller endpoint divided by 2^16: kernel numbers follow the
     // divide and conquer's cuts, so a block is one region of the mesh, which stays in the caches
     // while its segments are inserted (a fully random order missed the cache at every step).
     // Within a block a fixed hash of the input index orders the segments, so the consecutive
@@ -140,13 +167,16 @@ void insert_segments(MeshEditor& editor, const EdgeMesh& mesh,
         h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ull;
         h = (h ^ (h >> 27)) * 0x94d049bb133111ebull;
         h ^= h >> 31;
-        const std::uint64_t block = std::min(segments[i].a, segments[i].b) >> 14;
+        const std::uint64_t block = std::min(segments[i].a, segments[i].b) >> 16;
         return (block << 32) | (h & 0xffffffffull);
     };
-    std::sort(pending.begin(), pending.end(), [&](std::uint32_t a, std::uint32_t b) {
-        const std::uint64_t pa = priority(a), pb = priority(b);
-        return pa < pb || (pa == pb && a < b);
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(pending.size());
+    tbb::parallel_for(std::size_t{0}, pending.size(), [&](std::size_t k) {
+        keyed[k] = {priority(pending[k]), pending[k]};
     });
+    tbb::parallel_sort(keyed.begin(), keyed.end());
+    for (std::size_t k = 0; k < keyed.size(); ++k) pending[k] = keyed[k].second;
+    keyed = {};
     const std::size_t total = segments.size();
     std::size_t done = 0;
     // With one thread, plain insertion in priority order gives the very result of the rounds
