@@ -2,6 +2,7 @@
 # compare_cgal.sh: time dtm's triangulation against CGAL's on the same inputs, in the same run.
 #
 #   BUILD=build-bench bench/compare_cgal.sh [--n N] [--out DIR] [--kinds "uniform ..."] [--repeat R]
+#                                           [--threads "1 2"]
 #
 # Builds nothing: expects $BUILD (default: build-bench, else ./build) to hold tools/dtm/dtm,
 # bench/make_inputs and bench/cgal_reference (cmake --build $BUILD --target dtm make_inputs
@@ -15,19 +16,24 @@
 # Default kinds: uniform gaussian clustered breaklines; "grid" (1 m integer lattice, exactly
 # cocircular cells) can be added with --kinds. --repeat R runs both engines R times,
 # alternating, and reports the fastest run of each (useful on a shared, noisy machine).
+# --threads "1 2" (default "1") runs dtm with each thread count in the same run (CGAL has no
+# parallel 2-D triangulation: it always runs on one thread) and prints cgal/dtm for each count
+# and the speed-up of the largest count over one thread.
 set -euo pipefail
 
 n=1000000
 out=""
 kinds="uniform gaussian clustered breaklines"
 repeat=1
+thread_counts="1"
 while [[ $# -gt 0 ]]; do
     case "$1" in
         --n) n="$2"; shift 2 ;;
         --out) out="$2"; shift 2 ;;
         --kinds) kinds="$2"; shift 2 ;;
         --repeat) repeat="$2"; shift 2 ;;
-        -h|--help) sed -n '2,18p' "$0"; exit 0 ;;
+        --threads) thread_counts="$2"; shift 2 ;;
+        -h|--help) sed -n '2,22p' "$0"; exit 0 ;;
         *) echo "compare_cgal.sh: unknown option '$1'" >&2; exit 2 ;;
     esac
 done
@@ -64,38 +70,61 @@ for kind in $kinds; do
         cgal_files=("$dir/points.xyz")
     fi
     for ((rep = 1; rep <= repeat; ++rep)); do
-        echo "== $kind: dtm tin (run $rep/$repeat)" >&2
-        dtm_json="$("$dtm" tin "$dir/points.xyz" "${extra[@]}" -o "$dir/out.ply" --threads 1 \
-                    --stats | grep '^{' | tail -n 1)"
+        for threads in $thread_counts; do
+            echo "== $kind: dtm tin --threads $threads (run $rep/$repeat)" >&2
+            dtm_json="$("$dtm" tin "$dir/points.xyz" "${extra[@]}" -o "$dir/out.ply" \
+                        --threads "$threads" --stats --quiet | grep '^{' | tail -n 1)"
+            printf '{"kind":"%s","threads":%s,"dtm":%s}\n' "$kind" "$threads" "$dtm_json" \
+                >> "$results"
+        done
         echo "== $kind: cgal_reference (run $rep/$repeat)" >&2
         cgal_json="$("$cgal" --kind "$kind" "${cgal_files[@]}" | grep '^{' | tail -n 1)"
-        printf '{"kind":"%s","dtm":%s,"cgal":%s}\n' "$kind" "$dtm_json" "$cgal_json" >> "$results"
+        printf '{"kind":"%s","cgal":%s}\n' "$kind" "$cgal_json" >> "$results"
     done
 done
 
 python3 - "$results" "$n" "$repeat" <<'PY'
 import json, sys
-best = {}  # kind -> [dtm json, dtm seconds, cgal json, cgal seconds], fastest run of each
+dtm = {}   # (kind, threads) -> [json, seconds], fastest run
+cgal = {}  # kind -> [json, seconds], fastest run
+kinds = []
 for line in open(sys.argv[1]):
     if not line.strip():
         continue
     r = json.loads(line)
-    sec = r["dtm"]["seconds"]
-    t_dtm = sec["triangulate"] + sec["constrain"]
-    t_cgal = r["cgal"]["seconds"]
-    b = best.setdefault(r["kind"], [r["dtm"], t_dtm, r["cgal"], t_cgal])
-    if t_dtm < b[1]:
-        b[0], b[1] = r["dtm"], t_dtm
-    if t_cgal < b[3]:
-        b[2], b[3] = r["cgal"], t_cgal
-print(f"n = {sys.argv[2]} points, one thread, best of {sys.argv[3]}; times exclude reading and writing")
-head = (f"{'kind':<12} {'dtm vertices':>12} {'cgal vertices':>13} {'dtm triangles':>13} "
-        f"{'cgal faces':>10} {'dtm s':>9} {'cgal s':>9} {'cgal/dtm':>9}")
+    if r["kind"] not in kinds:
+        kinds.append(r["kind"])
+    if "dtm" in r:
+        sec = r["dtm"]["seconds"]
+        t = sec["triangulate"] + sec["constrain"]
+        key = (r["kind"], r["threads"])
+        if key not in dtm or t < dtm[key][1]:
+            dtm[key] = [r["dtm"], t]
+    else:
+        t = r["cgal"]["seconds"]
+        if r["kind"] not in cgal or t < cgal[r["kind"]][1]:
+            cgal[r["kind"]] = [r["cgal"], t]
+threads = sorted({t for (_, t) in dtm})
+print(f"n = {sys.argv[2]} points, best of {sys.argv[3]}; times exclude reading and writing; "
+      f"CGAL on one thread")
+cols = "".join(f" {'dtm ' + str(t) + 't s':>10}" for t in threads)
+cols += f" {'cgal s':>9}" + "".join(f" {'cgal/' + str(t) + 't':>9}" for t in threads)
+if len(threads) > 1:
+    cols += f" {str(threads[-1]) + 't vs 1t':>9}"
+head = f"{'kind':<12} {'vertices':>9} {'triangles':>10} {'same':>5}" + cols
 print(head)
 print("-" * len(head))
-for kind, (d, t_dtm, c, t_cgal) in best.items():
-    ratio = t_cgal / t_dtm if t_dtm > 0 else float("inf")
-    print(f"{kind:<12} {d['vertices']:>12} {c['vertices']:>13} {d['triangles']:>13} "
-          f"{c['faces']:>10} {t_dtm:>9.3f} {t_cgal:>9.3f} {ratio:>9.2f}")
+for kind in kinds:
+    c, t_cgal = cgal[kind]
+    d0 = dtm[(kind, threads[0])][0]
+    same = all(dtm[(kind, t)][0]["triangles"] == c["faces"] and
+               dtm[(kind, t)][0]["vertices"] == c["vertices"] for t in threads)
+    line = f"{kind:<12} {d0['vertices']:>9} {d0['triangles']:>10} {'yes' if same else 'NO':>5}"
+    line += "".join(f" {dtm[(kind, t)][1]:>10.3f}" for t in threads)
+    line += f" {t_cgal:>9.3f}"
+    line += "".join(f" {t_cgal / dtm[(kind, t)][1]:>9.2f}" for t in threads)
+    if len(threads) > 1:
+        line += f" {dtm[(kind, threads[0])][1] / dtm[(kind, threads[-1])][1]:>9.2f}"
+    print(line)
 PY
 echo "raw results: $results" >&2

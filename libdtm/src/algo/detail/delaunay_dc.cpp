@@ -81,28 +81,28 @@ public:
     }
 
     /// Orders points [lo, hi) as the recursion will cut them: the median split by the cut's order,
-    /// recursively, and each leaf sorted in its parent's frame. Done as a pass of its own, before
-    /// any merge, so the partitioning streams through the points without the mesh in the caches.
-    void split(std::size_t lo, std::size_t hi, int cut, int frame, std::size_t parent_n)
+    /// recursively, down to pieces of at most strip_size points, which are sorted by x. Done as a
+    /// pass of its own, before any merge, so the partitioning streams through the points without
+    /// the mesh in the caches.
+    void split(std::size_t lo, std::size_t hi, int cut, std::size_t parent_n)
     {
         const std::size_t n = hi - lo;
         if (n <= strip_size) {
             std::sort(pts_ + lo, pts_ + hi, Before<0>{});
-            (void)frame;
-            return;
-        }
-        const std::size_t mid = lo + n / 2;
-        if (cut == 0) {
-            select_kth(pts_ + lo, n, n / 2, Before<0>{}, scratch_.local());
         } else {
-            select_kth(pts_ + lo, n, n / 2, Before<1>{}, scratch_.local());
-        }
-        if (options_.parallel_cutoff > 0 && n > options_.parallel_cutoff) {
-            tbb::parallel_invoke([&] { split(lo, mid, 1 - cut, cut, n); },
-                                 [&] { split(mid, hi, 1 - cut, cut, n); });
-        } else {
-            split(lo, mid, 1 - cut, cut, n);
-            split(mid, hi, 1 - cut, cut, n);
+            const std::size_t mid = lo + n / 2;
+            if (cut == 0) {
+                select_kth(pts_ + lo, n, n / 2, Before<0>{}, scratch_.local());
+            } else {
+                select_kth(pts_ + lo, n, n / 2, Before<1>{}, scratch_.local());
+            }
+            if (options_.parallel_cutoff > 0 && n > options_.parallel_cutoff) {
+                tbb::parallel_invoke([&] { split(lo, mid, 1 - cut, n); },
+                                     [&] { split(mid, hi, 1 - cut, n); });
+            } else {
+                split(lo, mid, 1 - cut, n);
+                split(mid, hi, 1 - cut, n);
+            }
         }
         if (n <= progress_unit_ && parent_n > progress_unit_) report(n);
     }
@@ -114,8 +114,8 @@ public:
     {
         const std::size_t n = hi - lo;
         slots = EdgeSlots{static_cast<EdgeId>(3 * lo), static_cast<EdgeId>(3 * hi)};
-        if (n <= 3) return base_case(lo, n, frame, slots);
-        const Hull hull = build_inner(lo, hi, cut, frame, slots);
+        const Hull hull = n <= 3 ? base_case(lo, n, frame, slots)
+                                 : build_inner(lo, hi, cut, frame, slots);
         if (n <= progress_unit_ && parent_n > progress_unit_) report(n);
         return hull;
     }
@@ -318,7 +318,7 @@ void delaunay_divide_and_conquer(BigArray<KernelPoint>& points, EdgeMesh& mesh, 
     slots = EdgeSlots{0, static_cast<EdgeId>(3 * n)};
     if (n >= 2) {
         Builder builder(points, mesh, options, progress);
-        builder.split(0, n, 0, 0, n + 1);
+        builder.split(0, n, 0, n + 1);
         builder.build(0, n, 0, 0, slots, n + 1);
     }
     slots.end = static_cast<EdgeId>(mesh.slot_count());
