@@ -295,8 +295,15 @@ MergedInput merge_input(TerrainInput&& input, const TriangulateOptions& options)
     std::size_t kept_count = 0;
     for (std::size_t i = 0; i < rep.size(); ++i) kept_count += rep[i] == i ? 1 : 0;
     if (kept_count == c.points.size()) {
-        // Nothing to merge (the usual case): the points become the vertices as they are.
-        out.vertices = std::move(c.points);
+        // Nothing to merge (the usual case): the points become the vertices as they are, unless
+        // the reader's growth left much unused capacity in the largest array of the run.
+        if (c.points.capacity() > c.points.size() + c.points.size() / 16) {
+            out.vertices.reserve(c.points.size());
+            out.vertices.assign(c.points.begin(), c.points.end());
+            c.points = {};
+        } else {
+            out.vertices = std::move(c.points);
+        }
         out.z_known = std::move(c.z_known);
         out.input_to_vertex.resize(out.vertices.size());
         std::iota(out.input_to_vertex.begin(), out.input_to_vertex.end(), VertexIndex{0});
