@@ -13,6 +13,8 @@
 //      them).
 #include "dtm/io/inputs.hpp"
 
+#include <tbb/parallel_sort.h>
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -72,7 +74,7 @@ void summarize(InputSummary& s, const TerrainInput& t)
     std::vector<Point2> xy;
     xy.reserve(t.points.size());
     for (const Point3& p : t.points) xy.push_back(p.xy());
-    std::sort(xy.begin(), xy.end(), [](const Point2& a, const Point2& b) {
+    tbb::parallel_sort(xy.begin(), xy.end(), [](const Point2& a, const Point2& b) {
         return a.x < b.x || (a.x == b.x && a.y < b.y);
     });
     s.duplicates = 0;
