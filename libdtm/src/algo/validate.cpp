@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <unordered_map>
@@ -53,6 +54,85 @@ bool on_or_next_to(const Point3& a, const Point3& b, const Point3& q)
     return distance <= tolerance && lo_x - tolerance <= q.x && q.x <= hi_x + tolerance &&
            lo_y - tolerance <= q.y && q.y <= hi_y + tolerance;
 }
+
+/// Uniform grid of the TIN's triangles (by bounding box, about one triangle per cell), built on
+/// first use: where a point lies (inside a triangle or on its border, or outside the TIN) and
+/// which vertices lie near a segment. Used only for segments the chain search did not find.
+class TriangleGrid {
+public:
+    explicit TriangleGrid(const Tin& tin) : tin_(tin)
+    {
+        for (const Point3& v : tin.vertices) box_.add(v);
+        const double w = std::max(box_.xmax - box_.xmin, 1e-300);
+        const double h = std::max(box_.ymax - box_.ymin, 1e-300);
+        const double cells = std::max<double>(1.0, static_cast<double>(tin.triangles.size()));
+        cell_ = std::max(std::sqrt(w * h / cells), std::max(w, h) * 1e-9);
+        cols_ = static_cast<std::size_t>(w / cell_) + 1;
+        rows_ = static_cast<std::size_t>(h / cell_) + 1;
+        buckets_.resize(cols_ * rows_);
+        for (TriangleIndex t = 0; t < tin.triangles.size(); ++t) {
+            Box2 b;
+            for (const VertexIndex v : tin.triangles[t].v) b.add(tin.vertices[v]);
+            for (std::size_t r = row(b.ymin); r <= row(b.ymax); ++r) {
+                for (std::size_t c = col(b.xmin); c <= col(b.xmax); ++c) {
+                    buckets_[r * cols_ + c].push_back(t);
+                }
+            }
+        }
+    }
+
+    /// p lies in a triangle of the TIN or on its border.
+    [[nodiscard]] bool covers(const Point2& p) const
+    {
+        if (p.x < box_.xmin || p.x > box_.xmax || p.y < box_.ymin || p.y > box_.ymax) return false;
+        for (const TriangleIndex t : buckets_[row(p.y) * cols_ + col(p.x)]) {
+            const auto& v = tin_.triangles[t].v;
+            const Point3 &a = tin_.vertices[v[0]], &b = tin_.vertices[v[1]], &c = tin_.vertices[v[2]];
+            if (geom::orient2d(a, b, p) >= 0 && geom::orient2d(b, c, p) >= 0 &&
+                geom::orient2d(c, a, p) >= 0) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /// The vertices of triangles in the cells around segment a-b for which keep(v) holds.
+    template <class Keep>
+    [[nodiscard]] std::vector<VertexIndex> vertices_near(const Point3& a, const Point3& b,
+                                                         Keep keep) const
+    {
+        std::set<VertexIndex> found;
+        for (std::size_t r = row(std::min(a.y, b.y)); r <= row(std::max(a.y, b.y)); ++r) {
+            for (std::size_t c = col(std::min(a.x, b.x)); c <= col(std::max(a.x, b.x)); ++c) {
+                for (const TriangleIndex t : buckets_[r * cols_ + c]) {
+                    for (const VertexIndex v : tin_.triangles[t].v) {
+                        if (keep(v)) found.insert(v);
+                    }
+                }
+            }
+        }
+        return {found.begin(), found.end()};
+    }
+
+private:
+    [[nodiscard]] std::size_t col(double x) const
+    {
+        const double i = std::floor((x - box_.xmin) / cell_);
+        return static_cast<std::size_t>(std::clamp(i, 0.0, static_cast<double>(cols_ - 1)));
+    }
+    [[nodiscard]] std::size_t row(double y) const
+    {
+        const double i = std::floor((y - box_.ymin) / cell_);
+        return static_cast<std::size_t>(std::clamp(i, 0.0, static_cast<double>(rows_ - 1)));
+    }
+
+    const Tin& tin_;
+    Box2 box_;
+    double cell_ = 1.0;
+    std::size_t cols_ = 1;
+    std::size_t rows_ = 1;
+    std::vector<std::vector<TriangleIndex>> buckets_;
+};
 
 }  // namespace
 
@@ -151,6 +231,55 @@ CheckReport verify_constraints(const Tin& tin, const TerrainInput& input,
         adjacent[c.a].push_back(c.b);
         adjacent[c.b].push_back(c.a);
     }
+    // A segment that leaves the surface (through the boundary, into a hole, or with an end
+    // beyond it) is clipped there. It is present when its end can be reached from its start
+    // along constrained edges through vertices on it (or added at crossings), where a step from
+    // one station (an end or a TIN vertex on the segment) to the next one along it may also skip
+    // the piece between them when that piece lies off the surface.
+    std::optional<TriangleGrid> grid;
+    const auto present_where_inside = [&](VertexIndex va, VertexIndex vb) {
+        if (!grid) grid.emplace(tin);
+        const Point3& pa = tin.vertices[va];
+        const Point3& pb = tin.vertices[vb];
+        const auto allowed = [&](VertexIndex v) {
+            const Point3& q = tin.vertices[v];
+            return on_or_next_to(pa, pb, q) || !given.count({q.x, q.y});
+        };
+        std::vector<VertexIndex> stations = grid->vertices_near(pa, pb, [&](VertexIndex v) {
+            return v != va && v != vb && used[v] && on_or_next_to(pa, pb, tin.vertices[v]);
+        });
+        const double dx = pb.x - pa.x, dy = pb.y - pa.y;
+        const auto along = [&](VertexIndex v) {
+            return (tin.vertices[v].x - pa.x) * dx + (tin.vertices[v].y - pa.y) * dy;
+        };
+        std::sort(stations.begin(), stations.end(),
+                  [&](VertexIndex x, VertexIndex y) { return along(x) < along(y); });
+        stations.insert(stations.begin(), va);
+        stations.push_back(vb);
+        std::unordered_map<VertexIndex, std::size_t> station_of;
+        for (std::size_t i = 0; i < stations.size(); ++i) station_of.emplace(stations[i], i);
+        std::set<VertexIndex> seen{va};
+        std::vector<VertexIndex> frontier{va};
+        const auto reach = [&](VertexIndex w) {
+            if (seen.insert(w).second) frontier.push_back(w);
+        };
+        while (!frontier.empty()) {
+            const VertexIndex v = frontier.back();
+            frontier.pop_back();
+            if (v == vb) return true;
+            for (const VertexIndex w : adjacent[v]) {
+                if (w == vb || allowed(w)) reach(w);
+            }
+            const auto it = station_of.find(v);
+            if (it == station_of.end() || it->second + 1 == stations.size()) continue;
+            const Point3& p = tin.vertices[v];
+            const Point3& q = tin.vertices[stations[it->second + 1]];
+            if (!grid->covers({0.5 * (p.x + q.x), 0.5 * (p.y + q.y)})) {
+                reach(stations[it->second + 1]);
+            }
+        }
+        return false;
+    };
     // Combined input numbering of triangulate(): points, breaklines, boundaries, holes, soft.
     std::size_t next_input = input.points.size();
     const auto vertex_of = [&](const Point3& p, std::size_t combined) -> VertexIndex {
@@ -177,7 +306,13 @@ CheckReport verify_constraints(const Tin& tin, const TerrainInput& input,
                     continue;
                 }
                 if (va == vb) continue;
-                if (!used[va] || !used[vb]) continue;  // outside the boundary or in a hole
+                if (!used[va] || !used[vb]) {  // an end beyond the boundary or in a hole
+                    if (!present_where_inside(va, vb)) {
+                        add(report, name + ": not present as constrained edges where it crosses "
+                                           "the surface");
+                    }
+                    continue;
+                }
                 const Point3& pa = tin.vertices[va];
                 const Point3& pb = tin.vertices[vb];
 
@@ -199,7 +334,9 @@ CheckReport verify_constraints(const Tin& tin, const TerrainInput& input,
                         if ((on_segment || added) && seen.insert(w).second) frontier.push_back(w);
                     }
                 }
-                if (!found) add(report, name + ": not present as constrained edges");
+                if (!found && !present_where_inside(va, vb)) {
+                    add(report, name + ": not present as constrained edges");
+                }
             }
         }
     };

@@ -30,8 +30,8 @@ struct CheckReport {
 /// Every segment of every polyline of @p input (breaklines, soft breaklines, boundaries, holes) is
 /// present as a chain of constrained TIN edges along it: through vertices exactly on it (or
 /// within rounding of it, 1 um + 1e-9 of its length, where crossings split it) and vertices
-/// added at crossings. Segments with an end outside the TIN (beyond the boundary, in a hole) are
-/// not checked. Polyline vertices are found by position,
+/// added at crossings. A segment that leaves the surface (an end beyond the boundary or in a
+/// hole, or on its way out through the boundary and back) is required only where it lies on it. Polyline vertices are found by position,
 /// or through @p input_to_vertex (TriangulateResult::input_to_vertex) when given, which is needed
 /// when points were snapped.
 [[nodiscard]] CheckReport verify_constraints(const Tin& tin, const TerrainInput& input,
