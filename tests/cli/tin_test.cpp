@@ -37,16 +37,28 @@ std::filesystem::path write_points(const ScratchDir& dir, std::size_t count, std
     return path;
 }
 
+const std::string river = "points-breaklines-pputils-hurdville/";
+
+/// `dtm tin` on the river survey's points, boundary and hole seeds, with the lines given by
+/// @p lines_option and @p extra options, writing @p out.
+RunResult run_river_survey(const char* lines_option, const char* lines_file,
+                           std::vector<std::string> extra, const std::filesystem::path& out)
+{
+    std::vector<std::string> args{"tin", test::shared_data_path(river + "nodes.csv").string(),
+                                  lines_option, test::shared_data_path(river + lines_file).string(),
+                                  "--boundary", test::shared_data_path(river + "boundary.csv").string(),
+                                  "--holes", test::shared_data_path(river + "holes.csv").string(),
+                                  "--check", "--stats", "-o", out.string()};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return run_dtm(args);
+}
+
 TEST(TinCli, RiverSurveyWithBoundaryAndHoleSeedsMatchesTrianglesCounts)
 {
-    const std::string d = "points-breaklines-pputils-hurdville/";
-    if (!test::shared_data_available(d + "nodes.csv")) GTEST_SKIP() << "shared data absent";
+    if (!test::shared_data_available(river + "nodes.csv")) GTEST_SKIP() << "shared data absent";
     ScratchDir dir;
-    const RunResult r = run_dtm({"tin", test::shared_data_path(d + "nodes.csv").string(),
-                                 "--soft-breaklines", test::shared_data_path(d + "lines.csv").string(),
-                                 "--boundary", test::shared_data_path(d + "boundary.csv").string(),
-                                 "--holes", test::shared_data_path(d + "holes.csv").string(),
-                                 "--snap", "0.001", "--check", "--stats", "-o", (dir / "h.ply").string()});
+    const RunResult r =
+        run_river_survey("--soft-breaklines", "lines.csv", {"--snap", "0.001"}, dir / "h.ply");
     ASSERT_EQ(r.exit_code, 0) << r.err;
     // 5,552 points (124 duplicate positions) + 3,805 line + 1,417 boundary vertices snapped onto
     // them: 5,428 distinct positions. Triangle's reference CDT of the same survey has 5,422
@@ -64,14 +76,9 @@ TEST(TinCli, RiverSurveyWith3dBreaklinesPassesTheCheckWithoutSnapping)
     // lines3d.csv ends with the boundary ring again, rounded to millimetres, so it runs in and out
     // of the boundary by fractions of a millimetre: the pieces outside are clipped with the
     // outside triangles, and --check requires the breaklines only where they lie on the surface.
-    const std::string d = "points-breaklines-pputils-hurdville/";
-    if (!test::shared_data_available(d + "lines3d.csv")) GTEST_SKIP() << "shared data absent";
+    if (!test::shared_data_available(river + "lines3d.csv")) GTEST_SKIP() << "shared data absent";
     ScratchDir dir;
-    const RunResult r = run_dtm({"tin", test::shared_data_path(d + "nodes.csv").string(),
-                                 "--breaklines", test::shared_data_path(d + "lines3d.csv").string(),
-                                 "--boundary", test::shared_data_path(d + "boundary.csv").string(),
-                                 "--holes", test::shared_data_path(d + "holes.csv").string(),
-                                 "--check", "--stats", "-q", "-o", (dir / "h.ply").string()});
+    const RunResult r = run_river_survey("--breaklines", "lines3d.csv", {"-q"}, dir / "h.ply");
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_FALSE(contains(r.out, "\"intersections\": 0,")) << r.out;  // the ring crossings
 }
