@@ -13,13 +13,12 @@
 //      them).
 #include "dtm/io/inputs.hpp"
 
-#include <tbb/parallel_sort.h>
-
 #include <algorithm>
 #include <cmath>
 #include <string>
 #include <unordered_map>
 
+#include "dtm/algo/duplicates.hpp"
 #include "dtm/algo/triangulate.hpp"
 #include "dtm/core/error.hpp"
 #include "dtm/geom/predicates.hpp"
@@ -71,14 +70,7 @@ void summarize(InputSummary& s, const TerrainInput& t)
     if (!box.empty()) s.bbox = {box.xmin, box.ymin, box.xmax, box.ymax};
     const double nan = std::numeric_limits<double>::quiet_NaN();
     s.z_range = zmin <= zmax ? std::array<double, 2>{zmin, zmax} : std::array<double, 2>{nan, nan};
-    std::vector<Point2> xy;
-    xy.reserve(t.points.size());
-    for (const Point3& p : t.points) xy.push_back(p.xy());
-    tbb::parallel_sort(xy.begin(), xy.end(), [](const Point2& a, const Point2& b) {
-        return a.x < b.x || (a.x == b.x && a.y < b.y);
-    });
-    s.duplicates = 0;
-    for (std::size_t i = 1; i < xy.size(); ++i) s.duplicates += xy[i] == xy[i - 1] ? 1u : 0u;
+    s.duplicates = count_repeated_positions(t.points);
 }
 
 Loaded read_one(const InputFile& file, const LoadOptions& options, const Progress& progress,

@@ -14,7 +14,6 @@
 
 #include <algorithm>
 #include <atomic>
-#include <bit>
 #include <limits>
 #include <cmath>
 #include <numeric>
@@ -23,6 +22,7 @@
 
 #include "algo/detail/big_array.hpp"
 #include "algo/detail/edge_mesh.hpp"
+#include "algo/detail/position_hash.hpp"
 #include "dtm/core/error.hpp"
 
 namespace dtm::detail {
@@ -78,17 +78,9 @@ void add_polylines(const std::vector<Polyline>& lines, std::uint8_t bits, bool r
 /// rep[i]: the combined index of the point i is merged into (rep[i] == i when kept).
 using Representatives = std::vector<VertexIndex>;
 
-/// Hash-table slot of a position (-0.0 counts as 0.0).
 std::size_t slot_of(const Point3& p, std::size_t capacity)
 {
-    const auto bits = [](double v) { return std::bit_cast<std::uint64_t>(v == 0.0 ? 0.0 : v); };
-    const std::uint64_t bx = bits(p.x);
-    const std::uint64_t by = bits(p.y);
-    std::uint64_t h = (bx * 0x9e3779b97f4a7c15ull) ^ (by + 0x7f4a7c159e3779b9ull + (bx << 6));
-    h ^= h >> 29;
-    h *= 0xbf58476d1ce4e5b9ull;
-    h ^= h >> 32;
-    return static_cast<std::size_t>(h) & (capacity - 1);
+    return position_slot(p.x, p.y, capacity);
 }
 
 /// Exact duplicates by an open-addressing hash table of 32-bit indices on the coordinate bits.
@@ -167,8 +159,7 @@ Representatives exact_representatives_parallel(const std::vector<Point3>& pts,
 
 Representatives exact_representatives(const std::vector<Point3>& pts)
 {
-    std::size_t capacity = 16;
-    while (capacity < 2 * pts.size()) capacity *= 2;
+    const std::size_t capacity = position_table_capacity(pts.size());
     std::vector<VertexIndex> table;
     reserve_huge(table, capacity);
     table.resize(capacity, no_vertex);
