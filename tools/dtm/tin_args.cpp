@@ -1,10 +1,26 @@
 // SPDX-License-Identifier: MIT
 #include "tin_args.hpp"
 
+#include <tbb/global_control.h>
+
 #include <map>
+#include <memory>
 #include <string>
 
 namespace dtm::cli {
+namespace {
+
+/// Bounds every parallel phase of this run (not only the triangulation's arena) to @p threads.
+void limit_threads(unsigned threads)
+{
+    static std::unique_ptr<tbb::global_control> control;
+    if (threads > 0) {
+        control = std::make_unique<tbb::global_control>(
+            tbb::global_control::max_allowed_parallelism, threads);
+    }
+}
+
+}  // namespace
 
 void add_tin_options(CLI::App& app, TriangulateOptions& options)
 {
@@ -27,7 +43,14 @@ void add_tin_options(CLI::App& app, TriangulateOptions& options)
                    "Height difference at a breakline crossing reported as a conflict (default "
                    "0.001)")
         ->check(CLI::NonNegativeNumber);
-    app.add_option("--threads", options.threads, "Worker threads (default 0: all cores)");
+    app.add_option_function<unsigned>(
+           "--threads",
+           [&options](unsigned threads) {
+               options.threads = threads;
+               limit_threads(threads);
+           },
+           "Worker threads for every phase: reading, triangulating, rasters, contours (default "
+           "0: all cores)");
     app.add_option_function<std::string>(
            "--tiles",
            [&options](const std::string& value) {

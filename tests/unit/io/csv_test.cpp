@@ -3,6 +3,9 @@
 #include "dtm/io/formats/csv.hpp"
 
 #include <gtest/gtest.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
 
 #include <cmath>
 #include <string>
@@ -189,6 +192,74 @@ TEST(CsvReader, UnknownColumnsWordIsRejected)
 TEST(CsvReader, EmptyFileIsAnError)
 {
     EXPECT_NE(error_of("\n# only a comment\n").find("empty file"), std::string::npos);
+}
+
+/// A point list of about 12 MB (more than the parallel reader's chunk threshold): "id;Y;X;Z;code"
+/// rows with comments, blank lines and CRLF ends, and bad rows at the given line numbers.
+std::string large_point_list(const std::vector<std::size_t>& bad_lines)
+{
+    std::string text = "id;x;y;z;code\r\n";
+    std::size_t line = 1;
+    for (std::size_t i = 0; text.size() < (std::size_t{12} << 20); ++i) {
+        ++line;
+        if (std::find(bad_lines.begin(), bad_lines.end(), line) != bad_lines.end()) {
+            text += "P" + std::to_string(i) + ";-750000.5;oops;301.25;X\r\n";
+        } else if (i % 997 == 0) {
+            text += "# comment\r\n";
+        } else if (i % 991 == 0) {
+            text += "\r\n";
+        } else {
+            text += "P" + std::to_string(i) + ";" + std::to_string(-750000.0 - 0.001 * static_cast<double>(i)) + ";" +
+                    std::to_string(-1050000.0 + 0.002 * static_cast<double>(i)) + ";" + std::to_string(300 + i % 7) +
+                    ";C" + std::to_string(i % 5) + "\r\n";
+        }
+    }
+    return text;
+}
+
+ReadResult parse_with_threads(std::string_view text, int threads, LoadOptions options)
+{
+    tbb::task_arena arena(threads);
+    return arena.execute([&] { return parse(text, InputRole::points, options); });
+}
+
+TEST(CsvReader, LargeFileParsedInParallelEqualsTheSequentialPass)
+{
+    LoadOptions skip;
+    skip.skip_bad_lines = true;
+    const std::string text = large_point_list({5, 90001, 180002, 250003});
+    const ReadResult one = parse_with_threads(text, 1, skip);
+    const ReadResult two = parse_with_threads(text, 2, skip);
+    ASSERT_GT(one.terrain.points.size(), 200000u);
+    ASSERT_EQ(one.terrain.points.size(), two.terrain.points.size());
+    for (std::size_t i = 0; i < one.terrain.points.size(); ++i) {
+        ASSERT_EQ(one.terrain.points[i].x, two.terrain.points[i].x) << "point " << i;
+        ASSERT_EQ(one.terrain.points[i].y, two.terrain.points[i].y) << "point " << i;
+        ASSERT_EQ(one.terrain.points[i].z, two.terrain.points[i].z) << "point " << i;
+    }
+    EXPECT_EQ(one.labels.ids, two.labels.ids);
+    EXPECT_EQ(one.labels.codes, two.labels.codes);
+    EXPECT_EQ(one.summary.skipped_lines, 4u);
+    EXPECT_EQ(two.summary.skipped_lines, 4u);
+    EXPECT_EQ(one.summary.warnings, two.summary.warnings);
+    ASSERT_EQ(two.summary.warnings.size(), 4u);
+    EXPECT_NE(two.summary.warnings[3].find("skipped line 250003:"), std::string::npos)
+        << two.summary.warnings[3];
+}
+
+TEST(CsvReader, LargeFileParsedInParallelReportsTheFirstBadLine)
+{
+    // Bad rows in a late chunk and an early one: the error names the earlier line.
+    const std::string text = large_point_list({240001, 120007});
+    for (const int threads : {1, 2}) {
+        try {
+            (void)parse_with_threads(text, threads, {});
+            ADD_FAILURE() << "no error with " << threads << " threads";
+        } catch (const dtm::InputError& e) {
+            EXPECT_NE(std::string(e.what()).find("mem.csv:120007:"), std::string::npos)
+                << threads << " threads: " << e.what();
+        }
+    }
 }
 
 TEST(CsvReader, PolylinesGroupedByShapeIdClosingRepeatedFirstVertex)

@@ -3,9 +3,19 @@
 // numbers, no per-line allocation (fields are views into the buffer). The layout comes from
 // csv_layout.cpp. Rows become points, or polyline vertices grouped by a line-id column
 // (pputils "shapeid,x,y[,z]"), or hole seeds.
+//
+// A large point file is parsed in parallel: the data is cut into chunks at line ends, each chunk
+// starts with its line number (newlines counted per chunk, then summed), is parsed on its own and
+// the chunks' points, labels, skipped lines and warnings are joined in file order. Without
+// --skip-bad-lines the error reported is the first in file order, as in the sequential pass.
 #include "dtm/io/formats/csv.hpp"
 
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
 #include <algorithm>
+#include <atomic>
+#include <exception>
 #include <cctype>
 #include <cmath>
 #include <fstream>
@@ -25,6 +35,7 @@ using csv::Field;
 
 constexpr double no_z = std::numeric_limits<double>::quiet_NaN();
 constexpr std::size_t max_listed_warnings = 20;
+constexpr std::size_t parallel_chunk_bytes = std::size_t{4} << 20;  ///< at least, per chunk
 
 class CsvReader {
 public:
@@ -52,6 +63,13 @@ public:
     ReadResult run();
 
 private:
+    /// Parses the rows of [begin, end) (line starts), the line before @p begin being @p line.
+    void parse_range(std::size_t begin, std::size_t end, std::size_t line, bool report);
+    /// Points only: the data in chunks, in parallel, joined in file order.
+    void parse_chunks();
+    /// Appends a later chunk's rows, labels, skipped lines and warnings.
+    void append(CsvReader&& later);
+
     void read_row(std::string_view line, std::size_t number);
     bool number_at(int column, double& value, std::size_t number);
     void bad(std::size_t line, std::size_t column, const std::string& what);
@@ -186,22 +204,13 @@ ReadResult CsvReader::run()
                          "expected a z column for points (z, elev, elevation, height, h, alt; "
                          "or --columns)");
     }
-    csv::LineCursor cursor(text_);
-    cursor.seek(layout_.data_offset, layout_.data_line);
-    std::string_view line;
-    std::size_t next_report = 1u << 16;
-    while (cursor.next(line)) {
-        if (csv::is_blank(line)) {
-            if (polyline_ && line_ < 0) flush_line();
-            continue;
-        }
-        if (csv::is_comment(line)) continue;
-        read_row(line, cursor.line_number());
-        if (cursor.line_number() >= next_report) {
-            next_report += 1u << 16;
-            progress_.report(static_cast<double>(cursor.offset()) /
-                             static_cast<double>(cursor.size()));
-        }
+    const bool parallel = !polyline_ && !seeds_ &&
+                          text_.size() - layout_.data_offset >= 2 * parallel_chunk_bytes &&
+                          tbb::this_task_arena::max_concurrency() > 1;
+    if (parallel) {
+        parse_chunks();
+    } else {
+        parse_range(layout_.data_offset, text_.size(), layout_.data_line, true);
     }
     flush_line();
     if (layout_.count_line > 0 && layout_.declared_count != rows_) {
@@ -215,6 +224,93 @@ ReadResult CsvReader::run()
         result_.summary.crs = "EPSG:4326";
     }
     return std::move(result_);
+}
+
+void CsvReader::parse_range(std::size_t begin, std::size_t end, std::size_t line_number,
+                            bool report)
+{
+    csv::LineCursor cursor(text_.substr(0, end));
+    cursor.seek(begin, line_number);
+    std::string_view line;
+    std::size_t next_report = 1u << 16;
+    while (cursor.next(line)) {
+        if (csv::is_blank(line)) {
+            if (polyline_ && line_ < 0) flush_line();
+            continue;
+        }
+        if (csv::is_comment(line)) continue;
+        read_row(line, cursor.line_number());
+        if (report && cursor.line_number() >= next_report) {
+            next_report += 1u << 16;
+            progress_.report(static_cast<double>(cursor.offset()) /
+                             static_cast<double>(text_.size()));
+        }
+    }
+}
+
+void CsvReader::parse_chunks()
+{
+    const std::size_t begin = layout_.data_offset;
+    const std::size_t size = text_.size() - begin;
+    const std::size_t wanted = std::min<std::size_t>(
+        size / parallel_chunk_bytes, 8 * static_cast<std::size_t>(tbb::this_task_arena::max_concurrency()));
+    std::vector<std::size_t> starts{begin};
+    for (std::size_t k = 1; k < wanted; ++k) {
+        const std::size_t nominal = begin + size / wanted * k;
+        const std::size_t nl = text_.find('\n', nominal);
+        if (nl == std::string_view::npos) break;
+        if (nl + 1 > starts.back() && nl + 1 < text_.size()) starts.push_back(nl + 1);
+    }
+    starts.push_back(text_.size());
+    const std::size_t chunks = starts.size() - 1;
+    // Line numbers: the newlines of every chunk, counted in parallel, then summed in order.
+    std::vector<std::size_t> first_line(chunks + 1, 0);
+    tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t k) {
+        const std::string_view part = text_.substr(starts[k], starts[k + 1] - starts[k]);
+        first_line[k + 1] = static_cast<std::size_t>(std::count(part.begin(), part.end(), '\n'));
+    });
+    first_line[0] = layout_.data_line;
+    for (std::size_t k = 0; k < chunks; ++k) first_line[k + 1] += first_line[k];
+    std::vector<CsvReader> parts(chunks, *this);
+    std::vector<std::exception_ptr> errors(chunks);
+    std::atomic<std::size_t> done{0};
+    tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t k) {
+        try {
+            parts[k].parse_range(starts[k], starts[k + 1], first_line[k], false);
+        } catch (const InputError&) {
+            errors[k] = std::current_exception();
+        }
+        const std::size_t bytes = done.fetch_add(starts[k + 1] - starts[k]) + starts[k + 1] - starts[k];
+        progress_.report(static_cast<double>(bytes) / static_cast<double>(size));
+    });
+    for (const std::exception_ptr& e : errors) {
+        if (e) std::rethrow_exception(e);  // the first error in file order
+    }
+    std::size_t total = result_.terrain.points.size();
+    for (const CsvReader& part : parts) total += part.result_.terrain.points.size();
+    result_.terrain.points.reserve(total);
+    for (CsvReader& part : parts) append(std::move(part));
+}
+
+void CsvReader::append(CsvReader&& later)
+{
+    TerrainInput& to = result_.terrain;
+    TerrainInput& from = later.result_.terrain;
+    to.points.insert(to.points.end(), from.points.begin(), from.points.end());
+    from.points = {};
+    auto& ids = result_.labels.ids;
+    auto& codes = result_.labels.codes;
+    ids.insert(ids.end(), std::make_move_iterator(later.result_.labels.ids.begin()),
+               std::make_move_iterator(later.result_.labels.ids.end()));
+    codes.insert(codes.end(), std::make_move_iterator(later.result_.labels.codes.begin()),
+                 std::make_move_iterator(later.result_.labels.codes.end()));
+    result_.summary.skipped_lines += later.result_.summary.skipped_lines;
+    for (std::string& w : later.result_.summary.warnings) {
+        if (result_.summary.warnings.size() < max_listed_warnings) {
+            result_.summary.warnings.push_back(std::move(w));
+        }
+    }
+    rows_ += later.rows_;
 }
 
 }  // namespace
