@@ -203,8 +203,8 @@ TriangulateResult run(TerrainInput&& input, const TriangulateOptions& options,
         }
     }
     k.z = {};  // heights live in `vertices` now
-    detail::TinDraft draft = detail::mesh_to_tin(k.mesh, k.vertex_of_kernel, std::move(vertices));
-    draft.any_constraint = !merged.segments.empty();
+    detail::TinDraft draft = detail::mesh_to_tin(k.mesh, k.vertex_of_kernel, std::move(vertices),
+                                                 !merged.segments.empty());
     k.mesh = detail::EdgeMesh{};
     result.stats.removed_triangles =
         detail::apply_domain(draft, has_boundary, hole_seeds, options.max_edge);

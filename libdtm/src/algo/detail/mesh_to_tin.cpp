@@ -100,7 +100,7 @@ constexpr std::size_t block = 1 << 15;  ///< slots per block of the slot passes
 }  // namespace
 
 TinDraft mesh_to_tin(EdgeMesh& m, const std::vector<VertexIndex>& kernel_to_vertex,
-                     std::vector<Point3> vertices)
+                     std::vector<Point3> vertices, bool constrained)
 {
     TinDraft draft;
     draft.tin.vertices = std::move(vertices);
@@ -143,16 +143,22 @@ TinDraft mesh_to_tin(EdgeMesh& m, const std::vector<VertexIndex>& kernel_to_vert
     std::vector<Triangle>& tris = draft.tin.triangles;
     reserve_huge(tris, count);
     tris.resize(count);
-    reserve_huge(draft.edge_bits, count);
-    draft.edge_bits.resize(count);
+    if (constrained) {
+        reserve_huge(draft.edge_bits, count);
+        draft.edge_bits.resize(count);
+    } else {
+        release(m.constrained);
+    }
     auto& face = m.org;
     for_each_triangle([&](std::size_t t, EdgeId e) {
         const EdgeId e1 = m.lnext(e);
         const EdgeId e2 = m.lnext(e1);
         tris[t].v = {kernel_to_vertex[m.org[e]], kernel_to_vertex[m.org[e1]],
                      kernel_to_vertex[m.org[e2]]};
-        draft.edge_bits[t] = {m.constrained[e1 >> 1], m.constrained[e2 >> 1],
-                              m.constrained[e >> 1]};
+        if (constrained) {
+            draft.edge_bits[t] = {m.constrained[e1 >> 1], m.constrained[e2 >> 1],
+                                  m.constrained[e >> 1]};
+        }
         face[e] = face[e1] = face[e2] = static_cast<TriangleIndex>(t);
     });
     release(m.constrained);

@@ -38,10 +38,10 @@ void compact(TinDraft& draft, const std::vector<bool>& keep)
         Triangle tri = tris[t];
         for (TriangleIndex& n : tri.n) n = n == no_triangle ? no_triangle : new_index[n];
         tris[new_index[t]] = tri;
-        draft.edge_bits[new_index[t]] = draft.edge_bits[t];
+        if (draft.any_constraint()) draft.edge_bits[new_index[t]] = draft.edge_bits[t];
     }
     tris.resize(next);
-    draft.edge_bits.resize(next);
+    if (draft.any_constraint()) draft.edge_bits.resize(next);
 }
 
 std::size_t apply_domain(TinDraft& draft, bool has_boundary, const std::vector<Point2>& hole_seeds,
@@ -52,10 +52,8 @@ std::size_t apply_domain(TinDraft& draft, bool has_boundary, const std::vector<P
     std::vector<bool> keep(count, true);
     // Rings: 0-1 BFS over crossings of boundary/hole edges.
     bool any_ring = has_boundary;
-    if (draft.any_constraint) {
-        for (const auto& bits : draft.edge_bits) {
-            for (const std::uint8_t b : bits) any_ring = any_ring || (b & domain_bits) != 0;
-        }
+    for (const auto& bits : draft.edge_bits) {
+        for (const std::uint8_t b : bits) any_ring = any_ring || (b & domain_bits) != 0;
     }
     if (any_ring) {
         constexpr std::uint32_t unset = 0xffffffffu;
@@ -65,7 +63,7 @@ std::size_t apply_domain(TinDraft& draft, bool has_boundary, const std::vector<P
         for (TriangleIndex t = 0; t < count; ++t) {
             for (int i = 0; i < 3; ++i) {
                 if (tin.triangles[t].n[i] != no_triangle) continue;
-                const bool ring = (draft.edge_bits[t][i] & domain_bits) != 0;
+                const bool ring = (draft.bits(t, i) & domain_bits) != 0;
                 if (ring) {
                     queue.emplace_back(t, outside + 1);
                 } else {
@@ -81,7 +79,7 @@ std::size_t apply_domain(TinDraft& draft, bool has_boundary, const std::vector<P
             for (int i = 0; i < 3; ++i) {
                 const TriangleIndex n = tin.triangles[t].n[i];
                 if (n == no_triangle || depth[n] != unset) continue;
-                if ((draft.edge_bits[t][i] & domain_bits) != 0) {
+                if ((draft.bits(t, i) & domain_bits) != 0) {
                     queue.emplace_back(n, d + 1);
                 } else {
                     queue.emplace_front(n, d);
@@ -111,7 +109,7 @@ std::size_t apply_domain(TinDraft& draft, bool has_boundary, const std::vector<P
             keep[t] = false;
             for (int i = 0; i < 3; ++i) {
                 const TriangleIndex n = tin.triangles[t].n[i];
-                if (n != no_triangle && keep[n] && draft.edge_bits[t][i] == 0) stack.push_back(n);
+                if (n != no_triangle && keep[n] && draft.bits(t, i) == 0) stack.push_back(n);
             }
         }
     }

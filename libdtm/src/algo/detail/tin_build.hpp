@@ -16,15 +16,22 @@ namespace dtm::detail {
 /// A Tin under construction: per triangle, the ConstraintBits of the edge opposite v[i].
 struct TinDraft {
     Tin tin;
-    bool any_constraint = true;  ///< false: every edge_bits entry is 0 (nothing to scan)
+    /// Per triangle; empty when no edge of the TIN is constrained (nothing to store or scan).
     std::vector<std::array<std::uint8_t, 3>> edge_bits;
+
+    [[nodiscard]] bool any_constraint() const noexcept { return !edge_bits.empty(); }
+    [[nodiscard]] std::uint8_t bits(std::size_t t, int i) const noexcept
+    {
+        return edge_bits.empty() ? 0 : edge_bits[t][static_cast<std::size_t>(i)];
+    }
 };
 
-/// Faces of @p mesh as triangles; vertex v of the mesh becomes kernel_to_vertex[v].
+/// Faces of @p mesh as triangles; vertex v of the mesh becomes kernel_to_vertex[v]. Without
+/// @p constrained (no edge of the mesh is), no constraint bits are kept.
 /// Consumes the mesh: its origin array is reused as scratch memory.
 [[nodiscard]] TinDraft mesh_to_tin(EdgeMesh& mesh,
                                    const std::vector<VertexIndex>& kernel_to_vertex,
-                                   std::vector<Point3> vertices);
+                                   std::vector<Point3> vertices, bool constrained);
 
 /// Removes the triangles outside the boundaries, inside holes (rings and seeds) and, with
 /// options.max_edge, the long border triangles. @return the number removed.

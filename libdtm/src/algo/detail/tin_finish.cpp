@@ -29,7 +29,7 @@ std::size_t trim_long_edges(TinDraft& draft, double max_edge)
         const Triangle& tri = tin.triangles[t];
         for (int i = 0; i < 3; ++i) {
             const TriangleIndex n = tri.n[i];
-            if ((n != no_triangle && keep[n]) || draft.edge_bits[t][i] != 0) continue;
+            if ((n != no_triangle && keep[n]) || draft.bits(t, i) != 0) continue;
             const Point3& a = tin.vertices[tri.v[(i + 1) % 3]];
             const Point3& b = tin.vertices[tri.v[(i + 2) % 3]];
             const double dx = a.x - b.x;
@@ -64,7 +64,7 @@ void finish_tin(TinDraft& draft)
     const std::vector<Triangle>& tris = draft.tin.triangles;
     std::vector<ConstrainedEdge>& constraints = draft.tin.constraints;
     constraints.clear();
-    for (std::size_t t = 0; draft.any_constraint && t < tris.size(); ++t) {
+    for (std::size_t t = 0; draft.any_constraint() && t < tris.size(); ++t) {
         const Triangle& tri = tris[t];
         const auto& bits = draft.edge_bits[t];
         for (int j = 0; j < 3; ++j) {
