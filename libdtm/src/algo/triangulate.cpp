@@ -9,8 +9,9 @@
 //      (detail/delaunay_dc.cpp);
 //   3. constraints inserted by cavity retriangulation, crossings split with interpolated heights
 //      (detail/mesh_edit.cpp, detail/mesh_segment.cpp);
-//   4. the domain: outside the boundary, holes and long border triangles removed; canonical
-//      order (detail/tin_build.cpp, detail/tin_finish.cpp).
+//   4. the TIN read off the mesh in canonical order (detail/mesh_to_tin.cpp); the domain:
+//      outside the boundary, holes and long border triangles removed (detail/tin_build.cpp,
+//      detail/tin_finish.cpp).
 // Soft breakline vertices take their heights from the surface built without them (a first pass
 // of steps 2-3 without soft lines), then everything is built again with them.
 #include "dtm/algo/triangulate.hpp"
