@@ -47,6 +47,22 @@ TEST(VerifyConstraints, BreaklineThatLeavesTheBoundaryIsRequiredOnlyInside)
     }
 }
 
+TEST(VerifyConstraints, SegmentWithBothEndsInsideThatCrossesANotchIsRequiredOnlyInside)
+{
+    // The boundary has a notch cut in from its right side; the breakline runs from (600, 300) to
+    // (600, 700), both ends inside, through the notch (x = 600 is outside for 470 < y < 530).
+    TerrainInput input;
+    input.points = test::random_points(400, 22);
+    input.boundaries.push_back({{{100, 100, 0}, {700, 100, 0}, {700, 450, 0}, {450, 500, 0},
+                                 {700, 550, 0}, {700, 900, 0}, {100, 900, 0}},
+                                true, "boundary"});
+    input.breaklines.push_back({{{600, 300, 5}, {600, 700, 5}}, false, "breakline"});
+    const TriangulateResult r = triangulate(input);
+    EXPECT_EQ(r.stats.intersections, 2u);
+    const CheckReport report = verify_constraints(r.tin, input);
+    EXPECT_TRUE(report.ok()) << report.text();
+}
+
 TEST(VerifyConstraints, MissingPieceInsideTheSurfaceIsReportedEvenWhenTheSegmentLeavesIt)
 {
     const TerrainInput input = clipped_breakline_input();
