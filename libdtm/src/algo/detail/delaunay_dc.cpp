@@ -265,28 +265,35 @@ private:
         if (m.org[rdi] == m.org[rdo]) rdo = basel;
         // Zip upwards.
         for (;;) {
+            // A candidate's validity is tested again only when edges were deleted in front of it.
             EdgeId lcand = m.onext[EdgeMesh::sym(basel)];
-            if (valid(lcand, basel)) {
+            bool lvalid = valid(lcand, basel);
+            if (lvalid) {
+                bool deleted = false;
                 while (m.dest(m.onext[lcand]) != m.org[basel] &&
                        incircle(m.dest(basel), m.org[basel], m.dest(lcand),
                                 m.dest(m.onext[lcand]))) {
                     const EdgeId t = m.onext[lcand];
                     m.delete_edge(slots, lcand);
                     lcand = t;
+                    deleted = true;
                 }
+                if (deleted) lvalid = valid(lcand, basel);
             }
             EdgeId rcand = m.oprev[basel];
-            if (valid(rcand, basel)) {
+            bool rvalid = valid(rcand, basel);
+            if (rvalid) {
+                bool deleted = false;
                 while (m.dest(m.oprev[rcand]) != m.dest(basel) &&
                        incircle(m.dest(basel), m.org[basel], m.dest(rcand),
                                 m.dest(m.oprev[rcand]))) {
                     const EdgeId t = m.oprev[rcand];
                     m.delete_edge(slots, rcand);
                     rcand = t;
+                    deleted = true;
                 }
+                if (deleted) rvalid = valid(rcand, basel);
             }
-            const bool lvalid = valid(lcand, basel);
-            const bool rvalid = valid(rcand, basel);
             if (!lvalid && !rvalid) break;
             if (!lvalid ||
                 (rvalid && incircle(m.dest(lcand), m.org[lcand], m.org[rcand], m.dest(rcand)))) {
