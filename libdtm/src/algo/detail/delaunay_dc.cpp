@@ -47,20 +47,14 @@ struct Hull {
     EdgeId right;
 };
 
-/// Strict order of the frame: lexicographic (x, y) for axis 0, (y, -x) for axis 1.
-inline bool before(int axis, const KernelPoint& a, const KernelPoint& b) noexcept
-{
-    if (axis == 0) return a.x < b.x || (a.x == b.x && a.y < b.y);
-    return a.y < b.y || (a.y == b.y && a.x > b.x);
-}
-
 /// Subtrees of at most this many points are not cut alternately but sorted by x once and cut
 /// vertically by index (Guibas and Stolfi's original scheme): at this size the shape of the pieces
 /// hardly changes the merges, and selecting medians for every tiny subtree cost more than all the
 /// larger cuts together.
 constexpr std::size_t strip_size = 16;
 
-/// The same order without branches, for the median selection.
+/// Strict order of the frame: lexicographic (x, y) for axis 0, (y, -x) for axis 1. Written
+/// without branches, for the median selection.
 template <int Axis>
 struct Before {
     bool operator()(const KernelPoint& a, const KernelPoint& b) const noexcept
@@ -69,6 +63,12 @@ struct Before {
         return (a.y < b.y) | ((a.y == b.y) & (a.x > b.x));
     }
 };
+
+/// The order of @p frame (0 or 1), chosen at run time.
+inline bool before(int frame, const KernelPoint& a, const KernelPoint& b) noexcept
+{
+    return frame == 0 ? Before<0>{}(a, b) : Before<1>{}(a, b);
+}
 
 class Builder {
 public:
