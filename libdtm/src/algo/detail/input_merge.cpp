@@ -2,27 +2,21 @@
 //
 // Input merging: every input point (survey points first, then the vertices of hard breaklines,
 // soft breaklines, boundaries and holes, in that order) becomes one distinct TIN vertex.
-// Exact duplicates in x, y are found by sorting; with a snap distance D > 0, points closer than D
-// to an earlier kept point are merged into it (a uniform grid of cell D, scanned in input order,
-// so the result is deterministic). The kept position is the first point's; its z follows the
+// Exact duplicates in x, y are found with a hash table (exact_duplicates.cpp); with a snap
+// distance D > 0, points closer than D to an earlier kept point are merged into it (a uniform grid
+// of cell D, scanned in input order, so the result is deterministic). The kept position is the first point's; its z follows the
 // DuplicateRule over the points that carry a height (soft breakline vertices carry none).
 #include "algo/detail/input_merge.hpp"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
-
 #include <algorithm>
-#include <atomic>
 #include <limits>
 #include <cmath>
 #include <numeric>
 #include <string>
 #include <unordered_map>
 
-#include "algo/detail/big_array.hpp"
 #include "algo/detail/edge_mesh.hpp"
-#include "algo/detail/position_hash.hpp"
+#include "algo/detail/exact_duplicates.hpp"
 #include "dtm/core/error.hpp"
 
 namespace dtm::detail {
@@ -78,102 +72,10 @@ void add_polylines(const std::vector<Polyline>& lines, std::uint8_t bits, bool r
 /// rep[i]: the combined index of the point i is merged into (rep[i] == i when kept).
 using Representatives = std::vector<VertexIndex>;
 
-std::size_t slot_of(const Point3& p, std::size_t capacity)
-{
-    return position_slot(p.x, p.y, capacity);
-}
-
-/// Exact duplicates by an open-addressing hash table of 32-bit indices on the coordinate bits.
-/// Half the table's slots stay empty, so probes are short. Sequential: the first occurrence of a
-/// position claims its slot.
-Representatives exact_representatives_sequential(const std::vector<Point3>& pts,
-                                                 std::vector<VertexIndex>& table)
-{
-    const std::size_t n = pts.size();
-    const std::size_t capacity = table.size();
-    Representatives rep(n);
-    constexpr std::size_t ahead = 16;  // prefetch distance: the table is far larger than the caches
-    for (std::size_t i = 0; i < n; ++i) {
-        if (i + ahead < n) __builtin_prefetch(&table[slot_of(pts[i + ahead], capacity)]);
-        rep[i] = static_cast<VertexIndex>(i);
-        for (std::size_t slot = slot_of(pts[i], capacity);; slot = (slot + 1) & (capacity - 1)) {
-            const VertexIndex j = table[slot];
-            if (j == no_vertex) {
-                table[slot] = static_cast<VertexIndex>(i);
-                break;
-            }
-            if (pts[j].x == pts[i].x && pts[j].y == pts[i].y) {
-                rep[i] = j;
-                break;
-            }
-        }
-    }
-    return rep;
-}
-
-/// The same table filled by all threads at once: a slot, once claimed, only ever holds the same
-/// position, and among equal positions the smallest index wins by an atomic minimum, so the
-/// table ends as the sequential one would (the first occurrence in every slot) whatever the
-/// schedule. A second parallel pass reads the representatives when any position repeats.
-Representatives exact_representatives_parallel(const std::vector<Point3>& pts,
-                                               std::vector<VertexIndex>& table)
-{
-    const std::size_t n = pts.size();
-    const std::size_t capacity = table.size();
-    std::atomic<bool> repeats{false};
-    const auto find = [&](std::size_t i, bool claim) {
-        for (std::size_t slot = slot_of(pts[i], capacity);; slot = (slot + 1) & (capacity - 1)) {
-            std::atomic_ref<VertexIndex> cell(table[slot]);
-            VertexIndex j = cell.load(std::memory_order_acquire);
-            if (j == no_vertex) {
-                if (!claim) return slot;  // cannot happen after the first pass
-                if (cell.compare_exchange_strong(j, static_cast<VertexIndex>(i),
-                                                 std::memory_order_acq_rel)) {
-                    return slot;
-                }
-                // j now holds the winner: fall through and compare with it
-            }
-            if (pts[j].x == pts[i].x && pts[j].y == pts[i].y) {
-                if (claim) {
-                    repeats.store(true, std::memory_order_relaxed);
-                    while (i < j && !cell.compare_exchange_weak(j, static_cast<VertexIndex>(i),
-                                                                std::memory_order_acq_rel)) {
-                    }
-                }
-                return slot;
-            }
-        }
-    };
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1 << 14), [&](const auto& r) {
-        for (std::size_t i = r.begin(); i < r.end(); ++i) find(i, true);
-    });
-    Representatives rep(n);
-    const bool any = repeats.load();
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1 << 14), [&](const auto& r) {
-        for (std::size_t i = r.begin(); i < r.end(); ++i) {
-            rep[i] = any ? table[find(i, false)] : static_cast<VertexIndex>(i);
-        }
-    });
-    return rep;
-}
-
-Representatives exact_representatives(const std::vector<Point3>& pts)
-{
-    const std::size_t capacity = position_table_capacity(pts.size());
-    std::vector<VertexIndex> table;
-    reserve_huge(table, capacity);
-    table.resize(capacity, no_vertex);
-    if (tbb::this_task_arena::max_concurrency() > 1 && pts.size() > 100'000) {
-        return exact_representatives_parallel(pts, table);
-    }
-    return exact_representatives_sequential(pts, table);
-}
-
-/// rep[i]: the combined index of the point i is merged into (rep[i] == i when kept).
 Representatives find_representatives(const std::vector<Point3>& pts, double snap)
 {
     const std::size_t n = pts.size();
-    if (snap <= 0.0) return exact_representatives(pts);
+    if (snap <= 0.0) return first_occurrences(pts);
     Representatives rep(n);
     struct CellHash {
         std::size_t operator()(const std::pair<std::int64_t, std::int64_t>& c) const noexcept
