@@ -231,31 +231,20 @@ CheckReport verify_constraints(const Tin& tin, const TerrainInput& input,
         adjacent[c.a].push_back(c.b);
         adjacent[c.b].push_back(c.a);
     }
-    // A segment that leaves the surface (through the boundary, into a hole, or with an end
-    // beyond it) is clipped there. It is present when its end can be reached from its start
-    // along constrained edges through vertices on it (or added at crossings), where a step from
-    // one station (an end or a TIN vertex on the segment) to the next one along it may also skip
-    // the piece between them when that piece lies off the surface.
+    // Segment va-vb is present when vb can be reached from va along constrained edges through
+    // vertices on it (or added at crossings). A segment that leaves the surface (through the
+    // boundary, into a hole, or with an end beyond it) is clipped there: with @p stations (its
+    // ends and the TIN vertices on it, in order along it), a step from one station to the next
+    // may also skip the piece between them when that piece lies off the surface.
     std::optional<TriangleGrid> grid;
-    const auto present_where_inside = [&](VertexIndex va, VertexIndex vb) {
-        if (!grid) grid.emplace(tin);
+    const auto chain_reaches = [&](VertexIndex va, VertexIndex vb,
+                                   const std::vector<VertexIndex>& stations) {
         const Point3& pa = tin.vertices[va];
         const Point3& pb = tin.vertices[vb];
         const auto allowed = [&](VertexIndex v) {
             const Point3& q = tin.vertices[v];
             return on_or_next_to(pa, pb, q) || !given.count({q.x, q.y});
         };
-        std::vector<VertexIndex> stations = grid->vertices_near(pa, pb, [&](VertexIndex v) {
-            return v != va && v != vb && used[v] && on_or_next_to(pa, pb, tin.vertices[v]);
-        });
-        const double dx = pb.x - pa.x, dy = pb.y - pa.y;
-        const auto along = [&](VertexIndex v) {
-            return (tin.vertices[v].x - pa.x) * dx + (tin.vertices[v].y - pa.y) * dy;
-        };
-        std::sort(stations.begin(), stations.end(),
-                  [&](VertexIndex x, VertexIndex y) { return along(x) < along(y); });
-        stations.insert(stations.begin(), va);
-        stations.push_back(vb);
         std::unordered_map<VertexIndex, std::size_t> station_of;
         for (std::size_t i = 0; i < stations.size(); ++i) station_of.emplace(stations[i], i);
         std::set<VertexIndex> seen{va};
@@ -279,6 +268,23 @@ CheckReport verify_constraints(const Tin& tin, const TerrainInput& input,
             }
         }
         return false;
+    };
+    const auto present_where_inside = [&](VertexIndex va, VertexIndex vb) {
+        if (!grid) grid.emplace(tin);
+        const Point3& pa = tin.vertices[va];
+        const Point3& pb = tin.vertices[vb];
+        std::vector<VertexIndex> stations = grid->vertices_near(pa, pb, [&](VertexIndex v) {
+            return v != va && v != vb && used[v] && on_or_next_to(pa, pb, tin.vertices[v]);
+        });
+        const double dx = pb.x - pa.x, dy = pb.y - pa.y;
+        const auto along = [&](VertexIndex v) {
+            return (tin.vertices[v].x - pa.x) * dx + (tin.vertices[v].y - pa.y) * dy;
+        };
+        std::sort(stations.begin(), stations.end(),
+                  [&](VertexIndex x, VertexIndex y) { return along(x) < along(y); });
+        stations.insert(stations.begin(), va);
+        stations.push_back(vb);
+        return chain_reaches(va, vb, stations);
     };
     // Combined input numbering of triangulate(): points, breaklines, boundaries, holes, soft.
     std::size_t next_input = input.points.size();
@@ -313,28 +319,7 @@ CheckReport verify_constraints(const Tin& tin, const TerrainInput& input,
                     }
                     continue;
                 }
-                const Point3& pa = tin.vertices[va];
-                const Point3& pb = tin.vertices[vb];
-
-                // Breadth-first search along constrained edges through allowed vertices.
-                std::set<VertexIndex> seen{va};
-                std::vector<VertexIndex> frontier{va};
-                bool found = false;
-                while (!frontier.empty() && !found) {
-                    const VertexIndex v = frontier.back();
-                    frontier.pop_back();
-                    for (const VertexIndex w : adjacent[v]) {
-                        if (w == vb) {
-                            found = true;
-                            break;
-                        }
-                        const Point3& q = tin.vertices[w];
-                        const bool on_segment = on_or_next_to(pa, pb, q);
-                        const bool added = !given.count({q.x, q.y});
-                        if ((on_segment || added) && seen.insert(w).second) frontier.push_back(w);
-                    }
-                }
-                if (!found && !present_where_inside(va, vb)) {
+                if (!chain_reaches(va, vb, {}) && !present_where_inside(va, vb)) {
                     add(report, name + ": not present as constrained edges");
                 }
             }
