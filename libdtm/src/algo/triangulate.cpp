@@ -23,6 +23,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <string>
 
 #include "algo/detail/constraint_batch.hpp"
@@ -44,15 +45,20 @@ double seconds_since(std::chrono::steady_clock::time_point start)
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-/// The kernel's mesh over a subset of the merged vertices, with the constraints inserted.
+/// The kernel's mesh over a subset of the merged vertices, with the constraints inserted: the
+/// triangles with ghosts as the kernel built them when nothing is inserted or located (the TIN
+/// is read off them in place), else the half-edge mesh made from them.
 struct Kernel {
+    detail::GhostMesh triangles;
     detail::EdgeMesh mesh;
     detail::EdgeSlots slots;
-    std::vector<double> z;                     ///< per kernel vertex
-    std::vector<VertexIndex> vertex_of_kernel; ///< merged vertex (or new index for added ones)
+    std::vector<double> z;                     ///< per kernel vertex (only with `mesh`)
+    std::vector<VertexIndex> vertex_of_kernel; ///< merged vertex (or new index for added ones); with `mesh`
     std::vector<detail::Crossing> crossings;
     double seconds_triangulate = 0.0;
     double seconds_constrain = 0.0;
+
+    [[nodiscard]] bool edited() const noexcept { return !mesh.points.empty(); }
 };
 
 std::size_t parallel_cutoff(std::size_t n, const TriangulateOptions& options)
@@ -65,8 +71,11 @@ std::size_t parallel_cutoff(std::size_t n, const TriangulateOptions& options)
     return std::max<std::size_t>(n / tiles, 4);
 }
 
-Kernel build_kernel(const MergedInput& in, bool with_soft, const TriangulateOptions& options,
-                    const Progress& progress)
+/// The kernel over the merged vertices (with @p with_soft, all of them; else those with known
+/// heights) and the segments among them. With @p editable, or when there are segments, the
+/// result is the half-edge mesh.
+Kernel build_kernel(const MergedInput& in, bool with_soft, bool editable,
+                    const TriangulateOptions& options, const Progress& progress)
 {
     Kernel k;
     auto start = std::chrono::steady_clock::now();
@@ -87,29 +96,41 @@ Kernel build_kernel(const MergedInput& in, bool with_soft, const TriangulateOpti
             points.push_back({{in.vertices[i].x, in.vertices[i].y}, static_cast<std::uint32_t>(i)});
         }
     }
+    std::vector<detail::InputSegment> segments;
+    for (const detail::InputSegment& seg : in.segments) {
+        if (with_soft || seg.bits != detail::constraint_soft) segments.push_back(seg);
+    }
+    editable = editable || !segments.empty();
     detail::DelaunayDcOptions dc;
     dc.parallel_cutoff = parallel_cutoff(points.size(), options);
     const std::size_t kernel_count = points.size();
-    detail::delaunay_divide_and_conquer(points, k.mesh, k.slots, dc, progress.sub(0.0, 0.7));
+    detail::delaunay_divide_and_conquer(points, k.triangles, dc, progress.sub(0.0, 0.7));
+    if (editable) {
+        k.vertex_of_kernel.resize(kernel_count);
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, kernel_count, 1 << 14),
+                          [&](const auto& r) {
+                              for (std::size_t v = r.begin(); v < r.end(); ++v) {
+                                  k.vertex_of_kernel[v] = k.triangles.points[v].id;
+                              }
+                          });
+        detail::ghost_mesh_to_edge_mesh(k.triangles, k.mesh, k.slots);
+    }
+    k.seconds_triangulate = seconds_since(start);
+    if (!editable) return k;
+
+    start = std::chrono::steady_clock::now();
     std::vector<detail::VertexId> kernel_of(in.vertices.size(), detail::no_edge);
-    k.vertex_of_kernel.resize(kernel_count);
     k.z.resize(kernel_count);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, kernel_count, 1 << 14), [&](const auto& r) {
         for (std::size_t v = r.begin(); v < r.end(); ++v) {
-            const std::uint32_t id = k.mesh.points[v].id;  // ids are distinct: no write conflicts
-            k.vertex_of_kernel[v] = id;
+            const VertexIndex id = k.vertex_of_kernel[v];  // distinct: no write conflicts
             kernel_of[id] = static_cast<detail::VertexId>(v);
             k.z[v] = in.vertices[id].z;
         }
     });
-    k.seconds_triangulate = seconds_since(start);
-
-    start = std::chrono::steady_clock::now();
-    std::vector<detail::InputSegment> segments;
-    segments.reserve(in.segments.size());
-    for (const detail::InputSegment& seg : in.segments) {
-        if (!with_soft && seg.bits == detail::constraint_soft) continue;
-        segments.push_back({kernel_of[seg.a], kernel_of[seg.b], seg.bits});
+    for (detail::InputSegment& seg : segments) {
+        seg.a = kernel_of[seg.a];
+        seg.b = kernel_of[seg.b];
     }
     if (!segments.empty()) {
         detail::MeshEditor editor(k.mesh, k.slots, k.z, options.z_tolerance);
@@ -128,7 +149,7 @@ Kernel build_kernel(const MergedInput& in, bool with_soft, const TriangulateOpti
 void interpolate_soft_heights(MergedInput& in, const TriangulateOptions& options,
                               const Progress& progress)
 {
-    Kernel k = build_kernel(in, false, options, progress);
+    Kernel k = build_kernel(in, false, true, options, progress);
     detail::MeshEditor editor(k.mesh, k.slots, k.z, options.z_tolerance);
     EdgeId hint = editor.edge_of(0);
     for (std::size_t i = 0; i < in.vertices.size(); ++i) {
@@ -192,21 +213,28 @@ TriangulateResult run(TerrainInput&& input, const TriangulateOptions& options,
     bool has_soft = false;
     for (const bool known : merged.z_known) has_soft = has_soft || !known;
     if (has_soft) interpolate_soft_heights(merged, options, progress.sub(0.0, 0.3));
-    Kernel k = build_kernel(merged, true, options, progress.sub(has_soft ? 0.3 : 0.0, 0.95));
+    Kernel k =
+        build_kernel(merged, true, false, options, progress.sub(has_soft ? 0.3 : 0.0, 0.95));
 
     start = std::chrono::steady_clock::now();
     std::vector<Point3> vertices = std::move(merged.vertices);
     const std::size_t merged_count = vertices.size();
-    vertices.reserve(std::max(merged_count, k.mesh.points.size()));
-    for (std::size_t v = 0; v < k.mesh.points.size(); ++v) {
-        if (k.vertex_of_kernel[v] >= merged_count) {  // added at crossings, in order
-            vertices.push_back({k.mesh.points[v].x, k.mesh.points[v].y, k.z[v]});
+    detail::TinDraft draft;
+    if (k.edited()) {
+        vertices.reserve(std::max(merged_count, k.mesh.points.size()));
+        for (std::size_t v = 0; v < k.mesh.points.size(); ++v) {
+            if (k.vertex_of_kernel[v] >= merged_count) {  // added at crossings, in order
+                vertices.push_back({k.mesh.points[v].x, k.mesh.points[v].y, k.z[v]});
+            }
         }
+        k.z = {};  // heights live in `vertices` now
+        draft = detail::mesh_to_tin(k.mesh, k.vertex_of_kernel, std::move(vertices),
+                                    !merged.segments.empty());
+        k.mesh = detail::EdgeMesh{};
+    } else {
+        draft = detail::ghost_mesh_to_tin(k.triangles, std::move(vertices));
     }
-    k.z = {};  // heights live in `vertices` now
-    detail::TinDraft draft = detail::mesh_to_tin(k.mesh, k.vertex_of_kernel, std::move(vertices),
-                                                 !merged.segments.empty());
-    k.mesh = detail::EdgeMesh{};
+    k.vertex_of_kernel = {};
     result.stats.removed_triangles =
         detail::apply_domain(draft, has_boundary, hole_seeds, options.max_edge);
     detail::finish_tin(draft);
@@ -230,6 +258,10 @@ TriangulateResult run(TerrainInput&& input, const TriangulateOptions& options,
     result.stats.seconds_constrain = k.seconds_constrain + seconds_since(start);
     result.merges = std::move(merged.merges);
     result.input_to_vertex = std::move(merged.input_to_vertex);
+    if (result.input_to_vertex.empty()) {  // nothing merged: the identity, made now that the
+        result.input_to_vertex.resize(merged_count);  // kernel's memory is released
+        std::iota(result.input_to_vertex.begin(), result.input_to_vertex.end(), VertexIndex{0});
+    }
     return result;
 }
 

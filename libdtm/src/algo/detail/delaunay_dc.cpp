@@ -5,8 +5,11 @@
 // The point set is split at its median, alternately by x and by y (Dwyer's improvement of the
 // Guibas-Stolfi algorithm, as in Shewchuk's Triangle), down to pieces of two or three points.
 // Two neighbouring halves are stitched by the Guibas-Stolfi merge: start from the lower common
-// tangent of the two hulls and zip upwards, each step adding the cross edge chosen by the
-// in-circle test and deleting the edges of either half that the new edge makes non-Delaunay.
+// tangent of the two hulls and zip upwards, each step adding the triangle chosen by the
+// in-circle test and deleting the edges of either half that it makes non-Delaunay. The mesh is
+// triangle-based with ghost triangles on the hull (ghost_mesh.hpp, after Shewchuk's Triangle): a
+// deletion is a flip with the ghost vertex, a zip step turns a ghost into a real triangle, and
+// the finished mesh is already the TIN's triangle array.
 // A cut by y is merged in a frame rotated by 90 degrees: the merge reads geometry only through
 // orient2d and incircle, which are invariant under that rotation, so only the order used to pick
 // the extreme hull vertices changes ((x, y) for x cuts, (y, -x) for y cuts).
@@ -14,9 +17,9 @@
 // The recursion tree depends only on the input (a median split of a canonically sorted array),
 // so the triangulation is the same whether a subtree runs sequentially or as a parallel task:
 // the top levels of the tree are the "tiles" and their merges are the exact seam stitches.
-// Every subtree allocates edges from its own slot range (3 slots per point always suffice: a
-// planar straight-line graph on m >= 3 points has at most 3m - 6 edges), whether it runs as a
-// parallel task or not, so every edge gets the same slot for every tile and thread count.
+// Every subtree of m points uses exactly 2 m - 2 of the triangle slots [2 lo, 2 hi) of its range
+// (a merge adds two triangles, a flip none), and a merge takes the two slots its left half left
+// over, so every triangle gets the same slot for every tile and thread count.
 //
 // References:
 //   L. Guibas, J. Stolfi, "Primitives for the manipulation of general subdivisions and the
@@ -31,7 +34,9 @@
 #include <tbb/parallel_invoke.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
+#include <string>
 
 #include "algo/detail/median_split.hpp"
 #include "dtm/core/error.hpp"
@@ -40,11 +45,18 @@
 namespace dtm::detail {
 namespace {
 
-/// ldo: counter-clockwise hull edge out of the first (leftmost) vertex of the frame order;
-/// rdo: clockwise hull edge out of the last (rightmost) one.
+/// Where a subtree's hull is entered by its parent's merge, in the parent's frame: the base of
+/// the ghost triangle out of the last vertex (the left half's lower tangent search starts there)
+/// and of the one into the first vertex (the right half's).
 struct Hull {
-    EdgeId left;
-    EdgeId right;
+    HalfEdge last_out;
+    HalfEdge first_in;
+};
+
+/// A built subtree: its hull and the two triangle slots of its range it did not use.
+struct Part {
+    Hull hull;
+    std::array<std::size_t, 2> spare;
 };
 
 /// Subtrees of at most this many points are not cut alternately but sorted by x once and cut
@@ -72,10 +84,10 @@ inline bool before(int frame, const KernelPoint& a, const KernelPoint& b) noexce
 
 class Builder {
 public:
-    Builder(BigArray<KernelPoint>& points, EdgeMesh& mesh, const DelaunayDcOptions& options,
+    Builder(BigArray<KernelPoint>& points, GhostMesh& mesh, const DelaunayDcOptions& options,
             const Progress& progress)
-        : pts_(points.data()), mesh_(mesh), options_(options), progress_(progress),
-          total_(points.size()),
+        : pts_(points.data()), tris_(mesh.tris.data()), options_(options),
+          progress_(progress), total_(points.size()),
           progress_unit_(options.parallel_cutoff > 0 ? options.parallel_cutoff : 65536)
     {
     }
@@ -107,17 +119,14 @@ public:
         if (n <= progress_unit_ && parent_n > progress_unit_) report(n);
     }
 
-    /// Triangulates points [lo, hi) with edges from the slots [3 lo, 3 hi); @p slots receives
-    /// what is left of that range.
-    Hull build(std::size_t lo, std::size_t hi, int cut, int frame, EdgeSlots& slots,
-               std::size_t parent_n)
+    /// Triangulates points [lo, hi) in the triangle slots [2 lo, 2 hi); the hull handles are in
+    /// the order of @p frame.
+    Part build(std::size_t lo, std::size_t hi, int cut, int frame, std::size_t parent_n)
     {
         const std::size_t n = hi - lo;
-        slots = EdgeSlots{static_cast<EdgeId>(3 * lo), static_cast<EdgeId>(3 * hi)};
-        const Hull hull = n <= 3 ? base_case(lo, n, frame, slots)
-                                 : build_inner(lo, hi, cut, frame, slots);
+        const Part part = n <= 3 ? base_case(lo, n, frame) : build_inner(lo, hi, cut, frame);
         if (n <= progress_unit_ && parent_n > progress_unit_) report(n);
-        return hull;
+        return part;
     }
 
 private:
@@ -131,24 +140,23 @@ private:
         progress_.report(fraction, "triangulating");
     }
 
-    Hull build_inner(std::size_t lo, std::size_t hi, int cut, int frame, EdgeSlots& slots)
+    Part build_inner(std::size_t lo, std::size_t hi, int cut, int frame)
     {
         const std::size_t n = hi - lo;
         if (n <= strip_size) cut = 0;  // sorted by x: cut by index, vertically
         const std::size_t mid = lo + n / 2;
-        Hull left{};
-        Hull right{};
-        EdgeSlots left_slots;
+        Part left{};
+        Part right{};
         if (options_.parallel_cutoff > 0 && n > options_.parallel_cutoff) {
             bool left_done = false;
             bool right_done = false;
             tbb::parallel_invoke(
                 [&] {
-                    left = build(lo, mid, 1 - cut, cut, left_slots, n);
+                    left = build(lo, mid, 1 - cut, cut, n);
                     left_done = true;
                 },
                 [&] {
-                    right = build(mid, hi, 1 - cut, cut, slots, n);
+                    right = build(mid, hi, 1 - cut, cut, n);
                     right_done = true;
                 });
             // When a task elsewhere in the tree threw (cancellation), TBB cancels the shared
@@ -156,14 +164,36 @@ private:
             // without an exception: never merge halves that were not built.
             if (!left_done || !right_done) throw Cancelled();
         } else {
-            left = build(lo, mid, 1 - cut, cut, left_slots, n);
-            right = build(mid, hi, 1 - cut, cut, slots, n);
+            left = build(lo, mid, 1 - cut, cut, n);
+            right = build(mid, hi, 1 - cut, cut, n);
         }
-        // The merge allocates from both halves' leftovers, in an order that does not depend on
-        // whether the halves ran in parallel.
-        mesh_.absorb_slots(slots, left_slots);
-        const Hull merged = merge(left, right, slots);
-        return frame == cut ? merged : rehull(merged, frame);
+        // The merge takes the left half's spare slots; the right half's are passed up, whether
+        // or not the halves ran in parallel.
+        const HalfEdge on_hull = merge(left.hull, right.hull, left.spare);
+        return {handles(on_hull, frame), right.spare};
+    }
+
+    // Mesh access through the raw triangle array (the hot loops of the merge).
+    [[nodiscard]] VertexId& org(HalfEdge h) const noexcept { return tris_[h >> 2].v[h & 3u]; }
+    [[nodiscard]] VertexId dest(HalfEdge h) const noexcept { return org(next(h)); }
+    [[nodiscard]] HalfEdge& twin(HalfEdge h) const noexcept { return tris_[h >> 2].n[h & 3u]; }
+    void bond(HalfEdge a, HalfEdge b) const noexcept
+    {
+        twin(a) = b;
+        twin(b) = a;
+    }
+    void set_triangle(std::size_t t, VertexId a, VertexId b, VertexId c) const noexcept
+    {
+        tris_[t].v = {a, b, c};
+    }
+    /// The next ghost along the hull (outer face on the left): (a, b) -> (b, c).
+    [[nodiscard]] HalfEdge next_ghost(HalfEdge base) const noexcept
+    {
+        return next(twin(next(base)));
+    }
+    [[nodiscard]] HalfEdge prev_ghost(HalfEdge base) const noexcept
+    {
+        return prev(twin(prev(base)));
     }
 
     [[nodiscard]] int orient(VertexId a, VertexId b, VertexId c) const noexcept
@@ -175,17 +205,46 @@ private:
         return geom::incircle(pts_[a].x, pts_[a].y, pts_[b].x, pts_[b].y, pts_[c].x, pts_[c].y,
                               pts_[d].x, pts_[d].y) > 0;
     }
-    [[nodiscard]] bool rightof(VertexId x, EdgeId e) const noexcept
+
+    /// The hull handles in @p frame, found by walking the hull once from the ghost base
+    /// @p start.
+    [[nodiscard]] Hull handles(HalfEdge start, int frame) const noexcept
     {
-        return orient(x, mesh_.dest(e), mesh_.org[e]) > 0;
-    }
-    [[nodiscard]] bool leftof(VertexId x, EdgeId e) const noexcept
-    {
-        return orient(x, mesh_.org[e], mesh_.dest(e)) > 0;
+        Hull hull{start, start};
+        VertexId last = org(start);
+        VertexId first = dest(start);
+        for (HalfEdge g = next_ghost(start); g != start; g = next_ghost(g)) {
+            const VertexId a = org(g);
+            const VertexId b = dest(g);
+            if (before(frame, pts_[last], pts_[a])) {
+                last = a;
+                hull.last_out = g;
+            }
+            if (before(frame, pts_[b], pts_[first])) {
+                first = b;
+                hull.first_in = g;
+            }
+        }
+        return hull;
     }
 
-    /// Two or three points, sorted by x by split(); put in the order of the frame.
-    Hull base_case(std::size_t lo, std::size_t n, int frame, EdgeSlots& slots)
+    /// Ghost triangles on the three edges of the real triangle @p t = (a, b, c), in the slots
+    /// @p g0, @p g1, @p g2 (on the edges a-b, b-c, c-a), linked along the hull.
+    void close_with_ghosts(std::size_t t, std::size_t g0, std::size_t g1, std::size_t g2) const noexcept
+    {
+        const std::array<std::size_t, 3> g{g0, g1, g2};
+        const auto& v = tris_[t].v;
+        for (unsigned i = 0; i < 3; ++i) {
+            set_triangle(g[i], v[(i + 1) % 3], v[i], ghost);
+            bond(half_edge(t, i), half_edge(g[i], 0));
+        }
+        // Along the hull (outer face on the left) ghost i is followed by ghost i - 1.
+        for (unsigned i = 0; i < 3; ++i) bond(half_edge(g[i], 1), half_edge(g[(i + 2) % 3], 2));
+    }
+
+    /// Two or three points, sorted by x by split(); put in the order of the frame. Uses the
+    /// first two (or four) slots of the range [2 lo, 2 lo + 2 n).
+    Part base_case(std::size_t lo, std::size_t n, int frame)
     {
         if (frame == 1) {
             const Before<1> less;
@@ -197,116 +256,168 @@ private:
             }
         }
         const auto v0 = static_cast<VertexId>(lo);
-        const EdgeId a = mesh_.make_edge(slots, v0, v0 + 1);
-        if (n == 2) return {a, EdgeMesh::sym(a)};
-        const EdgeId b = mesh_.make_edge(slots, v0 + 1, v0 + 2);
-        mesh_.splice(EdgeMesh::sym(a), b);
+        const std::size_t t = 2 * lo;
+        if (n == 2) {
+            set_triangle(t, v0, v0 + 1, ghost);
+            set_triangle(t + 1, v0 + 1, v0, ghost);
+            bond(half_edge(t, 0), half_edge(t + 1, 0));
+            bond(half_edge(t, 1), half_edge(t + 1, 2));
+            bond(half_edge(t, 2), half_edge(t + 1, 1));
+            return {handles(half_edge(t, 0), frame), {t + 2, t + 3}};
+        }
         const int o = orient(v0, v0 + 1, v0 + 2);
-        if (o > 0) {
-            mesh_.connect(slots, b, a);
-            return {a, EdgeMesh::sym(b)};
-        }
-        if (o < 0) {
-            const EdgeId c = mesh_.connect(slots, b, a);
-            return {EdgeMesh::sym(c), c};
-        }
-        return {a, EdgeMesh::sym(b)};
-    }
-
-    /// Re-expresses the hull handles in another frame by walking the hull once.
-    [[nodiscard]] Hull rehull(Hull hull, int frame) const noexcept
-    {
-        const EdgeId start = hull.left;
-        EdgeId lo_edge = start;
-        EdgeId hi_edge = mesh_.oprev[start];
-        VertexId lo_v = mesh_.org[start];
-        VertexId hi_v = lo_v;
-        for (EdgeId e = mesh_.onext[start ^ 1u]; e != start; e = mesh_.onext[e ^ 1u]) {
-            const VertexId v = mesh_.org[e];
-            if (before(frame, pts_[v], pts_[lo_v])) {
-                lo_v = v;
-                lo_edge = e;
+        if (o == 0) {  // a chain v0 - v1 - v2: four ghosts around it
+            set_triangle(t, v0, v0 + 1, ghost);
+            set_triangle(t + 1, v0 + 1, v0 + 2, ghost);
+            set_triangle(t + 2, v0 + 2, v0 + 1, ghost);
+            set_triangle(t + 3, v0 + 1, v0, ghost);
+            bond(half_edge(t, 0), half_edge(t + 3, 0));
+            bond(half_edge(t + 1, 0), half_edge(t + 2, 0));
+            for (std::size_t i = 0; i < 4; ++i) {
+                bond(half_edge(t + i, 1), half_edge(t + (i + 1) % 4, 2));
             }
-            if (before(frame, pts_[hi_v], pts_[v])) {
-                hi_v = v;
-                hi_edge = mesh_.oprev[e];
+        } else {
+            if (o > 0) {
+                set_triangle(t, v0, v0 + 1, v0 + 2);
+            } else {
+                set_triangle(t, v0, v0 + 2, v0 + 1);
             }
+            close_with_ghosts(t, t + 1, t + 2, t + 3);
         }
-        return {lo_edge, hi_edge};
+        return {handles(half_edge(t + 1, 0), frame), {t + 4, t + 5}};
     }
 
-    /// Candidate e lies above basel. Repeated vertices are answered without the predicate, whose
-    /// filter cannot certify an exact zero and would take the slow exact path.
-    [[nodiscard]] bool valid(EdgeId e, EdgeId basel) const noexcept
+    /// The Guibas-Stolfi merge on triangles. The left half lies before the right one in the
+    /// frame of the cut. Returns the base of a ghost on the merged hull.
+    ///
+    /// The gap between the halves is covered by their ghosts; the merge adds two triangles: the
+    /// ghost below the lower tangent (permanent) and the "upper" ghost (l, r, ghost) above the
+    /// current base edge l - r. Each zip step turns the upper ghost into the real triangle
+    /// (l, r, c) and the ghost of the half the candidate c came from into the next upper ghost.
+    /// An edge of a half that the new edge would make non-Delaunay is deleted by flipping it
+    /// with the ghost vertex: its triangle becomes a ghost facing the gap (Shewchuk's scheme).
+    /// Every decision (tangent, candidates, deletions, choice) is the same as in the quad-edge
+    /// formulation, so the triangulation is the same.
+    HalfEdge merge(Hull left, Hull right, std::array<std::size_t, 2> slots)
     {
-        const VertexId d = mesh_.dest(e);
-        return d != mesh_.org[basel] && d != mesh_.dest(basel) && rightof(d, basel);
-    }
-
-    Hull merge(Hull left, Hull right, EdgeSlots& slots)
-    {
-        EdgeMesh& m = mesh_;
-        EdgeId ldo = left.left;
-        EdgeId ldi = left.right;
-        EdgeId rdi = right.left;
-        EdgeId rdo = right.right;
-        // Lower common tangent.
+        // Lower common tangent: lg is a ghost base l -> x of the left half, rg one y -> r of
+        // the right half.
+        HalfEdge lg = left.last_out;
+        HalfEdge rg = right.first_in;
         for (;;) {
-            if (leftof(m.org[rdi], ldi)) {
-                ldi = m.lnext(ldi);
-            } else if (rightof(m.org[ldi], rdi)) {
-                rdi = m.rprev(rdi);
+            const VertexId l = org(lg);
+            const VertexId r = dest(rg);
+            if (orient(r, l, dest(lg)) > 0) {
+                lg = next_ghost(lg);
+            } else if (orient(l, org(rg), r) > 0) {
+                rg = prev_ghost(rg);
             } else {
                 break;
             }
         }
-        EdgeId basel = m.connect(slots, EdgeMesh::sym(rdi), ldi);
-        if (m.org[ldi] == m.org[ldo]) ldo = EdgeMesh::sym(basel);
-        if (m.org[rdi] == m.org[rdo]) rdo = basel;
-        // Zip upwards.
+        VertexId l = org(lg);
+        VertexId r = dest(rg);
+        // The ghost below the tangent (r, l, ghost) and the upper ghost (l, r, ghost).
+        const std::size_t below = slots[0];
+        const std::size_t upper = slots[1];
+        const HalfEdge ghost_above_l = twin(prev(lg));  // l -> ghost, in the ghost into l
+        const HalfEdge ghost_above_r = twin(next(rg));  // ghost -> r, in the ghost out of r
+        set_triangle(below, r, l, ghost);
+        set_triangle(upper, l, r, ghost);
+        bond(half_edge(below, 0), half_edge(upper, 0));
+        bond(half_edge(below, 1), prev(lg));
+        bond(half_edge(below, 2), next(rg));
+        bond(half_edge(upper, 1), ghost_above_r);
+        bond(half_edge(upper, 2), ghost_above_l);
+        HalfEdge up = half_edge(upper, 0);  // l -> r in the upper ghost
+
         for (;;) {
-            // A candidate's validity is tested again only when edges were deleted in front of it.
-            EdgeId lcand = m.onext[EdgeMesh::sym(basel)];
-            bool lvalid = valid(lcand, basel);
+            const HalfEdge up1 = next(up);  // r -> ghost
+            const HalfEdge up2 = next(up1); // ghost -> l
+            // Left candidate: l -> c, the edge of the left half next to the gap.
+            HalfEdge lcand = twin(prev(twin(up2)));
+            VertexId lc = dest(lcand);
+            bool lvalid = lc != r && orient(lc, l, r) > 0;
             if (lvalid) {
                 bool deleted = false;
-                while (m.dest(m.onext[lcand]) != m.org[basel] &&
-                       incircle(m.dest(basel), m.org[basel], m.dest(lcand),
-                                m.dest(m.onext[lcand]))) {
-                    const EdgeId t = m.onext[lcand];
-                    m.delete_edge(slots, lcand);
-                    lcand = t;
+                for (;;) {
+                    const HalfEdge a1 = next(lcand);  // c -> c2 in the triangle left of lcand
+                    const VertexId c2 = org(next(a1));
+                    if (c2 == ghost || c2 == r || !incircle(l, r, lc, c2)) break;
+                    // Flip l - c with the ghost: (l, c, c2) becomes the ghost (l, ghost, c2)
+                    // and the gap's ghost (c, l, ghost) becomes (c, c2, ghost).
+                    const HalfEdge g0 = twin(lcand);
+                    const HalfEdge g1 = next(g0);
+                    const HalfEdge to_upper = twin(g1);
+                    const HalfEdge across = twin(a1);
+                    org(a1) = ghost;
+                    org(g1) = c2;
+                    bond(lcand, to_upper);
+                    bond(g0, across);
+                    bond(a1, g1);
+                    lcand = twin(prev(lcand));
+                    lc = c2;
                     deleted = true;
                 }
-                if (deleted) lvalid = valid(lcand, basel);
+                if (deleted) lvalid = lc != r && orient(lc, l, r) > 0;
             }
-            EdgeId rcand = m.oprev[basel];
-            bool rvalid = valid(rcand, basel);
+            // Right candidate: r -> c, the base of the right half's ghost next to the gap.
+            const HalfEdge rcand = next(twin(up1));
+            VertexId rc = dest(rcand);
+            bool rvalid = rc != l && orient(rc, l, r) > 0;
             if (rvalid) {
                 bool deleted = false;
-                while (m.dest(m.oprev[rcand]) != m.dest(basel) &&
-                       incircle(m.dest(basel), m.org[basel], m.dest(rcand),
-                                m.dest(m.oprev[rcand]))) {
-                    const EdgeId t = m.oprev[rcand];
-                    m.delete_edge(slots, rcand);
-                    rcand = t;
+                for (;;) {
+                    const HalfEdge b0 = twin(rcand);  // c -> r in the triangle right of rcand
+                    const HalfEdge b1 = next(b0);     // r -> d2
+                    const VertexId d2 = dest(b1);
+                    if (d2 == ghost || d2 == l || !incircle(l, r, rc, d2)) break;
+                    // Flip r - c with the ghost: the gap's ghost (r, c, ghost) becomes
+                    // (r, d2, ghost) and (c, r, d2) becomes the ghost (c, ghost, d2).
+                    const HalfEdge r1 = next(rcand);
+                    const HalfEdge across = twin(b1);
+                    const HalfEdge outer = twin(r1);
+                    org(r1) = d2;
+                    org(b1) = ghost;
+                    bond(rcand, across);
+                    bond(b0, outer);
+                    bond(r1, b1);
+                    rc = d2;
                     deleted = true;
                 }
-                if (deleted) rvalid = valid(rcand, basel);
+                if (deleted) rvalid = rc != l && orient(rc, l, r) > 0;
             }
             if (!lvalid && !rvalid) break;
-            if (!lvalid ||
-                (rvalid && incircle(m.dest(lcand), m.org[lcand], m.org[rcand], m.dest(rcand)))) {
-                basel = m.connect(slots, rcand, EdgeMesh::sym(basel));
+            if (!lvalid || (rvalid && incircle(lc, l, r, rc))) {
+                // (l, r, rc); the right ghost (r, rc, ghost) becomes the upper ghost (l, rc, ghost).
+                const HalfEdge below_rc = twin(rcand);  // rc -> r
+                const HalfEdge left_ghost = twin(up2);
+                org(up2) = rc;
+                org(rcand) = l;
+                bond(up1, below_rc);
+                bond(up2, rcand);
+                bond(next(next(rcand)), left_ghost);
+                up = rcand;
+                r = rc;
             } else {
-                basel = m.connect(slots, EdgeMesh::sym(basel), EdgeMesh::sym(lcand));
+                // (l, r, lc); the left ghost (lc, l, ghost) becomes the upper ghost (lc, r, ghost).
+                const HalfEdge g0 = twin(lcand);
+                const HalfEdge g1 = next(g0);
+                const HalfEdge right_ghost = twin(up1);
+                org(up2) = lc;
+                org(g1) = r;
+                bond(up1, g0);
+                bond(up2, lcand);
+                bond(g1, right_ghost);
+                up = g0;
+                l = lc;
             }
         }
-        return {ldo, rdo};
+        return half_edge(below, 0);
     }
 
     KernelPoint* pts_;
-    EdgeMesh& mesh_;
+    Triangle* tris_;
     const DelaunayDcOptions& options_;
     const Progress& progress_;
     std::size_t total_;
@@ -317,18 +428,23 @@ private:
 
 }  // namespace
 
-void delaunay_divide_and_conquer(BigArray<KernelPoint>& points, EdgeMesh& mesh, EdgeSlots& slots,
+void delaunay_divide_and_conquer(BigArray<KernelPoint>& points, GhostMesh& mesh,
                                  const DelaunayDcOptions& options, const Progress& progress)
 {
     const std::size_t n = points.size();
-    mesh.resize_slots(3 * n + 16);
-    slots = EdgeSlots{0, static_cast<EdgeId>(3 * n)};
+    if (n > max_kernel_points) {
+        throw InputError("too many points for one triangulation: " + std::to_string(n) +
+                         " (at most " + std::to_string(max_kernel_points) + ")");
+    }
+    mesh.tris.clear();
     if (n >= 2) {
+        // Every slot starts as "unused" (all corners ghost); the root leaves two of them.
+        reserve_huge(mesh.tris, 2 * n);
+        mesh.tris.resize(2 * n);
         Builder builder(points, mesh, options, progress);
         builder.split(0, n, 0, n + 1);
-        builder.build(0, n, 0, 0, slots, n + 1);
+        builder.build(0, n, 0, 0, n + 1);
     }
-    slots.end = static_cast<EdgeId>(mesh.slot_count());
     mesh.points = std::move(points);
     points = {};
 }

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "algo/detail/edge_mesh.hpp"
+#include "algo/detail/ghost_mesh.hpp"
 #include "dtm/core/progress.hpp"
 
 namespace dtm::detail {
@@ -18,12 +18,13 @@ struct DelaunayDcOptions {
     std::size_t parallel_cutoff = 0;
 };
 
-/// Delaunay triangulation of @p points (pairwise distinct in xy, at least 2) into @p mesh.
-/// Takes over @p points (left empty): reordered, they become mesh.points, and their order is the
-/// kernel vertex numbering. On return @p slots describes the free edge slots.
-/// Collinear input gives a chain of edges and no triangle.
-/// @throws Cancelled when @p progress asks to stop.
-void delaunay_divide_and_conquer(BigArray<KernelPoint>& points, EdgeMesh& mesh, EdgeSlots& slots,
+/// Delaunay triangulation of @p points (pairwise distinct in xy) into @p mesh: 2 n triangle
+/// slots, real triangles, ghosts on the hull and two unused slots (all corners ghost); no slot
+/// for fewer than two points. Takes over @p points (left empty): reordered, they become
+/// mesh.points, and their order is the kernel vertex numbering. Collinear input gives ghosts
+/// only (a chain of edges and no triangle).
+/// @throws Cancelled when @p progress asks to stop; InputError beyond max_kernel_points.
+void delaunay_divide_and_conquer(BigArray<KernelPoint>& points, GhostMesh& mesh,
                                  const DelaunayDcOptions& options, const Progress& progress);
 
 }  // namespace dtm::detail

@@ -11,7 +11,6 @@
 #include <algorithm>
 #include <limits>
 #include <cmath>
-#include <numeric>
 #include <string>
 #include <unordered_map>
 
@@ -197,15 +196,13 @@ MergedInput merge_input(TerrainInput&& input, const TriangulateOptions& options)
         } else {
             out.vertices = std::move(c.points);
         }
-        out.z_known = std::move(c.z_known);
-        out.input_to_vertex.resize(out.vertices.size());
-        std::iota(out.input_to_vertex.begin(), out.input_to_vertex.end(), VertexIndex{0});
+        out.z_known = std::move(c.z_known);  // input_to_vertex stays empty: the identity
     } else {
         merge_duplicates(c, rep, kept_count, options.duplicates, out);
     }
     for (const InputSegment& s : c.segments) {
-        const VertexIndex a = out.input_to_vertex[s.a];
-        const VertexIndex b = out.input_to_vertex[s.b];
+        const VertexIndex a = out.vertex_of_input(s.a);
+        const VertexIndex b = out.vertex_of_input(s.b);
         if (a != b) out.segments.push_back({a, b, s.bits});
     }
     return out;

@@ -20,10 +20,17 @@ struct InputSegment {
 struct MergedInput {
     std::vector<Point3> vertices;  ///< distinct vertices, in order of first input occurrence
     std::vector<bool> z_known;     ///< false for vertices only soft breaklines gave (z to compute)
-    std::vector<VertexIndex> input_to_vertex;  ///< per combined input point
+    /// Per combined input point; empty when nothing merged (the identity), which spares the
+    /// run 4 bytes per point while the kernel's arrays exist.
+    std::vector<VertexIndex> input_to_vertex;
     std::vector<DuplicateMerge> merges;
     std::vector<InputSegment> segments;  ///< hard, boundary, hole, then soft; input order
     std::size_t points_in = 0;
+
+    [[nodiscard]] VertexIndex vertex_of_input(std::size_t i) const noexcept
+    {
+        return input_to_vertex.empty() ? static_cast<VertexIndex>(i) : input_to_vertex[i];
+    }
 };
 
 /// @throws InputError on non-finite coordinates or an open boundary/hole ring.

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "algo/detail/edge_mesh.hpp"
+#include "algo/detail/ghost_mesh.hpp"
 #include "dtm/algo/triangulate.hpp"
 
 namespace dtm::detail {
@@ -32,6 +33,10 @@ struct TinDraft {
 [[nodiscard]] TinDraft mesh_to_tin(EdgeMesh& mesh,
                                    const std::vector<VertexIndex>& kernel_to_vertex,
                                    std::vector<Point3> vertices, bool constrained);
+
+/// The real triangles of @p ghosts as the Tin's, in place (ghost_mesh.cpp), when no edge is
+/// constrained; vertex v of the kernel becomes ghosts.points[v].id. Consumes @p ghosts.
+[[nodiscard]] TinDraft ghost_mesh_to_tin(GhostMesh& ghosts, std::vector<Point3> vertices);
 
 /// Removes the triangles outside the boundaries, inside holes (rings and seeds) and, with
 /// options.max_edge, the long border triangles. @return the number removed.

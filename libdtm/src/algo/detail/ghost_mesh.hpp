@@ -1,0 +1,70 @@
+// SPDX-License-Identifier: MIT
+/// @file
+/// @brief Triangle-based mesh with ghost triangles: the working structure of the Delaunay kernel.
+///
+/// Every face is a Triangle (the Tin's own type, so the finished mesh becomes the Tin without a
+/// copy). Half-edge i of triangle t runs from v[i] to v[(i + 1) % 3] and is named by the code
+/// (t << 2) | i; n[i] holds the code of its twin, the same edge in the other direction. Every
+/// edge of the convex hull has a ghost triangle on its outer side, whose third vertex is the
+/// ghost vertex (`ghost`), so every half-edge has a twin and the hull is a cycle of ghost
+/// triangles: the ghost (a, b, ghost) is followed by (b, c, ghost). Its "base" is the half-edge
+/// a -> b, with the outer face on its left.
+///
+/// A triangulation of m points with its ghosts has exactly 2m - 2 triangles (Euler's formula on
+/// the sphere closed by the ghost vertex; also for collinear points, whose "hull" is a chain
+/// walked in both directions), so a subtree of the divide and conquer over points [lo, hi) fits
+/// in the triangle slots [2 lo, 2 hi) with exactly two to spare.
+///
+/// Reference: J. R. Shewchuk, "Triangle: engineering a 2D quality mesh generator and Delaunay
+/// triangulator", 1996 (triangle-based data structure with ghost triangles for divide and
+/// conquer).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "algo/detail/big_array.hpp"
+#include "algo/detail/edge_mesh.hpp"
+#include "dtm/core/tin.hpp"
+
+namespace dtm::detail {
+
+using HalfEdge = std::uint32_t;
+inline constexpr VertexId ghost = no_vertex;
+inline constexpr HalfEdge no_half_edge = 0xffffffffu;
+/// Triangle slots are addressed by 30 bits in a half-edge code.
+inline constexpr std::size_t max_kernel_points = (std::size_t{1} << 29) - 8;
+
+constexpr HalfEdge half_edge(std::size_t t, unsigned i) noexcept
+{
+    return static_cast<HalfEdge>(t << 2 | i);
+}
+constexpr std::size_t tri_of(HalfEdge h) noexcept { return h >> 2; }
+constexpr unsigned corner_of(HalfEdge h) noexcept { return h & 3u; }
+constexpr HalfEdge next(HalfEdge h) noexcept { return (h & 3u) == 2 ? h - 2 : h + 1; }
+constexpr HalfEdge prev(HalfEdge h) noexcept { return (h & 3u) == 0 ? h + 2 : h - 1; }
+
+/// The kernel's output: triangles with ghosts, over the points in kernel order.
+struct GhostMesh {
+    std::vector<Triangle> tris;
+    BigArray<KernelPoint> points;
+
+    [[nodiscard]] VertexId& org(HalfEdge h) noexcept { return tris[h >> 2].v[h & 3u]; }
+    [[nodiscard]] VertexId org(HalfEdge h) const noexcept { return tris[h >> 2].v[h & 3u]; }
+    [[nodiscard]] VertexId dest(HalfEdge h) const noexcept { return org(next(h)); }
+    [[nodiscard]] HalfEdge& twin(HalfEdge h) noexcept { return tris[h >> 2].n[h & 3u]; }
+    [[nodiscard]] HalfEdge twin(HalfEdge h) const noexcept { return tris[h >> 2].n[h & 3u]; }
+    /// A slot holds a ghost triangle (or is unused) when any corner is the ghost vertex.
+    [[nodiscard]] bool is_ghost(std::size_t t) const noexcept
+    {
+        const auto& v = tris[t].v;
+        return (v[0] == ghost) | (v[1] == ghost) | (v[2] == ghost);
+    }
+};
+
+/// The mesh as the kernel's half-edge mesh (for constraint insertion and point location): one
+/// edge slot per edge, numbered in the order of the triangles; @p slots gets the free slots.
+/// Consumes @p ghosts.
+void ghost_mesh_to_edge_mesh(GhostMesh& ghosts, EdgeMesh& mesh, EdgeSlots& slots);
+
+}  // namespace dtm::detail
