@@ -4,12 +4,14 @@
 //
 //   1. merge_input: distinct vertices (duplicates and snapped points merged, every merge kept)
 //      and the constraint segments of breaklines, boundaries, holes and soft breaklines;
-//   2. the Delaunay kernel: divide and conquer with alternating cuts; its top levels run as
-//      parallel tiles and the merges that join them are the exact seam stitches
-//      (detail/delaunay_dc.cpp);
-//   3. constraints inserted by cavity retriangulation, crossings split with interpolated heights
+//   2. the Delaunay kernel: divide and conquer with alternating cuts on triangles with ghosts;
+//      its top levels run as parallel tiles and the merges that join them are the exact seam
+//      stitches (detail/delaunay_dc.cpp, detail/ghost_mesh.hpp);
+//   3. with constraints: the half-edge mesh made from the triangles (detail/ghost_mesh.cpp),
+//      constraints inserted by cavity retriangulation, crossings split with interpolated heights
 //      (detail/mesh_edit.cpp, detail/mesh_segment.cpp);
-//   4. the TIN read off the mesh in canonical order (detail/mesh_to_tin.cpp); the domain:
+//   4. the TIN: the kernel's triangle array itself without constraints (detail/ghost_mesh.cpp),
+//      else read off the mesh in canonical order (detail/mesh_to_tin.cpp); the domain:
 //      outside the boundary, holes and long border triangles removed (detail/tin_build.cpp,
 //      detail/tin_finish.cpp).
 // Soft breakline vertices take their heights from the surface built without them (a first pass

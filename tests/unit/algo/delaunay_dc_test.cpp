@@ -117,7 +117,9 @@ void check_structure(const GhostMesh& m, std::size_t n, bool collinear)
         }
     }
     EXPECT_EQ(unused, 2u);
-    if (collinear) EXPECT_EQ(real, 0u);
+    if (collinear) {
+        EXPECT_EQ(real, 0u);
+    }
     // The hull: a closed cycle of ghosts through every ghost triangle.
     ASSERT_NE(some_ghost_base, no_half_edge);
     std::size_t hull = 0;

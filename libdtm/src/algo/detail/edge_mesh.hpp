@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 /// @file
 /// @brief Half-edge mesh in the style of Guibas and Stolfi's quad-edge, without the dual: the
-/// working structure of the triangulation kernel.
+/// working structure of constraint insertion and point location, made from the Delaunay
+/// kernel's triangles (ghost_mesh.hpp, ghost_mesh_to_edge_mesh).
 ///
 /// Directed edges come in pairs: e and sym(e) = e ^ 1 are the two directions of one undirected
 /// edge (index e >> 1). For each directed edge we keep its origin vertex and the next and previous
@@ -48,9 +49,9 @@ enum ConstraintBits : std::uint8_t {
 
 /// Allocator of undirected edge slots: a never-used range [next, end) and a free list of
 /// released slots (LIFO), threaded through the slots themselves (see EdgeMesh::release_slot).
-/// Each subtree of the divide and conquer owns one over its own range [3 lo, 3 hi), whether it
-/// runs as a parallel task or not, so the slot of every edge (and with it the order in which the
-/// TIN is read off the mesh) is the same for every tile and thread count.
+/// The kernel's edges take the first slots, in the order of its triangles, which is the same
+/// for every tile and thread count; so is the order of every later allocation (constraint
+/// insertion is deterministic), and with it the order in which the TIN is read off the mesh.
 struct EdgeSlots {
     EdgeId next = 0;  ///< next never-used undirected slot
     EdgeId end = 0;   ///< one past the last slot of the range
@@ -109,24 +110,6 @@ struct EdgeMesh {
         if (slots.free_head == no_edge) slots.free_tail = s;
         slots.free_head = s;
         ++slots.free_count;
-    }
-
-    /// Moves every slot @p other can still hand out (free list and never-used range) to the end
-    /// of @p into's free list; @p other is left empty.
-    void absorb_slots(EdgeSlots& into, EdgeSlots& other) noexcept
-    {
-        for (EdgeId s = other.end; s > other.next; --s) release_slot(other, s - 1);
-        other.next = other.end;
-        if (other.free_head == no_edge) return;
-        if (into.free_head == no_edge) {
-            into.free_head = other.free_head;
-        } else {
-            oprev[2 * into.free_tail + 1] = other.free_head;
-        }
-        into.free_tail = other.free_tail;
-        into.free_count += other.free_count;
-        other.free_head = other.free_tail = no_edge;
-        other.free_count = 0;
     }
 
     EdgeId make_edge(EdgeSlots& slots, VertexId a, VertexId b)

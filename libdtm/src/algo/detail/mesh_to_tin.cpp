@@ -4,11 +4,12 @@
 // canonical order.
 //
 // Canonical order: triangles in the order of their canonical edge's slot, the canonical edge being
-// the one out of the triangle's smallest vertex. Every subtree of the divide and conquer
-// allocates its edges in its own slot range, and constraint insertion is deterministic, so slot
+// the one out of the triangle's smallest vertex. The kernel's edges have their slots in the order
+// of the kernel's triangles (ghost_mesh.cpp), and constraint insertion is deterministic, so slot
 // order depends on the input only (never on threads or tiles; see delaunay_dc.cpp and
 // constraint_batch.cpp), and it follows the recursion, so it is spatially coherent: each pass
-// below reads the mesh almost sequentially.
+// below reads the mesh almost sequentially. (Without constraints the TIN is the kernel's triangle
+// array itself: ghost_mesh_to_tin.)
 //
 //   1. one pass over the slots collects the canonical edges per block of slots (branch-free: one
 //      candidate direction per slot); the outer face is recognised by walking it once from a
