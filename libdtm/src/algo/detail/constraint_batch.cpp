@@ -203,12 +203,23 @@ void insert_segments(MeshEditor& editor, const EdgeMesh& mesh,
         std::vector<MeshEditor::SegmentPlan> plans;
         std::vector<char> applied;
         std::vector<std::uint32_t> next;
+        std::vector<std::uint64_t> order;  ///< (smaller endpoint, k) of the window, sorted
         std::size_t first = 0;  // pending[first..] are not yet inserted
         while (first < pending.size()) {
             const std::size_t window = std::min(window_size, pending.size() - first);
             plans.assign(window, {});
             applied.assign(window, 0);
-            tbb::parallel_for(std::size_t{0}, window, [&](std::size_t k) {
+            // The window in mesh order, so that each thread takes a run of nearby segments and
+            // the threads do not write the same cache lines of the mesh (the priorities, which
+            // decide the outcome, stay the window indices k).
+            order.resize(window);
+            for (std::size_t k = 0; k < window; ++k) {
+                const InputSegment& s = segments[pending[first + k]];
+                order[k] = (std::uint64_t{std::min(s.a, s.b)} << 32) | k;
+            }
+            std::sort(order.begin(), order.end());
+            tbb::parallel_for(std::size_t{0}, window, [&](std::size_t at) {
+                const auto k = static_cast<std::uint32_t>(order[at]);
                 const InputSegment& s = segments[pending[first + k]];
                 plans[k] = editor.plan_segment(s.a, s.b);
                 if (plans[k].crosses_constraint) return;
@@ -219,7 +230,8 @@ void insert_segments(MeshEditor& editor, const EdgeMesh& mesh,
                     }
                 }
             });
-            tbb::parallel_for(std::size_t{0}, window, [&](std::size_t k) {
+            tbb::parallel_for(std::size_t{0}, window, [&](std::size_t at) {
+                const auto k = static_cast<std::uint32_t>(order[at]);
                 if (plans[k].crosses_constraint) return;
                 for (const VertexId v : plans[k].vertices) {
                     if (reserve[v].load(std::memory_order_relaxed) != k) return;
