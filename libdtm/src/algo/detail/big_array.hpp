@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <new>
 #include <type_traits>
 #include <utility>
@@ -17,6 +18,8 @@
 #if defined(__linux__)
 #include <sys/mman.h>
 #endif
+
+#include <tbb/parallel_for.h>
 
 namespace dtm::detail {
 
@@ -91,6 +94,22 @@ void reserve_huge(std::vector<T>& v, std::size_t n)
         madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE);
     }
 #endif
+}
+
+/// Touches the reserved, not yet used storage of @p v (one byte per 4 KiB page) on all threads,
+/// before a std::vector's resize initialises it on one: the page faults (on a virtual machine
+/// also the host's first touch of guest memory) are most of the cost of a fresh large array, and
+/// they are spread over the threads this way. The kernel's 480 MB triangle array of 10^7 points,
+/// two threads: 0.65-0.69 s to resize without, 0.28-0.60 s with.
+template <class T>
+void prefault_in_parallel(std::vector<T>& v)
+{
+    constexpr std::size_t page = 4096;
+    auto* const begin = reinterpret_cast<unsigned char*>(v.data() + v.size());
+    const std::size_t bytes = (v.capacity() - v.size()) * sizeof(T);
+    tbb::parallel_for(std::size_t{0}, (bytes + page - 1) / page, [&](std::size_t i) {
+        std::memset(begin + i * page, 0, 1);
+    });
 }
 
 }  // namespace dtm::detail

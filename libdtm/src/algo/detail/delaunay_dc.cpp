@@ -440,6 +440,7 @@ void delaunay_divide_and_conquer(BigArray<KernelPoint>& points, GhostMesh& mesh,
     if (n >= 2) {
         // Every slot starts as "unused" (all corners ghost); the root leaves two of them.
         reserve_huge(mesh.tris, 2 * n);
+        prefault_in_parallel(mesh.tris);
         mesh.tris.resize(2 * n);
         Builder builder(points, mesh, options, progress);
         builder.split(0, n, 0, n + 1);
