@@ -282,9 +282,15 @@ void rings_from_surface(TerrainInput& t, std::vector<std::string>& warnings)
                        " boundary/hole vertices without height took the height of the surface");
 }
 
+/// Moves @p from to the end of @p to; the first input's array is taken over, not copied (a
+/// copy of the points would be the peak of reading).
 template <class T>
 void append(std::vector<T>& to, std::vector<T>& from)
 {
+    if (to.empty()) {
+        std::swap(to, from);
+        return;
+    }
     to.insert(to.end(), std::make_move_iterator(from.begin()), std::make_move_iterator(from.end()));
 }
 

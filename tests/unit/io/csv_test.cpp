@@ -1,16 +1,18 @@
 // SPDX-License-Identifier: MIT
-// Delimited text reader: layout detection, located errors, polyline lists, real PDAL variants.
+// Delimited text reader: layout detection, located errors, polyline lists, reading in blocks and
+// parsing in parallel chunks (against the one-block sequential pass), real PDAL variants.
 #include "dtm/io/formats/csv.hpp"
 
 #include <gtest/gtest.h>
 #include <tbb/task_arena.h>
 
 #include <algorithm>
-
 #include <cmath>
+#include <cstring>
 #include <string>
 
 #include "dtm/core/error.hpp"
+#include "io/formats/csv_detail.hpp"
 #include "support/test_support.hpp"
 
 namespace {
@@ -19,6 +21,7 @@ using dtm::io::InputFile;
 using dtm::io::InputRole;
 using dtm::io::LoadOptions;
 using dtm::io::ReadResult;
+using dtm::io::csv::Cuts;
 
 ReadResult read(const std::filesystem::path& path, InputRole role = InputRole::points,
                 LoadOptions options = {})
@@ -217,10 +220,58 @@ std::string large_point_list(const std::vector<std::size_t>& bad_lines)
     return text;
 }
 
-ReadResult parse_with_threads(std::string_view text, int threads, LoadOptions options)
+/// Cuts small enough for the 12 MB list to span about 50 blocks of 16 chunks each.
+constexpr Cuts small_cuts{std::size_t{256} << 10, std::size_t{16} << 10};
+
+ReadResult parse_with_threads(std::string_view text, int threads, LoadOptions options,
+                              Cuts cuts = {}, InputRole role = InputRole::points)
 {
     tbb::task_arena arena(threads);
-    return arena.execute([&] { return parse(text, InputRole::points, options); });
+    return arena.execute([&] {
+        return dtm::io::csv::parse_csv_text(text, InputFile{"mem.csv", role}, options, {}, cuts);
+    });
+}
+
+std::string error_with_threads(std::string_view text, int threads, Cuts cuts)
+{
+    try {
+        (void)parse_with_threads(text, threads, {}, cuts);
+    } catch (const dtm::InputError& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
+
+bool same_points(const std::vector<dtm::Point3>& a, const std::vector<dtm::Point3>& b)
+{
+    return a.size() == b.size() &&
+           (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(dtm::Point3)) == 0);
+}
+
+void expect_same_lines(const std::vector<dtm::Polyline>& a, const std::vector<dtm::Polyline>& b)
+{
+    ASSERT_EQ(a.size(), b.size());
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        EXPECT_TRUE(same_points(a[i].points, b[i].points)) << "line " << i;
+        EXPECT_EQ(a[i].closed, b[i].closed) << "line " << i;
+        EXPECT_EQ(a[i].source, b[i].source) << "line " << i;
+    }
+}
+
+/// Everything a read gives: the points bit for bit, labels, lines, seeds, counts and warnings.
+void expect_same(const ReadResult& a, const ReadResult& b)
+{
+    EXPECT_TRUE(same_points(a.terrain.points, b.terrain.points));
+    EXPECT_EQ(a.labels.ids, b.labels.ids);
+    EXPECT_EQ(a.labels.codes, b.labels.codes);
+    expect_same_lines(a.terrain.breaklines, b.terrain.breaklines);
+    expect_same_lines(a.terrain.soft_breaklines, b.terrain.soft_breaklines);
+    expect_same_lines(a.terrain.boundaries, b.terrain.boundaries);
+    expect_same_lines(a.terrain.holes, b.terrain.holes);
+    EXPECT_EQ(a.terrain.hole_seeds, b.terrain.hole_seeds);
+    EXPECT_EQ(a.summary.skipped_lines, b.summary.skipped_lines);
+    EXPECT_EQ(a.summary.warnings, b.summary.warnings);
+    EXPECT_EQ(a.crs_wkt, b.crs_wkt);
 }
 
 TEST(CsvReader, LargeFileParsedInParallelEqualsTheSequentialPass)
@@ -229,37 +280,218 @@ TEST(CsvReader, LargeFileParsedInParallelEqualsTheSequentialPass)
     skip.skip_bad_lines = true;
     const std::string text = large_point_list({5, 90001, 180002, 250003});
     const ReadResult one = parse_with_threads(text, 1, skip);
-    const ReadResult two = parse_with_threads(text, 2, skip);
     ASSERT_GT(one.terrain.points.size(), 200000u);
-    ASSERT_EQ(one.terrain.points.size(), two.terrain.points.size());
-    for (std::size_t i = 0; i < one.terrain.points.size(); ++i) {
-        ASSERT_EQ(one.terrain.points[i].x, two.terrain.points[i].x) << "point " << i;
-        ASSERT_EQ(one.terrain.points[i].y, two.terrain.points[i].y) << "point " << i;
-        ASSERT_EQ(one.terrain.points[i].z, two.terrain.points[i].z) << "point " << i;
-    }
-    EXPECT_EQ(one.labels.ids, two.labels.ids);
-    EXPECT_EQ(one.labels.codes, two.labels.codes);
     EXPECT_EQ(one.summary.skipped_lines, 4u);
-    EXPECT_EQ(two.summary.skipped_lines, 4u);
-    EXPECT_EQ(one.summary.warnings, two.summary.warnings);
-    ASSERT_EQ(two.summary.warnings.size(), 4u);
-    EXPECT_NE(two.summary.warnings[3].find("skipped line 250003:"), std::string::npos)
-        << two.summary.warnings[3];
+    ASSERT_EQ(one.summary.warnings.size(), 4u);
+    EXPECT_NE(one.summary.warnings[3].find("skipped line 250003:"), std::string::npos)
+        << one.summary.warnings[3];
+    // One block in chunks; many blocks read one after the other; many blocks in chunks.
+    for (const auto& [threads, cuts] : {std::pair{2, Cuts{}}, std::pair{1, small_cuts},
+                                        std::pair{2, small_cuts}}) {
+        SCOPED_TRACE(std::to_string(threads) + " threads, blocks of " +
+                     std::to_string(cuts.block_bytes));
+        expect_same(one, parse_with_threads(text, threads, skip, cuts));
+    }
+}
+
+TEST(CsvReader, LargeFileReadInBlocksKeepsTheFirstTwentyWarningsInFileOrder)
+{
+    LoadOptions skip;
+    skip.skip_bad_lines = true;
+    std::vector<std::size_t> bad;
+    for (std::size_t line = 7; line < 250000; line += 8000) bad.push_back(line);
+    const std::string text = large_point_list(bad);
+    const ReadResult one = parse_with_threads(text, 1, skip);
+    EXPECT_EQ(one.summary.skipped_lines, bad.size());
+    ASSERT_EQ(one.summary.warnings.size(), 20u);
+    EXPECT_NE(one.summary.warnings[19].find("skipped line 152007:"), std::string::npos)
+        << one.summary.warnings[19];
+    expect_same(one, parse_with_threads(text, 2, skip, small_cuts));
 }
 
 TEST(CsvReader, LargeFileParsedInParallelReportsTheFirstBadLine)
 {
-    // Bad rows in a late chunk and an early one: the error names the earlier line.
-    const std::string text = large_point_list({240001, 120007});
-    for (const int threads : {1, 2}) {
-        try {
-            (void)parse_with_threads(text, threads, {});
-            ADD_FAILURE() << "no error with " << threads << " threads";
-        } catch (const dtm::InputError& e) {
-            EXPECT_NE(std::string(e.what()).find("mem.csv:120007:"), std::string::npos)
-                << threads << " threads: " << e.what();
+    // Bad rows in a late chunk and an early one, then in two chunks of one small block: the
+    // error names the earlier line.
+    for (const auto& [bad, first] : {std::pair{std::vector<std::size_t>{240001, 120007}, 120007},
+                                     std::pair{std::vector<std::size_t>{120900, 120007}, 120007}}) {
+        const std::string text = large_point_list(bad);
+        const std::string expected = "mem.csv:" + std::to_string(first) + ":";
+        for (const int threads : {1, 2}) {
+            for (const Cuts& cuts : {Cuts{}, small_cuts}) {
+                const std::string what = error_with_threads(text, threads, cuts);
+                EXPECT_NE(what.find(expected), std::string::npos)
+                    << threads << " threads, blocks of " << cuts.block_bytes << ": " << what;
+            }
         }
     }
+}
+
+TEST(CsvReader, ProgressOfABlockwiseReadReachesTheEnd)
+{
+    const std::string text = large_point_list({});
+    double last = 0.0;
+    bool in_range = true;
+    const dtm::Progress progress([&](double fraction, std::string_view) {
+        in_range = in_range && fraction >= 0.0 && fraction <= 1.0;
+        last = std::max(last, fraction);
+        return true;
+    });
+    tbb::task_arena arena(2);
+    arena.execute([&] {
+        (void)dtm::io::csv::parse_csv_text(text, InputFile{"mem.csv", InputRole::points}, {},
+                                           progress, small_cuts);
+    });
+    EXPECT_TRUE(in_range);
+    EXPECT_GT(last, 0.9);
+}
+
+/// A small headerless-or-not list with what a cut could break: a BOM, a comment, CRLF ends,
+/// blank and comment lines, a row and a comment far longer than the small blocks, a bad row, and
+/// no line end at the end. @p head comes first (after the BOM if @p bom).
+std::string tricky_list(const std::string& head, bool bom)
+{
+    std::string text = (bom ? "\xEF\xBB\xBF" : "") + head;
+    for (int i = 0; i < 60; ++i) {
+        const std::string id = std::to_string(100 + i);
+        if (i == 25) {
+            text += id + " 1.5 2.5 oops C\r\n";
+        } else if (i % 11 == 3) {
+            text += "\r\n";
+        } else if (i % 13 == 5) {
+            text += i == 31 ? "# " + std::string(5000, 'n') + "\r\n" : "// note\r\n";
+        } else {
+            text += id + " " + std::to_string(i) + ".25 " + std::to_string(2 * i) + ".5 " +
+                    std::to_string(300 + i) + " " + (i == 40 ? std::string(3000, 'c') : "C") +
+                    "\r\n";
+        }
+    }
+    return text + "199 9.25 8.5 7 last";
+}
+
+TEST(CsvReader, BlocksAndChunksCutAnywhereGiveTheOnePassResult)
+{
+    LoadOptions skip;
+    skip.skip_bad_lines = true;
+    // A header; no header after a BOM (data from byte 3); a point-count line.
+    for (const std::string& text : {tricky_list("# survey\r\nid x y z code\r\n", true),
+                                    tricky_list("", true), tricky_list("61\n", false)}) {
+        const ReadResult one = parse_with_threads(text, 1, skip);
+        ASSERT_EQ(one.terrain.points.size(), 50u);
+        ASSERT_EQ(one.summary.skipped_lines, 1u);
+        ASSERT_EQ(one.labels.codes.back(), "last");
+        const std::string error = error_with_threads(text, 1, {});
+        ASSERT_NE(error.find("expected a number for"), std::string::npos) << error;
+        for (const std::size_t block : {1, 2, 5, 16, 100, 1000, 4000}) {
+            for (const std::size_t chunk : {1, 7, 64}) {
+                for (const int threads : {1, 2}) {
+                    SCOPED_TRACE("blocks of " + std::to_string(block) + ", chunks of " +
+                                 std::to_string(chunk) + ", " + std::to_string(threads) +
+                                 " threads");
+                    expect_same(one, parse_with_threads(text, threads, skip, Cuts{block, chunk}));
+                    EXPECT_EQ(error, error_with_threads(text, threads, Cuts{block, chunk}));
+                }
+            }
+        }
+    }
+}
+
+TEST(CsvReader, PolylinesAndSeedsReadInBlocksGiveTheOnePassResult)
+{
+    const std::string by_id = "shapeid,x,y,z\n1,0,0,1\n1,5,0,2\n1,5,5,3\n1,0,0,1\n\n2,7,7,1\n"
+                              "2,8,9,2\n# comment\n3,1,1,1\n3,2,2,2\n3,3,1,3\n4,9,9,9\n";
+    const std::string by_blank = "0 0 1\n10 0 1\n10 10 1\n\n20 20 2\n30 20 2\n30 30 2\n\n\n"
+                                 "40 40 4\n50 40 4\n";
+    const std::string seeds = "10.5,20.5\n30,40\n\n50,60\n";
+    for (const auto& [text, role] :
+         {std::pair{by_id, InputRole::breaklines}, std::pair{by_id, InputRole::boundary},
+          std::pair{by_blank, InputRole::boundary}, std::pair{by_blank, InputRole::soft_breaklines},
+          std::pair{seeds, InputRole::holes}}) {
+        const ReadResult one = parse_with_threads(text, 1, {}, {}, role);
+        for (const std::size_t block : {1, 3, 17, 64}) {
+            SCOPED_TRACE("blocks of " + std::to_string(block));
+            expect_same(one, parse_with_threads(text, 2, {}, Cuts{block, 1}, role));
+        }
+    }
+}
+
+TEST(CsvReader, FileReadInBlocksEqualsTheTextInMemory)
+{
+    const std::string text = tricky_list("# survey\r\nid x y z code\r\n", true);
+    dtm::test::ScratchDir dir;
+    dtm::test::write_file(dir / "tricky.xyz", text);
+    LoadOptions skip;
+    skip.skip_bad_lines = true;
+    const InputFile file{dir / "tricky.xyz", InputRole::points};
+    const ReadResult whole = dtm::io::read_csv(file, skip);
+    const ReadResult in_memory = parse(text, InputRole::points, skip);
+    EXPECT_EQ(whole.terrain.points.size(), 50u);
+    EXPECT_TRUE(same_points(whole.terrain.points, in_memory.terrain.points));
+    EXPECT_EQ(whole.labels.ids, in_memory.labels.ids);
+    for (const std::size_t block : {1, 64, 1000}) {
+        SCOPED_TRACE("blocks of " + std::to_string(block));
+        expect_same(whole, dtm::io::csv::read_csv(file, skip, {}, Cuts{block, 64}));
+    }
+}
+
+/// Reads @p text, at most @p most bytes a call.
+dtm::io::csv::Blocks::Fill fill_from(const std::string& text, std::size_t most)
+{
+    return [&text, most, at = std::size_t{0}](char* to, std::size_t bytes) mutable {
+        const std::size_t n = std::min({bytes, most, text.size() - at});
+        std::copy_n(text.data() + at, n, to);
+        at += n;
+        return n;
+    };
+}
+
+/// The input in blocks of @p block bytes, read @p most bytes at a time.
+std::vector<std::string> blocks_of(const std::string& text, std::size_t block, std::size_t most)
+{
+    dtm::io::csv::Blocks blocks(fill_from(text, most), block, 0);
+    std::vector<std::string> out;
+    std::size_t offset = 0;
+    for (std::string_view b = blocks.next(); !b.empty(); b = blocks.next()) {
+        EXPECT_EQ(blocks.offset(), offset);
+        EXPECT_TRUE(blocks.at_end() || b.back() == '\n') << "a block cut inside a line";
+        offset += b.size();
+        out.emplace_back(b);
+    }
+    EXPECT_TRUE(blocks.at_end());
+    return out;
+}
+
+TEST(CsvBlocks, BlocksEndAtLineEndsGrowForLongLinesAndAddUpToTheInput)
+{
+    const std::string text = "a\nbb\n" + std::string(50, 'x') + "\n\nccc\r\nd";
+    for (std::size_t block = 1; block <= 12; ++block) {
+        for (const std::size_t most : {std::size_t{1}, std::size_t{3}, text.size()}) {
+            const std::vector<std::string> blocks = blocks_of(text, block, most);
+            std::string joined;
+            for (const std::string& b : blocks) joined += b;
+            EXPECT_EQ(joined, text) << "blocks of " << block << ", reads of " << most;
+            const std::string long_line = "\n" + std::string(50, 'x') + "\n";
+            EXPECT_TRUE(std::any_of(blocks.begin(), blocks.end(), [&](const std::string& b) {
+                return ("\n" + b).find(long_line) != std::string::npos;
+            })) << "the long line split";
+        }
+    }
+    EXPECT_EQ(blocks_of("", 4, 4).size(), 0u);
+    EXPECT_EQ(blocks_of("no line end", 4, 4), std::vector<std::string>{"no line end"});
+}
+
+TEST(CsvBlocks, ExtendAddsTheFollowingLines)
+{
+    const std::string text = "1\n22\n333\n4444\n";
+    dtm::io::csv::Blocks blocks(fill_from(text, text.size()), 4, text.size());
+    EXPECT_EQ(blocks.next(), "1\n");
+    EXPECT_EQ(blocks.extend(), "1\n22\n");
+    EXPECT_EQ(blocks.extend(), "1\n22\n333\n");
+    EXPECT_FALSE(blocks.at_end());
+    EXPECT_EQ(blocks.extend(), text);
+    EXPECT_TRUE(blocks.at_end());
+    EXPECT_EQ(blocks.extend(), text);
+    EXPECT_TRUE(blocks.next().empty());
 }
 
 TEST(CsvReader, PolylinesGroupedByShapeIdClosingRepeatedFirstVertex)

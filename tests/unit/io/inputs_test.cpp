@@ -105,6 +105,29 @@ TEST(LoadInputs, InputsInAnotherCrsGoIntoTheFirstOnes)
     EXPECT_EQ(dtm::io::crs_label(loaded.crs_wkt), "EPSG:32633");
 }
 
+TEST(LoadInputs, LabelsStayParallelToThePointsWhicheverInputHasThem)
+{
+    // The first input's arrays are taken over, the later ones appended.
+    dtm::test::ScratchDir dir;
+    dtm::test::write_file(dir / "plain.csv", "x,y,z\n1,2,3\n4,5,6\n");
+    dtm::test::write_file(dir / "named.csv", "id,x,y,z,code\nA,7,8,9,k\n");
+    for (const bool named_first : {false, true}) {
+        const char* first = named_first ? "named.csv" : "plain.csv";
+        const char* second = named_first ? "plain.csv" : "named.csv";
+        const auto loaded = dtm::io::load_inputs(
+            files({{dir / first, InputRole::points}, {dir / second, InputRole::points}}));
+        ASSERT_EQ(loaded.terrain.points.size(), 3u);
+        ASSERT_EQ(loaded.labels.ids.size(), 3u);
+        ASSERT_EQ(loaded.labels.codes.size(), 3u);
+        const std::size_t named = named_first ? 0 : 2;
+        EXPECT_EQ(loaded.terrain.points[named].x, 7.0);
+        EXPECT_EQ(loaded.labels.ids[named], "A");
+        EXPECT_EQ(loaded.labels.codes[named], "k");
+        EXPECT_EQ(loaded.labels.ids[named_first ? 2 : 0], "");
+        EXPECT_EQ(loaded.terrain.points[named_first ? 1 : 0].x, 1.0);
+    }
+}
+
 TEST(LoadInputs, TwoDimensionalHardBreaklineTakesHeightsOfCoincidentPointsOrFails)
 {
     dtm::test::ScratchDir dir;

@@ -160,6 +160,9 @@ int column_of(const Layout& layout, Field f) noexcept
 
 namespace {
 
+/// How many data lines detection looks at (a point-count line, if any, is the first of them).
+constexpr std::size_t sample_size = 21;
+
 struct SampleLine {
     std::string_view text;
     std::size_t number = 0;
@@ -298,10 +301,15 @@ void check_header_fields(Layout& layout, const std::vector<Cell>& cells, const s
 
 }  // namespace
 
+bool holds_layout_sample(std::string_view text)
+{
+    return sample_lines(text, sample_size).size() == sample_size;
+}
+
 Layout detect_layout(std::string_view text, const std::string& file, const std::string& columns,
                      bool polyline)
 {
-    std::vector<SampleLine> sample = sample_lines(text, 21);
+    std::vector<SampleLine> sample = sample_lines(text, sample_size);
     if (sample.empty()) fail(file, 0, 0, "expected data lines, found an empty file");
     Layout layout;
     std::size_t first = 0;
@@ -328,7 +336,8 @@ Layout detect_layout(std::string_view text, const std::string& file, const std::
     const bool header = bad_first > 0 &&
                         (named || (rows.size() > 1 &&
                                    non_numbers(rows[1], layout.decimal_comma) < bad_first));
-    layout.data_offset = first > 0 ? sample_lines(text, 1).front().end_offset : 0;
+    layout.data_offset = first > 0 ? sample_lines(text, 1).front().end_offset
+                                   : LineCursor(text).offset();
     layout.data_line = first > 0 ? layout.count_line : 0;
     if (header) {
         layout.header_line = sample[0].number;
