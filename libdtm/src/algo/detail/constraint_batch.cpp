@@ -145,6 +145,29 @@ std::vector<bool> find_free_segments(const EdgeMesh& m, const std::vector<InputS
     return free;
 }
 
+namespace {
+
+/// The indices of @p key in about ascending order of key: a counting sort on the keys' upper
+/// bits, at most 4096 buckets over the window's range (nearby is all the order is for).
+void order_by_key(const std::vector<std::uint32_t>& key, std::vector<std::uint32_t>& order,
+                  std::vector<std::uint32_t>& count)
+{
+    const auto [lo, hi] = std::minmax_element(key.begin(), key.end());
+    const std::uint32_t min = key.empty() ? 0 : *lo;
+    const std::uint32_t range = key.empty() ? 0 : *hi - min;
+    unsigned shift = 0;
+    while ((range >> shift) >= 4096) ++shift;
+    count.assign((range >> shift) + 2, 0);
+    for (const std::uint32_t k : key) ++count[((k - min) >> shift) + 1];
+    for (std::size_t b = 1; b < count.size(); ++b) count[b] += count[b - 1];
+    order.resize(key.size());
+    for (std::size_t i = 0; i < key.size(); ++i) {
+        order[count[(key[i] - min) >> shift]++] = static_cast<std::uint32_t>(i);
+    }
+}
+
+}  // namespace
+
 void insert_segments(MeshEditor& editor, const EdgeMesh& mesh,
                      const std::vector<InputSegment>& segments, const Progress& progress)
 {
@@ -203,25 +226,27 @@ void insert_segments(MeshEditor& editor, const EdgeMesh& mesh,
         std::vector<MeshEditor::SegmentPlan> plans;
         std::vector<char> applied;
         std::vector<std::uint32_t> next;
-        std::vector<std::uint64_t> order;  ///< (smaller endpoint, k) of the window, sorted
+        std::vector<std::uint32_t> key;    ///< per window entry: its smaller endpoint
+        std::vector<std::uint32_t> order;  ///< the window entries by key (about)
+        std::vector<std::uint32_t> count;
         std::size_t first = 0;  // pending[first..] are not yet inserted
         while (first < pending.size()) {
             const std::size_t window = std::min(window_size, pending.size() - first);
-            plans.assign(window, {});
+            if (plans.size() < window) plans.resize(window);  // reused: each plan is refilled
             applied.assign(window, 0);
             // The window in mesh order, so that each thread takes a run of nearby segments and
             // the threads do not write the same cache lines of the mesh (the priorities, which
             // decide the outcome, stay the window indices k).
-            order.resize(window);
+            key.resize(window);
             for (std::size_t k = 0; k < window; ++k) {
                 const InputSegment& s = segments[pending[first + k]];
-                order[k] = (std::uint64_t{std::min(s.a, s.b)} << 32) | k;
+                key[k] = std::min(s.a, s.b);
             }
-            std::sort(order.begin(), order.end());
+            order_by_key(key, order, count);
             tbb::parallel_for(std::size_t{0}, window, [&](std::size_t at) {
-                const auto k = static_cast<std::uint32_t>(order[at]);
+                const std::uint32_t k = order[at];
                 const InputSegment& s = segments[pending[first + k]];
-                plans[k] = editor.plan_segment(s.a, s.b);
+                editor.plan_segment(s.a, s.b, plans[k]);
                 if (plans[k].crosses_constraint) return;
                 for (const VertexId v : plans[k].vertices) {
                     std::uint32_t cur = reserve[v].load(std::memory_order_relaxed);
@@ -231,7 +256,7 @@ void insert_segments(MeshEditor& editor, const EdgeMesh& mesh,
                 }
             });
             tbb::parallel_for(std::size_t{0}, window, [&](std::size_t at) {
-                const auto k = static_cast<std::uint32_t>(order[at]);
+                const std::uint32_t k = order[at];
                 if (plans[k].crosses_constraint) return;
                 for (const VertexId v : plans[k].vertices) {
                     if (reserve[v].load(std::memory_order_relaxed) != k) return;

@@ -58,14 +58,18 @@ public:
         std::vector<EdgeId> left_chain;       ///< cavity boundary left of it, to -> from
     };
     /// The whole insertion of a segment, planned on the current mesh without changing it.
+    /// Filled again for every segment: the vectors keep their memory (no allocation per plan in
+    /// the parallel rounds once the plans have grown).
     struct SegmentPlan {
-        std::vector<PiecePlan> pieces;
+        std::vector<PiecePlan> pieces;   ///< the first piece_count are this plan's
+        std::size_t piece_count = 0;
         std::vector<VertexId> vertices;  ///< every vertex whose edges the insertion changes
         bool crosses_constraint = false; ///< must go through insert_segment instead
     };
 
-    /// Read-only: plans the insertion of a-b. Safe to call from several threads at once.
-    [[nodiscard]] SegmentPlan plan_segment(VertexId a, VertexId b) const;
+    /// Read-only: plans the insertion of a-b into @p plan. Safe to call from several threads at
+    /// once (with different plans).
+    void plan_segment(VertexId a, VertexId b, SegmentPlan& plan) const;
     /// Applies a plan made on the current mesh, allocating edges from @p slots (the plan's own
     /// deleted edges suffice). Plans whose vertex sets are disjoint may be applied concurrently.
     void apply_segment(const SegmentPlan& plan, std::uint8_t bits, EdgeSlots& slots);
@@ -98,7 +102,7 @@ private:
     void delete_edge(EdgeId e, EdgeSlots& slots);
     void flip(EdgeId e);
     void legalize(EdgeId e);
-    [[nodiscard]] PiecePlan plan_piece(VertexId u, VertexId w) const;
+    void plan_piece(VertexId u, VertexId w, PiecePlan& plan) const;
     void apply_piece(const PiecePlan& plan, std::uint8_t bits, EdgeSlots& slots);
     void insert_piece(const Work& work, std::vector<Work>& stack);
     void cross_constraint(VertexId u, VertexId w, std::uint8_t bits, EdgeId f,
@@ -111,6 +115,7 @@ private:
     double z_tolerance_;
     std::vector<EdgeId> vertex_edge_;
     std::vector<Crossing> crossings_;
+    PiecePlan piece_scratch_;  ///< insert_piece's plan, its memory kept from piece to piece
     std::uint64_t rng_ = 0x9e3779b97f4a7c15ull;
 };
 

@@ -21,13 +21,17 @@ bool same_direction(const Point2& a, const Point2& b, const Point2& q)
 
 }  // namespace
 
-MeshEditor::PiecePlan MeshEditor::plan_piece(VertexId u, VertexId w) const
+void MeshEditor::plan_piece(VertexId u, VertexId w, PiecePlan& plan) const
 {
     const EdgeMesh& m = mesh_;
     const auto side = [&](VertexId v) { return orient(u, w, v); };
-    PiecePlan plan;
     plan.from = u;
     plan.to = w;
+    plan.along = no_edge;
+    plan.crossed_constraint = no_edge;
+    plan.crossed.clear();
+    plan.right_chain.clear();
+    plan.left_chain.clear();
 
     // 1. Find the edge along u->w, or the triangle at u that the segment enters.
     const EdgeId start = vertex_edge_[u];
@@ -39,7 +43,7 @@ MeshEditor::PiecePlan MeshEditor::plan_piece(VertexId u, VertexId w) const
         if (side_e == 0 && same_direction(m.p(u), m.p(w), m.p(p))) {
             plan.along = e;
             plan.to = p;
-            return plan;
+            return;
         }
         const EdgeId next = m.onext[e];
         const int side_next = side(m.dest(next));
@@ -59,7 +63,7 @@ MeshEditor::PiecePlan MeshEditor::plan_piece(VertexId u, VertexId w) const
     for (;;) {
         if (m.is_constrained(f)) {
             plan.crossed_constraint = f;
-            return plan;
+            return;
         }
         plan.crossed.push_back(f);
         const EdgeId g = m.oprev[f];  // p -> v, v the apex beyond f
@@ -80,7 +84,7 @@ MeshEditor::PiecePlan MeshEditor::plan_piece(VertexId u, VertexId w) const
         }
     }
     std::reverse(plan.left_chain.begin(), plan.left_chain.end());
-    return plan;
+    return;
 }
 
 void MeshEditor::apply_piece(const PiecePlan& plan, std::uint8_t bits, EdgeSlots& slots)
@@ -101,7 +105,8 @@ void MeshEditor::apply_piece(const PiecePlan& plan, std::uint8_t bits, EdgeSlots
 
 void MeshEditor::insert_piece(const Work& work, std::vector<Work>& stack)
 {
-    const PiecePlan plan = plan_piece(work.a, work.b);
+    PiecePlan& plan = piece_scratch_;
+    plan_piece(work.a, work.b, plan);
     if (plan.crossed_constraint != no_edge) {
         cross_constraint(work.a, work.b, work.bits, plan.crossed_constraint, stack);
         return;
@@ -111,29 +116,32 @@ void MeshEditor::insert_piece(const Work& work, std::vector<Work>& stack)
     if (plan.to != work.b) stack.push_back({plan.to, work.b, work.bits});
 }
 
-MeshEditor::SegmentPlan MeshEditor::plan_segment(VertexId a, VertexId b) const
+void MeshEditor::plan_segment(VertexId a, VertexId b, SegmentPlan& plan) const
 {
-    SegmentPlan plan;
+    plan.piece_count = 0;
+    plan.vertices.clear();
+    plan.crosses_constraint = false;
     VertexId u = a;
     while (u != b) {
-        PiecePlan piece = plan_piece(u, b);
+        if (plan.piece_count == plan.pieces.size()) plan.pieces.emplace_back();
+        PiecePlan& piece = plan.pieces[plan.piece_count];
+        plan_piece(u, b, piece);
         if (piece.crossed_constraint != no_edge) {
             plan.crosses_constraint = true;
-            return plan;
+            return;
         }
+        ++plan.piece_count;
         plan.vertices.push_back(piece.from);
         plan.vertices.push_back(piece.to);
         for (const EdgeId e : piece.right_chain) plan.vertices.push_back(mesh_.dest(e));
         for (const EdgeId e : piece.left_chain) plan.vertices.push_back(mesh_.org[e]);
         u = piece.to;
-        plan.pieces.push_back(std::move(piece));
     }
-    return plan;
 }
 
 void MeshEditor::apply_segment(const SegmentPlan& plan, std::uint8_t bits, EdgeSlots& slots)
 {
-    for (const PiecePlan& piece : plan.pieces) apply_piece(piece, bits, slots);
+    for (std::size_t i = 0; i < plan.piece_count; ++i) apply_piece(plan.pieces[i], bits, slots);
 }
 
 void MeshEditor::fill_cavity(EdgeId first_base, const std::vector<EdgeId>& edges,
@@ -147,7 +155,8 @@ void MeshEditor::fill_cavity(EdgeId first_base, const std::vector<EdgeId>& edges
         std::size_t hi;
     };
     EdgeMesh& m = mesh_;
-    std::vector<Piece> pieces{{first_base, 0, edges.size()}};
+    thread_local std::vector<Piece> pieces;  // apply_segment runs on several threads at once
+    pieces.assign(1, {first_base, 0, edges.size()});
     while (!pieces.empty()) {
         const Piece piece = pieces.back();
         pieces.pop_back();
