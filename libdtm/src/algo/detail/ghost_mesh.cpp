@@ -16,6 +16,12 @@
 
 #include <algorithm>
 #include <bit>
+#include <cstdint>
+#include <utility>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
 
 #include "algo/detail/tin_build.hpp"
 
@@ -32,6 +38,32 @@ void for_block(std::size_t b, std::size_t triangles, const Body& body)
 {
     const std::size_t end = std::min(triangles, (b + 1) * block);
     for (std::size_t t = b * block; t < end; ++t) body(t);
+}
+
+/// Triangles per chunk of the last pass of ghost_mesh_to_edge_mesh: 8 MiB, so that a chunk holds
+/// three or four whole 2 MiB pages to give back.
+constexpr std::size_t release_chunk_triangles = (std::size_t{8} << 20) / sizeof(Triangle);
+
+/// Gives the whole pages inside [begin, end) back to the system (their contents are not needed
+/// any more; the memory stays allocated and reads as zeros). Linux only; elsewhere nothing.
+void release_pages(const Triangle* begin, const Triangle* end)
+{
+#if defined(__linux__)
+    constexpr std::uintptr_t page = std::uintptr_t{2} << 20;
+    const std::uintptr_t first = (reinterpret_cast<std::uintptr_t>(begin) + page - 1) / page * page;
+    const std::uintptr_t last = reinterpret_cast<std::uintptr_t>(end) / page * page;
+    if (last > first) madvise(reinterpret_cast<void*>(first), last - first, MADV_DONTNEED);
+#else
+    (void)begin;
+    (void)end;
+#endif
+}
+
+std::vector<std::size_t> concatenate(const std::vector<std::vector<std::size_t>>& lists)
+{
+    std::vector<std::size_t> all;
+    for (const auto& list : lists) all.insert(all.end(), list.begin(), list.end());
+    return all;
 }
 
 /// @p h runs between two real vertices (one direction of an edge of the triangulation).
@@ -55,9 +87,11 @@ void ghost_mesh_to_edge_mesh(GhostMesh& g, EdgeMesh& m, EdgeSlots& slots)
     // 1. Which half-edges own a slot (bit i of owner[t]), and how many per block.
     BigArray<std::uint8_t> owner(count);
     std::vector<std::size_t> offset(blocks + 1, 0);
+    std::vector<std::vector<std::size_t>> ghosts(blocks);  // few: the hull's and two unused
     tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
         std::size_t owned = 0;
         for_block(b, count, [&](std::size_t t) {
+            if (g.is_ghost(t)) ghosts[b].push_back(t);
             std::uint8_t bits = 0;
             for (unsigned i = 0; i < 3; ++i) {
                 bits |= static_cast<std::uint8_t>(owns_slot(g, half_edge(t, i)) ? 1u << i : 0u);
@@ -69,6 +103,7 @@ void ghost_mesh_to_edge_mesh(GhostMesh& g, EdgeMesh& m, EdgeSlots& slots)
     });
     for (std::size_t b = 0; b < blocks; ++b) offset[b + 1] += offset[b];
     const std::size_t edges = offset[blocks];
+    const std::vector<std::size_t> ghost_slots = concatenate(ghosts);
     m.resize_slots(std::max(edges, 3 * g.points.size()) + 16);
 
     // 2. In place, the twin link of every edge half-edge h becomes the edge mesh's directed edge
@@ -96,22 +131,38 @@ void ghost_mesh_to_edge_mesh(GhostMesh& g, EdgeMesh& m, EdgeSlots& slots)
     });
     owner = {};
     // 3. Origin and the rings around it: the next edge counter-clockwise around org(h) is the
-    // twin of prev(h); past the ghost vertex, of prev(twin(prev(h))).
-    tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
-        for_block(b, count, [&](std::size_t t) {
+    // twin of prev(h); past the ghost vertex, of prev(twin(prev(h))), which lies in another
+    // ghost: those few are looked up first, so that each chunk of triangles reads only itself
+    // and can hand its memory back as soon as it is done (the mesh's fresh pages then reuse it).
+    std::vector<std::pair<HalfEdge, EdgeId>> past_ghost;
+    for (const std::size_t t : ghost_slots) {
+        for (unsigned i = 0; i < 3; ++i) {
+            const HalfEdge h = half_edge(t, i);
+            if (is_edge(g, h)) past_ghost.emplace_back(h, g.twin(prev(g.twin(prev(h)))));
+        }
+    }
+    std::sort(past_ghost.begin(), past_ghost.end());
+    const std::size_t chunk = release_chunk_triangles;
+    tbb::parallel_for(std::size_t{0}, (count + chunk - 1) / chunk, [&](std::size_t c) {
+        const std::size_t end = std::min(count, (c + 1) * chunk);
+        for (std::size_t t = c * chunk; t < end; ++t) {
             for (unsigned i = 0; i < 3; ++i) {
                 const HalfEdge h = half_edge(t, i);
                 if (!is_edge(g, h)) continue;
                 const EdgeId e = g.twin(h) ^ 1u;
-                HalfEdge p = prev(h);
-                if (g.org(p) == ghost) p = prev(g.twin(p));
-                const EdgeId around = g.twin(p);
+                const HalfEdge p = prev(h);
+                const EdgeId around =
+                    g.org(p) != ghost
+                        ? g.twin(p)
+                        : std::lower_bound(past_ghost.begin(), past_ghost.end(),
+                                           std::pair<HalfEdge, EdgeId>{h, 0})->second;
                 m.org[e] = g.org(h);
                 m.onext[e] = around;
                 m.oprev[around] = e;  // onext is a permutation: every entry written once
             }
-        });
-    });
+        }
+        release_pages(g.tris.data() + c * chunk, g.tris.data() + end);
+    }, tbb::simple_partitioner{});
     slots = EdgeSlots{static_cast<EdgeId>(edges), static_cast<EdgeId>(m.slot_count())};
     m.points = std::move(g.points);
     g = GhostMesh{};
@@ -129,8 +180,7 @@ TinDraft ghost_mesh_to_tin(GhostMesh& g, std::vector<Point3> vertices)
             if (g.is_ghost(t)) ghosts[b].push_back(t);
         });
     });
-    std::vector<std::size_t> ghost_slots;
-    for (const auto& list : ghosts) ghost_slots.insert(ghost_slots.end(), list.begin(), list.end());
+    const std::vector<std::size_t> ghost_slots = concatenate(ghosts);
     const std::size_t real = count - ghost_slots.size();
     // 2. Real triangles on the hull lose their link to the ghost.
     for (const std::size_t t : ghost_slots) {
