@@ -172,6 +172,15 @@ MergedInput merge_input(TerrainInput&& input, const TriangulateOptions& options)
     }
     c.points = std::move(input.points);
     input.points = {};
+    // Room for every polyline vertex at once: one copy of the points at most, and no growth
+    // slack that the no-merge path below would have to copy away again.
+    std::size_t line_vertices = 0;
+    for (const auto* lines : {&input.breaklines, &input.boundaries, &input.holes,
+                              &input.soft_breaklines}) {
+        for (const Polyline& line : *lines) line_vertices += line.points.size();
+    }
+    c.points.reserve(c.points.size() + line_vertices);
+    c.z_known.reserve(c.points.size() + line_vertices);
     c.z_known.assign(c.points.size(), true);
     add_polylines(input.breaklines, constraint_breakline, false, "breakline", c);
     add_polylines(input.boundaries, constraint_boundary, true, "boundary", c);

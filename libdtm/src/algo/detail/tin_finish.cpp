@@ -2,6 +2,9 @@
 //
 // Finishing a TinDraft: trimming long border triangles and listing the constraints in sorted
 // order, so that output files are byte-identical whatever the thread or tile count.
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
+
 #include <algorithm>
 
 #include "algo/detail/tin_build.hpp"
@@ -60,24 +63,33 @@ std::size_t trim_long_edges(TinDraft& draft, double max_edge)
 
 void finish_tin(TinDraft& draft)
 {
-    // Triangles are already in canonical order (mesh_to_tin); collect the constraints.
+    // Triangles are already in canonical order; collect the constraints, per block of triangles
+    // in parallel, then sort them by (a, b).
     const std::vector<Triangle>& tris = draft.tin.triangles;
     std::vector<ConstrainedEdge>& constraints = draft.tin.constraints;
     constraints.clear();
-    for (std::size_t t = 0; draft.any_constraint() && t < tris.size(); ++t) {
-        const Triangle& tri = tris[t];
-        const auto& bits = draft.edge_bits[t];
-        for (int j = 0; j < 3; ++j) {
-            if (bits[j] == 0) continue;
-            const VertexIndex a = tri.v[(j + 1) % 3];
-            const VertexIndex b = tri.v[(j + 2) % 3];
-            // An interior edge is seen from both sides: keep it from the side where a < b.
-            if (a < b || tri.n[j] == no_triangle) {
-                constraints.push_back({std::min(a, b), std::max(a, b), kind_of(bits[j])});
+    if (!draft.any_constraint()) return;
+    constexpr std::size_t block = std::size_t{1} << 16;
+    const std::size_t blocks = (tris.size() + block - 1) / block;
+    std::vector<std::vector<ConstrainedEdge>> found(blocks);
+    tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
+        const std::size_t end = std::min(tris.size(), (b + 1) * block);
+        for (std::size_t t = b * block; t < end; ++t) {
+            const Triangle& tri = tris[t];
+            const auto& bits = draft.edge_bits[t];
+            for (int j = 0; j < 3; ++j) {
+                if (bits[j] == 0) continue;
+                const VertexIndex a = tri.v[(j + 1) % 3];
+                const VertexIndex c = tri.v[(j + 2) % 3];
+                // An interior edge is seen from both sides: keep it from the side where a < c.
+                if (a < c || tri.n[j] == no_triangle) {
+                    found[b].push_back({std::min(a, c), std::max(a, c), kind_of(bits[j])});
+                }
             }
         }
-    }
-    std::sort(constraints.begin(), constraints.end(), [](const auto& x, const auto& y) {
+    });
+    for (const auto& list : found) constraints.insert(constraints.end(), list.begin(), list.end());
+    tbb::parallel_sort(constraints.begin(), constraints.end(), [](const auto& x, const auto& y) {
         return x.a < y.a || (x.a == y.a && x.b < y.b);
     });
     draft.edge_bits.clear();
