@@ -76,12 +76,19 @@ std::vector<bool> find_free_segments(const EdgeMesh& m, const std::vector<InputS
     if (count < 2) return free;
     // Uniform grid over the segments' extent, about one cell per segment; each segment is
     // listed in every cell its bounding box covers, and pairs sharing a cell are tested.
+    // The segments' boxes first, in parallel (their endpoints are scattered over the mesh's
+    // points); everything after reads them in order.
+    std::vector<std::array<double, 4>> boxes(count);  // x min, x max, y min, y max
+    tbb::parallel_for(std::size_t{0}, count, [&](std::size_t i) {
+        const Point2 &a = m.p(segments[i].a), &b = m.p(segments[i].b);
+        boxes[i] = {std::min(a.x, b.x), std::max(a.x, b.x), std::min(a.y, b.y), std::max(a.y, b.y)};
+    });
     Box2 box;
     double total_length = 0.0;
-    for (const InputSegment& s : segments) {
-        box.add(m.p(s.a));
-        box.add(m.p(s.b));
-        total_length += std::abs(m.p(s.a).x - m.p(s.b).x) + std::abs(m.p(s.a).y - m.p(s.b).y);
+    for (const auto& [x0, x1, y0, y1] : boxes) {
+        box.add(x0, y0);
+        box.add(x1, y1);
+        total_length += (x1 - x0) + (y1 - y0);
     }
     const double extent = std::max(box.xmax - box.xmin, box.ymax - box.ymin);
     const double cell = std::max({total_length / static_cast<double>(count), extent / 4096.0,
@@ -95,11 +102,9 @@ std::vector<bool> find_free_segments(const EdgeMesh& m, const std::vector<InputS
     // cell in parallel; a flag only ever goes from free to not free, so the order of the writes
     // does not matter.
     const auto cell_range = [&](std::size_t i) {
-        const Point2 &a = m.p(segments[i].a), &b = m.p(segments[i].b);
-        return std::array<std::size_t, 4>{cell_of(std::min(a.x, b.x), box.xmin, cols),
-                                          cell_of(std::max(a.x, b.x), box.xmin, cols),
-                                          cell_of(std::min(a.y, b.y), box.ymin, rows),
-                                          cell_of(std::max(a.y, b.y), box.ymin, rows)};
+        const auto& [x0, x1, y0, y1] = boxes[i];
+        return std::array<std::size_t, 4>{cell_of(x0, box.xmin, cols), cell_of(x1, box.xmin, cols),
+                                          cell_of(y0, box.ymin, rows), cell_of(y1, box.ymin, rows)};
     };
     const std::size_t cells = cols * rows;
     std::vector<std::uint32_t> start(cells + 1, 0);
