@@ -287,6 +287,25 @@ private:
         return {handles(half_edge(t + 1, 0), frame), {t + 4, t + 5}};
     }
 
+    /// Deletes the edge of @p x, a half-edge a -> b of a real triangle (a, b, y) whose twin lies
+    /// in a ghost (b, a, ghost) facing the gap, by flipping it with the ghost vertex: the real
+    /// triangle becomes the ghost (a, ghost, y) and the ghost becomes (b, y, ghost). Half-edges
+    /// x (now a -> ghost) and y -> a keep their places.
+    void delete_by_ghost_flip(HalfEdge x) const noexcept
+    {
+        const HalfEdge x1 = next(x);  // b -> y
+        const HalfEdge g0 = twin(x);  // b -> a
+        const HalfEdge g1 = next(g0); // a -> ghost
+        const VertexId y = org(next(x1));
+        const HalfEdge across = twin(x1);
+        const HalfEdge outer = twin(g1);
+        org(x1) = ghost;
+        org(g1) = y;
+        bond(x, outer);
+        bond(g0, across);
+        bond(x1, g1);
+    }
+
     /// The Guibas-Stolfi merge on triangles. The left half lies before the right one in the
     /// frame of the cut. Returns the base of a ghost on the merged hull.
     ///
@@ -344,18 +363,8 @@ private:
                     const HalfEdge a1 = next(lcand);  // c -> c2 in the triangle left of lcand
                     const VertexId c2 = org(next(a1));
                     if (c2 == ghost || c2 == r || !incircle(l, r, lc, c2)) break;
-                    // Flip l - c with the ghost: (l, c, c2) becomes the ghost (l, ghost, c2)
-                    // and the gap's ghost (c, l, ghost) becomes (c, c2, ghost).
-                    const HalfEdge g0 = twin(lcand);
-                    const HalfEdge g1 = next(g0);
-                    const HalfEdge to_upper = twin(g1);
-                    const HalfEdge across = twin(a1);
-                    org(a1) = ghost;
-                    org(g1) = c2;
-                    bond(lcand, to_upper);
-                    bond(g0, across);
-                    bond(a1, g1);
-                    lcand = twin(prev(lcand));
+                    delete_by_ghost_flip(lcand);
+                    lcand = twin(prev(lcand));  // l -> c2
                     lc = c2;
                     deleted = true;
                 }
@@ -372,16 +381,7 @@ private:
                     const HalfEdge b1 = next(b0);     // r -> d2
                     const VertexId d2 = dest(b1);
                     if (d2 == ghost || d2 == l || !incircle(l, r, rc, d2)) break;
-                    // Flip r - c with the ghost: the gap's ghost (r, c, ghost) becomes
-                    // (r, d2, ghost) and (c, r, d2) becomes the ghost (c, ghost, d2).
-                    const HalfEdge r1 = next(rcand);
-                    const HalfEdge across = twin(b1);
-                    const HalfEdge outer = twin(r1);
-                    org(r1) = d2;
-                    org(b1) = ghost;
-                    bond(rcand, across);
-                    bond(b0, outer);
-                    bond(r1, b1);
+                    delete_by_ghost_flip(b0);  // rcand is now r -> d2
                     rc = d2;
                     deleted = true;
                 }
