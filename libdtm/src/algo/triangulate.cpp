@@ -39,7 +39,7 @@
 namespace dtm {
 namespace {
 
-using detail::EdgeId;
+using detail::HalfEdge;
 using detail::MergedInput;
 
 double seconds_since(std::chrono::steady_clock::time_point start)
@@ -47,20 +47,14 @@ double seconds_since(std::chrono::steady_clock::time_point start)
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-/// The kernel's mesh over a subset of the merged vertices, with the constraints inserted: the
-/// triangles with ghosts as the kernel built them when nothing is inserted or located (the TIN
-/// is read off them in place), else the half-edge mesh made from them.
+/// The kernel's triangles over a subset of the merged vertices, with the constraints inserted.
 struct Kernel {
     detail::GhostMesh triangles;
-    detail::EdgeMesh mesh;
-    detail::EdgeSlots slots;
-    std::vector<double> z;                     ///< per kernel vertex (only with `mesh`)
-    std::vector<VertexIndex> vertex_of_kernel; ///< merged vertex (or new index for added ones); with `mesh`
+    std::vector<double> z;  ///< per kernel vertex (when editable)
     std::vector<detail::Crossing> crossings;
+    std::size_t kernel_count = 0;  ///< vertices before those added at crossings
     double seconds_triangulate = 0.0;
     double seconds_constrain = 0.0;
-
-    [[nodiscard]] bool edited() const noexcept { return !mesh.points.empty(); }
 };
 
 std::size_t parallel_cutoff(std::size_t n, const TriangulateOptions& options)
@@ -107,25 +101,17 @@ Kernel build_kernel(const MergedInput& in, bool with_soft, bool editable,
     dc.parallel_cutoff = parallel_cutoff(points.size(), options);
     const std::size_t kernel_count = points.size();
     detail::delaunay_divide_and_conquer(points, k.triangles, dc, progress.sub(0.0, 0.7));
-    if (editable) {
-        k.vertex_of_kernel.resize(kernel_count);
-        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, kernel_count, 1 << 14),
-                          [&](const auto& r) {
-                              for (std::size_t v = r.begin(); v < r.end(); ++v) {
-                                  k.vertex_of_kernel[v] = k.triangles.points[v].id;
-                              }
-                          });
-        detail::ghost_mesh_to_edge_mesh(k.triangles, k.mesh, k.slots);
-    }
+    k.kernel_count = kernel_count;
     k.seconds_triangulate = seconds_since(start);
     if (!editable) return k;
 
     start = std::chrono::steady_clock::now();
-    std::vector<detail::VertexId> kernel_of(in.vertices.size(), detail::no_edge);
+    const detail::BigArray<detail::KernelPoint>& kp = k.triangles.points;
+    std::vector<detail::VertexId> kernel_of(in.vertices.size(), no_vertex);
     k.z.resize(kernel_count);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, kernel_count, 1 << 14), [&](const auto& r) {
         for (std::size_t v = r.begin(); v < r.end(); ++v) {
-            const VertexIndex id = k.vertex_of_kernel[v];  // distinct: no write conflicts
+            const VertexIndex id = kp[v].id;  // distinct: no write conflicts
             kernel_of[id] = static_cast<detail::VertexId>(v);
             k.z[v] = in.vertices[id].z;
         }
@@ -135,13 +121,14 @@ Kernel build_kernel(const MergedInput& in, bool with_soft, bool editable,
         seg.b = kernel_of[seg.b];
     }
     if (!segments.empty()) {
-        detail::MeshEditor editor(k.mesh, k.slots, k.z, options.z_tolerance);
-        detail::insert_segments(editor, k.mesh, segments, progress.sub(0.7, 1.0));
+        detail::MeshEditor editor(k.triangles, k.z, options.z_tolerance);
+        detail::insert_segments(editor, k.triangles, segments, progress.sub(0.7, 1.0));
         k.crossings = editor.crossings();
     }
+    // Vertices added at crossings are numbered after the merged ones, in order.
     const auto first_added = static_cast<VertexIndex>(in.vertices.size());
-    for (std::size_t v = kernel_count; v < k.mesh.points.size(); ++v) {
-        k.vertex_of_kernel.push_back(first_added + static_cast<VertexIndex>(v - kernel_count));
+    for (std::size_t v = kernel_count; v < kp.size(); ++v) {
+        k.triangles.points[v].id = first_added + static_cast<VertexIndex>(v - kernel_count);
     }
     k.seconds_constrain = seconds_since(start);
     return k;
@@ -152,18 +139,21 @@ void interpolate_soft_heights(MergedInput& in, const TriangulateOptions& options
                               const Progress& progress)
 {
     Kernel k = build_kernel(in, false, true, options, progress);
-    detail::MeshEditor editor(k.mesh, k.slots, k.z, options.z_tolerance);
-    EdgeId hint = editor.edge_of(0);
+    const detail::GhostMesh& m = k.triangles;
+    detail::MeshEditor editor(k.triangles, k.z, options.z_tolerance);
+    HalfEdge hint = m.tris.empty() ? detail::no_half_edge : editor.edge_of(0);
     for (std::size_t i = 0; i < in.vertices.size(); ++i) {
         if (in.z_known[i]) continue;
         const Point2 p{in.vertices[i].x, in.vertices[i].y};
-        const detail::Location loc = editor.locate(p, hint);
+        const detail::Location loc = hint == detail::no_half_edge
+                                         ? detail::Location{detail::Location::Kind::outside, hint}
+                                         : editor.locate(p, hint);
         double z = std::numeric_limits<double>::quiet_NaN();
         if (loc.kind == detail::Location::Kind::outside) {
             double best = std::numeric_limits<double>::infinity();
-            for (std::size_t v = 0; v < k.mesh.points.size(); ++v) {
-                const double dx = k.mesh.points[v].x - p.x;
-                const double dy = k.mesh.points[v].y - p.y;
+            for (std::size_t v = 0; v < m.points.size(); ++v) {
+                const double dx = m.points[v].x - p.x;
+                const double dy = m.points[v].y - p.y;
                 if (dx * dx + dy * dy < best) {
                     best = dx * dx + dy * dy;
                     z = k.z[v];
@@ -171,10 +161,10 @@ void interpolate_soft_heights(MergedInput& in, const TriangulateOptions& options
             }
         } else {
             hint = loc.e;
-            const detail::VertexId a = k.mesh.org[loc.e];
-            const detail::VertexId b = k.mesh.dest(loc.e);
-            const detail::VertexId c = k.mesh.dest(k.mesh.lnext(loc.e));
-            const Point2 &pa = k.mesh.p(a), &pb = k.mesh.p(b), &pc = k.mesh.p(c);
+            const detail::VertexId a = m.org(loc.e);
+            const detail::VertexId b = m.dest(loc.e);
+            const detail::VertexId c = m.org(detail::prev(loc.e));
+            const Point2 &pa = m.p(a), &pb = m.p(b), &pc = m.p(c);
             const double det = (pb.x - pa.x) * (pc.y - pa.y) - (pb.y - pa.y) * (pc.x - pa.x);
             const double wb = ((p.x - pa.x) * (pc.y - pa.y) - (p.y - pa.y) * (pc.x - pa.x)) / det;
             const double wc = ((pb.x - pa.x) * (p.y - pa.y) - (pb.y - pa.y) * (p.x - pa.x)) / det;
@@ -221,22 +211,15 @@ TriangulateResult run(TerrainInput&& input, const TriangulateOptions& options,
     start = std::chrono::steady_clock::now();
     std::vector<Point3> vertices = std::move(merged.vertices);
     const std::size_t merged_count = vertices.size();
-    detail::TinDraft draft;
-    if (k.edited()) {
-        vertices.reserve(std::max(merged_count, k.mesh.points.size()));
-        for (std::size_t v = 0; v < k.mesh.points.size(); ++v) {
-            if (k.vertex_of_kernel[v] >= merged_count) {  // added at crossings, in order
-                vertices.push_back({k.mesh.points[v].x, k.mesh.points[v].y, k.z[v]});
-            }
+    const detail::BigArray<detail::KernelPoint>& kp = k.triangles.points;
+    if (kp.size() > k.kernel_count) {  // vertices added at crossings, in order
+        vertices.reserve(merged_count + (kp.size() - k.kernel_count));
+        for (std::size_t v = k.kernel_count; v < kp.size(); ++v) {
+            vertices.push_back({kp[v].x, kp[v].y, k.z[v]});
         }
-        k.z = {};  // heights live in `vertices` now
-        draft = detail::mesh_to_tin(k.mesh, k.vertex_of_kernel, std::move(vertices),
-                                    !merged.segments.empty());
-        k.mesh = detail::EdgeMesh{};
-    } else {
-        draft = detail::ghost_mesh_to_tin(k.triangles, std::move(vertices));
     }
-    k.vertex_of_kernel = {};
+    k.z = {};  // heights live in `vertices` now
+    detail::TinDraft draft = detail::ghost_mesh_to_tin(k.triangles, std::move(vertices));
     result.stats.removed_triangles =
         detail::apply_domain(draft, has_boundary, hole_seeds, options.max_edge);
     detail::finish_tin(draft);

@@ -44,10 +44,10 @@ bool between(const Point2& a, const Point2& b, const Point2& q)
 }
 
 /// Segments s and t (kernel vertex ids) meet anywhere but at one shared endpoint.
-bool touch(const EdgeMesh& m, const InputSegment& s, const InputSegment& t)
+bool touch(const GhostMesh& m, const InputSegment& s, const InputSegment& t)
 {
-    const VertexId shared = s.a == t.a || s.a == t.b ? s.a : (s.b == t.a || s.b == t.b ? s.b : no_edge);
-    if (shared != no_edge) {
+    const VertexId shared = s.a == t.a || s.a == t.b ? s.a : (s.b == t.a || s.b == t.b ? s.b : no_vertex);
+    if (shared != no_vertex) {
         if ((s.a == t.a && s.b == t.b) || (s.a == t.b && s.b == t.a)) return true;
         const VertexId x = s.a == shared ? s.b : s.a;
         const VertexId y = t.a == shared ? t.b : t.a;
@@ -69,7 +69,7 @@ bool touch(const EdgeMesh& m, const InputSegment& s, const InputSegment& t)
 
 }  // namespace
 
-std::vector<bool> find_free_segments(const EdgeMesh& m, const std::vector<InputSegment>& segments)
+std::vector<bool> find_free_segments(const GhostMesh& m, const std::vector<InputSegment>& segments)
 {
     const std::size_t count = segments.size();
     std::vector<bool> free(count, true);
@@ -173,7 +173,7 @@ void order_by_key(const std::vector<std::uint32_t>& key, std::vector<std::uint32
 
 }  // namespace
 
-void insert_segments(MeshEditor& editor, const EdgeMesh& mesh,
+void insert_segments(MeshEditor& editor, const GhostMesh& mesh,
                      const std::vector<InputSegment>& segments, const Progress& progress)
 {
     const std::vector<bool> free = find_free_segments(mesh, segments);
@@ -266,8 +266,7 @@ void insert_segments(MeshEditor& editor, const EdgeMesh& mesh,
                 for (const VertexId v : plans[k].vertices) {
                     if (reserve[v].load(std::memory_order_relaxed) != k) return;
                 }
-                EdgeSlots slots;  // the cavity's own deleted edges are reused
-                editor.apply_segment(plans[k], segments[pending[first + k]].bits, slots);
+                editor.apply_segment(plans[k], segments[pending[first + k]].bits);
                 applied[k] = 1;
             });
             tbb::parallel_for(std::size_t{0}, window, [&](std::size_t k) {

@@ -14,14 +14,14 @@ namespace dtm::detail {
 
 /// For each segment (kernel vertex ids): true when it touches no other segment except at a
 /// shared endpoint (no crossing, no overlap, no T-junction). Exact predicates only.
-[[nodiscard]] std::vector<bool> find_free_segments(const EdgeMesh& mesh,
+[[nodiscard]] std::vector<bool> find_free_segments(const GhostMesh& mesh,
                                                    const std::vector<InputSegment>& segments);
 
 /// Inserts @p segments (kernel vertex ids). Free segments go first, by deterministic
 /// reservations (rounds of plan -> reserve vertices by priority -> apply the winners in
 /// parallel), which gives exactly the result of inserting them one by one in input order; the
 /// others (crossings, overlaps) follow one by one in input order.
-void insert_segments(MeshEditor& editor, const EdgeMesh& mesh,
+void insert_segments(MeshEditor& editor, const GhostMesh& mesh,
                      const std::vector<InputSegment>& segments, const Progress& progress);
 
 }  // namespace dtm::detail

@@ -23,13 +23,31 @@
 #include <cstdint>
 #include <vector>
 
+#include <array>
+
 #include "algo/detail/big_array.hpp"
-#include "algo/detail/edge_mesh.hpp"
+#include "dtm/core/point.hpp"
 #include "dtm/core/tin.hpp"
 
 namespace dtm::detail {
 
+using VertexId = std::uint32_t;
 using HalfEdge = std::uint32_t;
+
+/// A vertex of the kernel: position and the caller's index (kept through the partitioning).
+struct KernelPoint : Point2 {
+    std::uint32_t id = 0;
+};
+
+/// Bit flags per edge: which constraint kinds run along it.
+enum ConstraintBits : std::uint8_t {
+    constraint_none = 0,
+    constraint_breakline = 1,
+    constraint_soft = 2,
+    constraint_boundary = 4,
+    constraint_hole = 8,
+};
+
 inline constexpr VertexId ghost = no_vertex;
 inline constexpr HalfEdge no_half_edge = 0xffffffffu;
 /// Triangle slots are addressed by 30 bits in a half-edge code.
@@ -44,16 +62,30 @@ constexpr unsigned corner_of(HalfEdge h) noexcept { return h & 3u; }
 constexpr HalfEdge next(HalfEdge h) noexcept { return (h & 3u) == 2 ? h - 2 : h + 1; }
 constexpr HalfEdge prev(HalfEdge h) noexcept { return (h & 3u) == 0 ? h + 2 : h - 1; }
 
-/// The kernel's output: triangles with ghosts, over the points in kernel order.
+/// The kernel's output: triangles with ghosts, over the points in kernel order; with
+/// constraints, their ConstraintBits per half-edge (both halves of an edge carry the same).
 struct GhostMesh {
     std::vector<Triangle> tris;
     BigArray<KernelPoint> points;
+    std::vector<std::array<std::uint8_t, 3>> bits;  ///< per triangle; empty until constrained
+
+    [[nodiscard]] const KernelPoint& p(VertexId v) const noexcept { return points[v]; }
+    [[nodiscard]] std::uint8_t edge_bits(HalfEdge h) const noexcept { return bits[h >> 2][h & 3u]; }
+    /// Sets the bits of the edge of @p h on both of its half-edges.
+    void set_edge_bits(HalfEdge h, std::uint8_t b) noexcept
+    {
+        bits[h >> 2][h & 3u] = b;
+        const HalfEdge t = twin(h);
+        bits[t >> 2][t & 3u] = b;
+    }
 
     [[nodiscard]] VertexId& org(HalfEdge h) noexcept { return tris[h >> 2].v[h & 3u]; }
     [[nodiscard]] VertexId org(HalfEdge h) const noexcept { return tris[h >> 2].v[h & 3u]; }
     [[nodiscard]] VertexId dest(HalfEdge h) const noexcept { return org(next(h)); }
     [[nodiscard]] HalfEdge& twin(HalfEdge h) noexcept { return tris[h >> 2].n[h & 3u]; }
     [[nodiscard]] HalfEdge twin(HalfEdge h) const noexcept { return tris[h >> 2].n[h & 3u]; }
+    /// The triangle of @p h is real (no corner is the ghost vertex).
+    [[nodiscard]] bool is_real(HalfEdge h) const noexcept { return !is_ghost(h >> 2); }
     /// A slot holds a ghost triangle (or is unused) when any corner is the ghost vertex.
     [[nodiscard]] bool is_ghost(std::size_t t) const noexcept
     {
@@ -61,10 +93,5 @@ struct GhostMesh {
         return (v[0] == ghost) | (v[1] == ghost) | (v[2] == ghost);
     }
 };
-
-/// The mesh as the kernel's half-edge mesh (for constraint insertion and point location): one
-/// edge slot per edge, numbered in the order of the triangles; @p slots gets the free slots.
-/// Consumes @p ghosts.
-void ghost_mesh_to_edge_mesh(GhostMesh& ghosts, EdgeMesh& mesh, EdgeSlots& slots);
 
 }  // namespace dtm::detail

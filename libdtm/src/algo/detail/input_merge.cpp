@@ -14,7 +14,7 @@
 #include <string>
 #include <unordered_map>
 
-#include "algo/detail/edge_mesh.hpp"
+#include "algo/detail/ghost_mesh.hpp"
 #include "algo/detail/exact_duplicates.hpp"
 #include "dtm/core/error.hpp"
 

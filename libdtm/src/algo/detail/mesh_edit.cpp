@@ -1,32 +1,37 @@
 // SPDX-License-Identifier: MIT
 //
-// Constrained Delaunay editing of the kernel's edge mesh.
+// Constrained Delaunay editing of the kernel's triangles (with ghosts, ghost_mesh.hpp).
 //
 // Segment insertion (Anglada 1997; also Shewchuk's and Chew's CDT papers): walk from a towards b
-// through the triangles the segment crosses, collecting the crossed edges and the two chains of
-// cavity boundary edges (left and right of a->b). The crossed edges are deleted, the segment is
-// added as one edge, and each side (a pseudo-polygon) is retriangulated by the constrained
-// Delaunay rule: for base edge (u, w), the apex c is the polygon vertex whose circle through
-// u, w, c holds no other polygon vertex; recurse on the two sub-polygons. A vertex lying exactly on
-// the segment splits it there; an existing edge along it is simply marked (overlapping collinear
+// through the triangles the segment crosses, collecting them (the cavity) and the two chains of
+// cavity boundary edges (left and right of a->b). The segment becomes one edge and each side (a
+// pseudo-polygon) is retriangulated by the constrained Delaunay rule: for base edge (u, w), the
+// apex c is the polygon vertex whose circle through u, w, c holds no other polygon vertex;
+// recurse on the two sub-polygons. The new triangles take the cavity's slots (a cavity of k
+// crossed edges has k + 1 triangles, and so do the two polygons). A vertex lying exactly on the
+// segment splits it there; an existing edge along it is simply marked (overlapping collinear
 // constraints merge). A crossed edge that is itself constrained is a crossing of two breaklines:
 // the intersection point is inserted as a new vertex (z interpolated along each line; a
 // disagreement beyond the tolerance is recorded), both constraints are split there and the
 // insertion continues piece by piece.
 //
-// Point insertion is Guibas and Stolfi's InsertSite: locate, connect the new vertex to the
-// enclosing triangle (or quadrilateral, on an edge), then Lawson flips that never flip a
-// constrained edge. Locating uses a visibility walk with a random choice between exit edges,
-// which terminates on any triangulation (Devillers, Pion, Teillaud, "Walking in a
-// triangulation", 2002).
+// Point insertion: locate, split the enclosing triangle in three (or the two triangles of the
+// edge it lies on in four), then Lawson flips that never flip a constrained edge. Locating uses
+// a visibility walk with a random choice between exit edges, which terminates on any
+// triangulation (Devillers, Pion, Teillaud, "Walking in a triangulation", 2002).
+//
+// Constraint bits are kept per half-edge, the same on both halves of an edge.
 //
 // References:
 //   M. V. Anglada, "An improved incremental algorithm for constructing restricted Delaunay
 //     triangulations", Computers & Graphics 21(2), 1997.
 //   L. P. Chew, "Constrained Delaunay triangulations", Algorithmica 4, 1989.
-//   L. Guibas, J. Stolfi, ACM TOG 4(2), 1985.
+//   C. L. Lawson, "Software for C1 surface interpolation", 1977 (edge flips).
 #include "algo/detail/mesh_edit.hpp"
 
+#include <tbb/parallel_for.h>
+
+#include <atomic>
 #include <cmath>
 
 #include "dtm/core/error.hpp"
@@ -34,168 +39,231 @@
 
 namespace dtm::detail {
 
-MeshEditor::MeshEditor(EdgeMesh& mesh, EdgeSlots& slots, std::vector<double>& z,
-                       double z_tolerance)
-    : mesh_(mesh), slots_(slots), z_(z), z_tolerance_(z_tolerance),
-      vertex_edge_(mesh.points.size(), no_edge)
+MeshEditor::MeshEditor(GhostMesh& mesh, std::vector<double>& z, double z_tolerance)
+    : mesh_(mesh), z_(z), z_tolerance_(z_tolerance), vertex_edge_(mesh.points.size(), no_half_edge)
 {
-    const std::size_t directed = 2 * mesh.slot_count();
-    for (EdgeId e = 0; e < directed; ++e) {
-        if (mesh.alive[e >> 1]) vertex_edge_[mesh.org[e]] = e;
-    }
+    mesh.bits.assign(mesh.tris.size(), {0, 0, 0});
+    // A half-edge out of every vertex: the one with the largest code (the same for every thread
+    // count, so every walk that starts there is too).
+    tbb::parallel_for(std::size_t{0}, mesh.tris.size(), [&](std::size_t t) {
+        for (unsigned i = 0; i < 3; ++i) {
+            const VertexId v = mesh.tris[t].v[i];
+            if (v == ghost) continue;
+            std::atomic_ref<HalfEdge> slot(vertex_edge_[v]);
+            const HalfEdge h = half_edge(t, i);
+            HalfEdge seen = slot.load(std::memory_order_relaxed);
+            while ((seen == no_half_edge || seen < h) &&
+                   !slot.compare_exchange_weak(seen, h, std::memory_order_relaxed)) {
+            }
+        }
+    });
 }
 
-EdgeId MeshEditor::find_edge(VertexId a, VertexId b) const
+void MeshEditor::set_triangle(std::size_t t, VertexId a, VertexId b, VertexId c)
 {
-    const EdgeId start = vertex_edge_[a];
-    if (start == no_edge) return no_edge;
-    EdgeId e = start;
-    do {
-        if (mesh_.dest(e) == b) return e;
-        e = mesh_.onext[e];
-    } while (e != start);
-    return no_edge;
+    mesh_.tris[t].v = {a, b, c};
+    if (a != ghost) vertex_edge_[a] = half_edge(t, 0);
+    if (b != ghost) vertex_edge_[b] = half_edge(t, 1);
+    if (c != ghost) vertex_edge_[c] = half_edge(t, 2);
 }
 
-void MeshEditor::ensure_slots(std::size_t count)
+void MeshEditor::bond(HalfEdge x, HalfEdge y, std::uint8_t bits)
 {
-    if (slots_.available() >= count) return;
-    const std::size_t grown = mesh_.slot_count() + mesh_.slot_count() / 2 + count + 64;
-    mesh_.grow_slots(grown);
-    slots_.end = static_cast<EdgeId>(grown);
+    mesh_.twin(x) = y;
+    mesh_.twin(y) = x;
+    mesh_.bits[x >> 2][x & 3u] = bits;
+    mesh_.bits[y >> 2][y & 3u] = bits;
+}
+
+std::size_t MeshEditor::new_triangle()
+{
+    mesh_.tris.emplace_back();
+    mesh_.bits.push_back({0, 0, 0});
+    return mesh_.tris.size() - 1;
 }
 
 VertexId MeshEditor::add_vertex(Point2 p, double z)
 {
-    mesh_.points.push_back({p, no_edge});
+    mesh_.points.push_back({p, no_vertex});
     z_.push_back(z);
-    vertex_edge_.push_back(no_edge);
+    vertex_edge_.push_back(no_half_edge);
     return static_cast<VertexId>(mesh_.points.size() - 1);
 }
 
-void MeshEditor::delete_edge(EdgeId e, EdgeSlots& slots)
+HalfEdge MeshEditor::flip(HalfEdge x)
 {
-    for (const EdgeId d : {e, EdgeMesh::sym(e)}) {
-        const VertexId v = mesh_.org[d];
-        if (vertex_edge_[v] == d) vertex_edge_[v] = mesh_.onext[d] != d ? mesh_.onext[d] : no_edge;
-    }
-    mesh_.delete_edge(slots, e);
+    GhostMesh& m = mesh_;
+    const HalfEdge y = m.twin(x);
+    const std::size_t t1 = tri_of(x);
+    const std::size_t t2 = tri_of(y);
+    const VertexId a = m.org(x);
+    const VertexId b = m.dest(x);
+    const VertexId c = m.org(prev(x));
+    const VertexId d = m.org(prev(y));
+    const HalfEdge bc = m.twin(next(x));
+    const HalfEdge ca = m.twin(prev(x));
+    const HalfEdge ad = m.twin(next(y));
+    const HalfEdge db = m.twin(prev(y));
+    const std::uint8_t bc_bits = m.edge_bits(next(x));
+    const std::uint8_t ca_bits = m.edge_bits(prev(x));
+    const std::uint8_t ad_bits = m.edge_bits(next(y));
+    const std::uint8_t db_bits = m.edge_bits(prev(y));
+    set_triangle(t1, c, a, d);
+    set_triangle(t2, d, b, c);
+    bond(half_edge(t1, 0), ca, ca_bits);
+    bond(half_edge(t1, 1), ad, ad_bits);
+    bond(half_edge(t2, 0), db, db_bits);
+    bond(half_edge(t2, 1), bc, bc_bits);
+    bond(half_edge(t1, 2), half_edge(t2, 2), 0);
+    return half_edge(t1, 2);
 }
 
-void MeshEditor::flip(EdgeId e)
+void MeshEditor::legalize(HalfEdge first)
 {
-    for (const EdgeId d : {e, EdgeMesh::sym(e)}) {
-        const VertexId v = mesh_.org[d];
-        if (vertex_edge_[v] == d) vertex_edge_[v] = mesh_.onext[d];
+    GhostMesh& m = mesh_;
+    std::vector<HalfEdge> stack{first};
+    while (!stack.empty()) {
+        const HalfEdge e = stack.back();
+        stack.pop_back();
+        if (m.edge_bits(e) != 0 || !m.is_real(e) || !m.is_real(m.twin(e))) continue;
+        const VertexId a = m.org(e);
+        const VertexId b = m.dest(e);
+        const VertexId c = m.org(prev(e));
+        const VertexId d = m.org(prev(m.twin(e)));
+        if (geom::incircle(m.p(a), m.p(b), m.p(c), m.p(d)) <= 0) continue;
+        const HalfEdge dc = flip(e);
+        const std::size_t t1 = tri_of(dc);
+        const std::size_t t2 = tri_of(m.twin(dc));
+        stack.insert(stack.end(), {half_edge(t1, 0), half_edge(t1, 1), half_edge(t2, 0),
+                                   half_edge(t2, 1)});
     }
-    mesh_.swap(e);
-    vertex_edge_[mesh_.org[e]] = e;
-    vertex_edge_[mesh_.dest(e)] = EdgeMesh::sym(e);
 }
 
-Location MeshEditor::locate(Point2 p, EdgeId e)
+Location MeshEditor::locate(Point2 p, HalfEdge e)
 {
-    if (orient_p(mesh_.org[e], mesh_.dest(e), p) < 0) e = EdgeMesh::sym(e);
-    const std::size_t limit = 4 * mesh_.slot_count() + 64;
-    for (std::size_t step = 0; step < limit; ++step) {
-        if (!is_triangle(e)) return {Location::Kind::outside, e};
-        const EdgeId e1 = mesh_.lnext(e);
-        const EdgeId e2 = mesh_.lnext(e1);
-        for (const EdgeId d : {e, e1, e2}) {
-            const Point2& q = mesh_.p(mesh_.org[d]);
-            if (q.x == p.x && q.y == p.y) return {Location::Kind::vertex, d};
+    const GhostMesh& m = mesh_;
+    if (!m.is_real(e)) {  // a ghost: start in the real triangle behind its hull edge
+        const std::size_t t = tri_of(e);
+        for (unsigned i = 0; i < 3; ++i) {
+            const HalfEdge h = half_edge(t, i);
+            if (m.org(h) != ghost && m.dest(h) != ghost) e = m.twin(h);
         }
-        const int o1 = orient_p(mesh_.org[e1], mesh_.dest(e1), p);
-        const int o2 = orient_p(mesh_.org[e2], mesh_.dest(e2), p);
+        if (!m.is_real(e)) return {Location::Kind::outside, e};
+    }
+    const std::size_t limit = 4 * m.tris.size() + 64;
+    for (std::size_t step = 0; step < limit; ++step) {
+        const std::size_t t = tri_of(e);
+        std::array<HalfEdge, 3> h{half_edge(t, 0), half_edge(t, 1), half_edge(t, 2)};
+        std::array<int, 3> o{};
+        for (unsigned i = 0; i < 3; ++i) {
+            const Point2& q = m.p(m.org(h[i]));
+            if (q.x == p.x && q.y == p.y) return {Location::Kind::vertex, h[i]};
+        }
+        for (unsigned i = 0; i < 3; ++i) o[i] = orient_p(m.org(h[i]), m.dest(h[i]), p);
         rng_ ^= rng_ << 13;
         rng_ ^= rng_ >> 7;
         rng_ ^= rng_ << 17;
-        const bool first_e1 = (rng_ & 1u) != 0;
-        if (o1 < 0 && (o2 >= 0 || first_e1)) {
-            e = EdgeMesh::sym(e1);
-        } else if (o2 < 0) {
-            e = EdgeMesh::sym(e2);
-        } else {
-            const int o0 = orient_p(mesh_.org[e], mesh_.dest(e), p);
-            if (o0 == 0) return {Location::Kind::edge, e};
-            if (o1 == 0) return {Location::Kind::edge, e1};
-            if (o2 == 0) return {Location::Kind::edge, e2};
-            return {Location::Kind::face, e};
+        const unsigned first = static_cast<unsigned>(rng_ % 3);
+        HalfEdge exit = no_half_edge;
+        for (unsigned k = 0; k < 3 && exit == no_half_edge; ++k) {
+            const unsigned i = (first + k) % 3;
+            if (o[i] < 0) exit = h[i];
         }
+        if (exit == no_half_edge) {
+            for (unsigned i = 0; i < 3; ++i) {
+                if (o[i] == 0) return {Location::Kind::edge, h[i]};
+            }
+            return {Location::Kind::face, h[0]};
+        }
+        const HalfEdge across = m.twin(exit);
+        if (!m.is_real(across)) return {Location::Kind::outside, exit};
+        e = across;
     }
     throw Error("triangulation: point location did not terminate (corrupt mesh)");
 }
 
-VertexId MeshEditor::insert_point(Point2 p, double z, EdgeId hint)
+VertexId MeshEditor::insert_point(Point2 p, double z, HalfEdge hint)
 {
     const Location loc = locate(p, hint);
-    if (loc.kind == Location::Kind::vertex) return mesh_.org[loc.e];
+    if (loc.kind == Location::Kind::vertex) return mesh_.org(loc.e);
     if (loc.kind == Location::Kind::outside) {
         throw Error("triangulation: a constructed point fell outside the hull");
     }
-    ensure_slots(8);
-    EdgeMesh& m = mesh_;
-    EdgeId e = loc.e;
-    std::uint8_t split_bits = 0;
-    VertexId split_a = no_edge;
-    VertexId split_b = no_edge;
-    if (loc.kind == Location::Kind::edge) {
-        if (!is_triangle(EdgeMesh::sym(e))) {
-            throw Error("triangulation: a constructed point fell on the hull");
+    GhostMesh& m = mesh_;
+    std::vector<HalfEdge> stack;  // edges opposite the new vertex, to test
+    VertexId v = 0;
+    if (loc.kind == Location::Kind::face) {
+        const std::size_t t = tri_of(loc.e);
+        const auto [a, b, c] = m.tris[t].v;
+        std::array<HalfEdge, 3> outer{};
+        std::array<std::uint8_t, 3> outer_bits{};
+        for (unsigned i = 0; i < 3; ++i) {
+            outer[i] = m.twin(half_edge(t, i));
+            outer_bits[i] = m.edge_bits(half_edge(t, i));
         }
-        split_bits = m.constrained[e >> 1];
-        split_a = m.org[e];
-        split_b = m.dest(e);
-        const EdgeId t = m.oprev[e];
-        delete_edge(e, slots_);
-        e = t;
+        v = add_vertex(p, z);
+        const std::size_t t1 = new_triangle();
+        const std::size_t t2 = new_triangle();
+        set_triangle(t, a, b, v);
+        set_triangle(t1, b, c, v);
+        set_triangle(t2, c, a, v);
+        bond(half_edge(t, 0), outer[0], outer_bits[0]);
+        bond(half_edge(t1, 0), outer[1], outer_bits[1]);
+        bond(half_edge(t2, 0), outer[2], outer_bits[2]);
+        bond(half_edge(t, 1), half_edge(t1, 2), 0);
+        bond(half_edge(t1, 1), half_edge(t2, 2), 0);
+        bond(half_edge(t2, 1), half_edge(t, 2), 0);
+        stack = {half_edge(t, 0), half_edge(t1, 0), half_edge(t2, 0)};
+    } else {
+        const HalfEdge e = loc.e;  // a -> b in (a, b, c)
+        const HalfEdge f = m.twin(e);  // b -> a in (b, a, d)
+        if (!m.is_real(f)) throw Error("triangulation: a constructed point fell on the hull");
+        const std::size_t t = tri_of(e);
+        const std::size_t u = tri_of(f);
+        const VertexId a = m.org(e);
+        const VertexId b = m.dest(e);
+        const VertexId c = m.org(prev(e));
+        const VertexId d = m.org(prev(f));
+        const std::uint8_t split = m.edge_bits(e);
+        const HalfEdge bc = m.twin(next(e)), ca = m.twin(prev(e));
+        const HalfEdge ad = m.twin(next(f)), db = m.twin(prev(f));
+        const std::uint8_t bc_bits = m.edge_bits(next(e)), ca_bits = m.edge_bits(prev(e));
+        const std::uint8_t ad_bits = m.edge_bits(next(f)), db_bits = m.edge_bits(prev(f));
+        v = add_vertex(p, z);
+        const std::size_t t1 = new_triangle();
+        const std::size_t t2 = new_triangle();
+        set_triangle(t, a, v, c);
+        set_triangle(t1, v, b, c);
+        set_triangle(u, b, v, d);
+        set_triangle(t2, v, a, d);
+        bond(half_edge(t, 0), half_edge(t2, 0), split);  // a - v
+        bond(half_edge(t1, 0), half_edge(u, 0), split);  // v - b
+        bond(half_edge(t, 1), half_edge(t1, 2), 0);      // v - c
+        bond(half_edge(u, 1), half_edge(t2, 2), 0);      // v - d
+        bond(half_edge(t, 2), ca, ca_bits);
+        bond(half_edge(t1, 1), bc, bc_bits);
+        bond(half_edge(u, 2), db, db_bits);
+        bond(half_edge(t2, 1), ad, ad_bits);
+        stack = {half_edge(t, 2), half_edge(t1, 1), half_edge(u, 2), half_edge(t2, 1)};
     }
-    const VertexId v = add_vertex(p, z);
-    EdgeId base = m.make_edge(slots_, m.org[e], v);
-    m.splice(base, e);
-    vertex_edge_[v] = EdgeMesh::sym(base);
-    const EdgeId start = base;
-    do {
-        base = m.connect(slots_, e, EdgeMesh::sym(base));
-        e = m.oprev[base];
-    } while (m.lnext(e) != start);
-    if (split_bits != 0) {
-        m.constrained[find_edge(v, split_a) >> 1] = split_bits;
-        m.constrained[find_edge(v, split_b) >> 1] = split_bits;
-    }
-    // Lawson flips around the new vertex; constrained edges stay.
-    for (;;) {
-        const EdgeId t = m.oprev[e];
-        if (!m.is_constrained(e) && orient_p(m.dest(t), m.dest(e), m.p(m.org[e])) > 0 &&
-            geom::incircle(m.p(m.org[e]), m.p(m.dest(t)), m.p(m.dest(e)), p) > 0) {
-            flip(e);
-            e = m.oprev[e];
-        } else if (m.onext[e] == start) {
-            break;
-        } else {
-            e = m.lprev(m.onext[e]);
-        }
+    // Lawson flips around the new vertex; constrained edges and the hull stay.
+    while (!stack.empty()) {
+        const HalfEdge h = stack.back();  // x -> y in (x, y, v)
+        stack.pop_back();
+        const HalfEdge g = m.twin(h);     // y -> x in (y, x, q)
+        if (m.edge_bits(h) != 0 || !m.is_real(g)) continue;
+        const VertexId x = m.org(h);
+        const VertexId y = m.dest(h);
+        const VertexId q = m.org(prev(g));
+        if (orient(v, x, q) <= 0 || orient(q, y, v) <= 0) continue;
+        if (geom::incircle(m.p(y), m.p(x), m.p(q), p) <= 0) continue;
+        const HalfEdge qv = flip(h);  // (v, x, q) and (q, y, v)
+        const std::size_t t1 = tri_of(qv);
+        const std::size_t t2 = tri_of(m.twin(qv));
+        stack.push_back(half_edge(t1, 1));  // x -> q
+        stack.push_back(half_edge(t2, 0));  // q -> y
     }
     return v;
-}
-
-void MeshEditor::legalize(EdgeId first)
-{
-    std::vector<EdgeId> stack{first};
-    while (!stack.empty()) {
-        const EdgeId e = stack.back();
-        stack.pop_back();
-        if (!mesh_.alive[e >> 1] || mesh_.is_constrained(e)) continue;
-        if (!is_triangle(e) || !is_triangle(EdgeMesh::sym(e))) continue;
-        const VertexId a = mesh_.org[e];
-        const VertexId b = mesh_.dest(e);
-        const VertexId c = mesh_.dest(mesh_.lnext(e));
-        const VertexId d = mesh_.dest(mesh_.lnext(EdgeMesh::sym(e)));
-        if (geom::incircle(mesh_.p(a), mesh_.p(b), mesh_.p(c), mesh_.p(d)) <= 0) continue;
-        flip(e);
-        const EdgeId s = EdgeMesh::sym(e);
-        stack.insert(stack.end(), {mesh_.lnext(e), mesh_.lprev(e), mesh_.lnext(s), mesh_.lprev(s)});
-    }
 }
 
 void MeshEditor::insert_segment(VertexId a, VertexId b, std::uint8_t bits)

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 /// @file
-/// @brief From the kernel's edge mesh to a Tin: triangles with neighbour links, the domain
+/// @brief From the kernel's triangles to a Tin: triangles with neighbour links, the domain
 /// (boundary, holes, hole seeds, maximum edge length) and the canonical order.
 #pragma once
 
@@ -8,7 +8,6 @@
 #include <cstdint>
 #include <vector>
 
-#include "algo/detail/edge_mesh.hpp"
 #include "algo/detail/ghost_mesh.hpp"
 #include "dtm/algo/triangulate.hpp"
 
@@ -27,15 +26,9 @@ struct TinDraft {
     }
 };
 
-/// Faces of @p mesh as triangles; vertex v of the mesh becomes kernel_to_vertex[v]. Without
-/// @p constrained (no edge of the mesh is), no constraint bits are kept.
-/// Consumes the mesh: its origin array is reused as scratch memory.
-[[nodiscard]] TinDraft mesh_to_tin(EdgeMesh& mesh,
-                                   const std::vector<VertexIndex>& kernel_to_vertex,
-                                   std::vector<Point3> vertices, bool constrained);
-
-/// The real triangles of @p ghosts as the Tin's, in place (ghost_mesh.cpp), when no edge is
-/// constrained; vertex v of the kernel becomes ghosts.points[v].id. Consumes @p ghosts.
+/// The real triangles of @p ghosts as the Tin's, in place (ghost_mesh.cpp), with their
+/// constraint bits when ghosts.bits is not empty; vertex v of the kernel becomes
+/// ghosts.points[v].id. Consumes @p ghosts.
 [[nodiscard]] TinDraft ghost_mesh_to_tin(GhostMesh& ghosts, std::vector<Point3> vertices);
 
 /// Removes the triangles outside the boundaries, inside holes (rings and seeds) and, with
