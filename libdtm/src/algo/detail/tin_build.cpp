@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 //
-// The domain of the TIN (the conversion from the kernel's mesh is in mesh_to_tin.cpp).
+// The domain of the TIN (the conversion from the kernel's triangles is in ghost_mesh.cpp).
 //
 // Domain: the outer boundary and hole rings are constrained edges. Triangles are classified by a
 // 0-1 breadth-first search from the convex hull that counts how many boundary or hole edges must
