@@ -90,32 +90,36 @@ VertexId MeshEditor::add_vertex(Point2 p, double z)
     return static_cast<VertexId>(mesh_.points.size() - 1);
 }
 
+MeshEditor::Quad MeshEditor::quad(HalfEdge x) const
+{
+    const GhostMesh& m = mesh_;
+    const HalfEdge y = m.twin(x);
+    Quad q;
+    q.t1 = tri_of(x);
+    q.t2 = tri_of(y);
+    q.a = m.org(x);
+    q.b = m.dest(x);
+    q.c = m.org(prev(x));
+    q.d = m.org(prev(y));
+    const std::array<HalfEdge, 4> sides{next(x), prev(x), next(y), prev(y)};  // bc, ca, ad, db
+    for (std::size_t i = 0; i < 4; ++i) {
+        q.outside[i] = m.twin(sides[i]);
+        q.bits[i] = m.edge_bits(sides[i]);
+    }
+    return q;
+}
+
 HalfEdge MeshEditor::flip(HalfEdge x)
 {
-    GhostMesh& m = mesh_;
-    const HalfEdge y = m.twin(x);
-    const std::size_t t1 = tri_of(x);
-    const std::size_t t2 = tri_of(y);
-    const VertexId a = m.org(x);
-    const VertexId b = m.dest(x);
-    const VertexId c = m.org(prev(x));
-    const VertexId d = m.org(prev(y));
-    const HalfEdge bc = m.twin(next(x));
-    const HalfEdge ca = m.twin(prev(x));
-    const HalfEdge ad = m.twin(next(y));
-    const HalfEdge db = m.twin(prev(y));
-    const std::uint8_t bc_bits = m.edge_bits(next(x));
-    const std::uint8_t ca_bits = m.edge_bits(prev(x));
-    const std::uint8_t ad_bits = m.edge_bits(next(y));
-    const std::uint8_t db_bits = m.edge_bits(prev(y));
-    set_triangle(t1, c, a, d);
-    set_triangle(t2, d, b, c);
-    bond(half_edge(t1, 0), ca, ca_bits);
-    bond(half_edge(t1, 1), ad, ad_bits);
-    bond(half_edge(t2, 0), db, db_bits);
-    bond(half_edge(t2, 1), bc, bc_bits);
-    bond(half_edge(t1, 2), half_edge(t2, 2), 0);
-    return half_edge(t1, 2);
+    const Quad q = quad(x);
+    set_triangle(q.t1, q.c, q.a, q.d);
+    set_triangle(q.t2, q.d, q.b, q.c);
+    bond(half_edge(q.t1, 0), q.outside[1], q.bits[1]);  // c - a
+    bond(half_edge(q.t1, 1), q.outside[2], q.bits[2]);  // a - d
+    bond(half_edge(q.t2, 0), q.outside[3], q.bits[3]);  // d - b
+    bond(half_edge(q.t2, 1), q.outside[0], q.bits[0]);  // b - c
+    bond(half_edge(q.t1, 2), half_edge(q.t2, 2), 0);
+    return half_edge(q.t1, 2);
 }
 
 void MeshEditor::legalize(HalfEdge first)
@@ -215,35 +219,28 @@ VertexId MeshEditor::insert_point(Point2 p, double z, HalfEdge hint)
         bond(half_edge(t2, 1), half_edge(t, 2), 0);
         stack = {half_edge(t, 0), half_edge(t1, 0), half_edge(t2, 0)};
     } else {
-        const HalfEdge e = loc.e;  // a -> b in (a, b, c)
-        const HalfEdge f = m.twin(e);  // b -> a in (b, a, d)
-        if (!m.is_real(f)) throw Error("triangulation: a constructed point fell on the hull");
-        const std::size_t t = tri_of(e);
-        const std::size_t u = tri_of(f);
-        const VertexId a = m.org(e);
-        const VertexId b = m.dest(e);
-        const VertexId c = m.org(prev(e));
-        const VertexId d = m.org(prev(f));
-        const std::uint8_t split = m.edge_bits(e);
-        const HalfEdge bc = m.twin(next(e)), ca = m.twin(prev(e));
-        const HalfEdge ad = m.twin(next(f)), db = m.twin(prev(f));
-        const std::uint8_t bc_bits = m.edge_bits(next(e)), ca_bits = m.edge_bits(prev(e));
-        const std::uint8_t ad_bits = m.edge_bits(next(f)), db_bits = m.edge_bits(prev(f));
+        if (!m.is_real(m.twin(loc.e))) {
+            throw Error("triangulation: a constructed point fell on the hull");
+        }
+        const Quad q = quad(loc.e);  // (a, b, c) and (b, a, d) around the edge a -> b
+        const std::uint8_t split = m.edge_bits(loc.e);
+        const std::size_t t = q.t1;
+        const std::size_t u = q.t2;
         v = add_vertex(p, z);
         const std::size_t t1 = new_triangle();
         const std::size_t t2 = new_triangle();
-        set_triangle(t, a, v, c);
-        set_triangle(t1, v, b, c);
-        set_triangle(u, b, v, d);
-        set_triangle(t2, v, a, d);
+        set_triangle(t, q.a, v, q.c);
+        set_triangle(t1, v, q.b, q.c);
+        set_triangle(u, q.b, v, q.d);
+        set_triangle(t2, v, q.a, q.d);
         bond(half_edge(t, 0), half_edge(t2, 0), split);  // a - v
         bond(half_edge(t1, 0), half_edge(u, 0), split);  // v - b
         bond(half_edge(t, 1), half_edge(t1, 2), 0);      // v - c
         bond(half_edge(u, 1), half_edge(t2, 2), 0);      // v - d
-        bond(half_edge(t, 2), ca, ca_bits);
-        bond(half_edge(t1, 1), bc, bc_bits);
-        bond(half_edge(u, 2), db, db_bits);
-        bond(half_edge(t2, 1), ad, ad_bits);
+        bond(half_edge(t, 2), q.outside[1], q.bits[1]);  // c - a
+        bond(half_edge(t1, 1), q.outside[0], q.bits[0]); // b - c
+        bond(half_edge(u, 2), q.outside[3], q.bits[3]);  // d - b
+        bond(half_edge(t2, 1), q.outside[2], q.bits[2]); // a - d
         stack = {half_edge(t, 2), half_edge(t1, 1), half_edge(u, 2), half_edge(t2, 1)};
     }
     // Lawson flips around the new vertex; constrained edges and the hull stay.

@@ -5,6 +5,7 @@
 /// retriangulation.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -100,6 +101,16 @@ private:
     /// A new, unlinked triangle slot.
     std::size_t new_triangle();
     VertexId add_vertex(Point2 p, double z);
+    /// The two triangles (a, b, c) and (b, a, d) around the edge of half-edge x = a -> b, and the
+    /// twins and constraint bits of their outer sides b-c, c-a, a-d, d-b.
+    struct Quad {
+        std::size_t t1 = 0;
+        std::size_t t2 = 0;
+        VertexId a = 0, b = 0, c = 0, d = 0;
+        std::array<HalfEdge, 4> outside{};
+        std::array<std::uint8_t, 4> bits{};
+    };
+    [[nodiscard]] Quad quad(HalfEdge x) const;
     /// Flips the edge of @p x (both of its triangles real): (a, b, c) and (b, a, d) become
     /// (c, a, d) and (d, b, c) in the same slots. Returns the half-edge d -> c of the first.
     HalfEdge flip(HalfEdge x);
