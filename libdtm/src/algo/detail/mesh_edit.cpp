@@ -29,6 +29,7 @@
 //   C. L. Lawson, "Software for C1 surface interpolation", 1977 (edge flips).
 #include "algo/detail/mesh_edit.hpp"
 
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <atomic>
@@ -43,20 +44,21 @@ MeshEditor::MeshEditor(GhostMesh& mesh, std::vector<double>& z, double z_toleran
     : mesh_(mesh), z_(z), z_tolerance_(z_tolerance), vertex_edge_(mesh.points.size(), no_half_edge)
 {
     mesh.bits.assign(mesh.tris.size(), {0, 0, 0});
-    // A half-edge out of every vertex: the one with the largest code (the same for every thread
-    // count, so every walk that starts there is too).
-    tbb::parallel_for(std::size_t{0}, mesh.tris.size(), [&](std::size_t t) {
-        for (unsigned i = 0; i < 3; ++i) {
-            const VertexId v = mesh.tris[t].v[i];
-            if (v == ghost) continue;
-            std::atomic_ref<HalfEdge> slot(vertex_edge_[v]);
-            const HalfEdge h = half_edge(t, i);
-            HalfEdge seen = slot.load(std::memory_order_relaxed);
-            while ((seen == no_half_edge || seen < h) &&
-                   !slot.compare_exchange_weak(seen, h, std::memory_order_relaxed)) {
-            }
-        }
-    });
+    // A half-edge out of every vertex, whichever thread writes last: it is only where walks
+    // start, and nothing depends on where they start (the sector a segment enters, the triangle
+    // or vertex a point lies in are unique, and a point on an edge is reported on the edge's
+    // half-edge with the smaller code).
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, mesh.tris.size(), 4096),
+                      [&](const auto& range) {
+                          for (std::size_t t = range.begin(); t < range.end(); ++t) {
+                              for (unsigned i = 0; i < 3; ++i) {
+                                  const VertexId v = mesh.tris[t].v[i];
+                                  if (v == ghost) continue;
+                                  std::atomic_ref<HalfEdge>(vertex_edge_[v])
+                                      .store(half_edge(t, i), std::memory_order_relaxed);
+                              }
+                          }
+                      });
 }
 
 void MeshEditor::set_triangle(std::size_t t, VertexId a, VertexId b, VertexId c)
@@ -175,7 +177,10 @@ Location MeshEditor::locate(Point2 p, HalfEdge e)
         }
         if (exit == no_half_edge) {
             for (unsigned i = 0; i < 3; ++i) {
-                if (o[i] == 0) return {Location::Kind::edge, h[i]};
+                if (o[i] != 0) continue;
+                // The same half-edge whichever side the walk came from (when both are real).
+                const HalfEdge other = m.twin(h[i]);
+                return {Location::Kind::edge, other < h[i] && m.is_real(other) ? other : h[i]};
             }
             return {Location::Kind::face, h[0]};
         }
