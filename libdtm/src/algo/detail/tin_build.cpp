@@ -13,7 +13,11 @@
 // outside inwards.
 #include "algo/detail/tin_build.hpp"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
+#include <atomic>
 #include <deque>
 
 #include "dtm/geom/predicates.hpp"
@@ -49,12 +53,20 @@ std::size_t apply_domain(TinDraft& draft, bool has_boundary, const std::vector<P
 {
     const Tin& tin = draft.tin;
     const std::size_t count = tin.triangles.size();
-    std::vector<bool> keep(count, true);
     // Rings: 0-1 BFS over crossings of boundary/hole edges.
-    bool any_ring = has_boundary;
-    for (const auto& bits : draft.edge_bits) {
-        for (const std::uint8_t b : bits) any_ring = any_ring || (b & domain_bits) != 0;
-    }
+    std::atomic<bool> ring_edge{false};
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, draft.edge_bits.size(), 1 << 16),
+                      [&](const auto& range) {
+                          std::uint8_t all = 0;
+                          for (std::size_t t = range.begin(); t < range.end(); ++t) {
+                              const auto& bits = draft.edge_bits[t];
+                              all |= static_cast<std::uint8_t>(bits[0] | bits[1] | bits[2]);
+                          }
+                          if ((all & domain_bits) != 0) ring_edge.store(true, std::memory_order_relaxed);
+                      });
+    const bool any_ring = has_boundary || ring_edge.load();
+    if (!any_ring && hole_seeds.empty()) return max_edge > 0.0 ? trim_long_edges(draft, max_edge) : 0;
+    std::vector<bool> keep(count, true);
     if (any_ring) {
         constexpr std::uint32_t unset = 0xffffffffu;
         std::vector<std::uint32_t> depth(count, unset);
