@@ -279,6 +279,28 @@ TEST(Triangulate, ManyRandomCrossingBreaklinesStayValid)
     EXPECT_GT(r.stats.intersections, 100u);
 }
 
+// Long breaklines through dense points: some pass around a vertex and cross its whole star, so
+// an edge of that vertex has both its triangles in the cavity without being crossed (it lies on
+// the cavity's boundary twice); the new triangles must be linked across it.
+TEST(Triangulate, LongBreaklinesAroundWholeStarsStayValid)
+{
+    for (const std::uint32_t seed : {21u, 22u, 23u}) {
+        TerrainInput input;
+        input.points = random_points(4000, seed);
+        for (int k = 0; k < 20; ++k) {
+            const double y = 50.0 + 45.0 * k + 0.37 * static_cast<double>(seed);
+            input.breaklines.push_back({{{20, y, 1}, {980, y + 3.0, 2}}, false, ""});
+        }
+        for (const unsigned threads : {1u, 2u}) {
+            TriangulateOptions options;
+            options.threads = threads;
+            const TriangulateResult r = triangulate(input, options);
+            SCOPED_TRACE("seed " + std::to_string(seed) + ", threads " + std::to_string(threads));
+            expect_valid(r, input);
+        }
+    }
+}
+
 TEST(Triangulate, BoundaryAndHoleRingsLimitTheSurface)
 {
     TerrainInput input;
