@@ -227,7 +227,7 @@ void insert_segments(MeshEditor& editor, const GhostMesh& mesh,
         std::unique_ptr<std::atomic<std::uint32_t>[]> reserve(
             new std::atomic<std::uint32_t>[vertex_count]);
         for (std::size_t v = 0; v < vertex_count; ++v) reserve[v].store(unreserved);
-        const std::size_t window_size = 8192;
+        const std::size_t window_size = 4096;
         std::vector<MeshEditor::SegmentPlan> plans;
         std::vector<char> applied;
         std::vector<std::uint32_t> next;
