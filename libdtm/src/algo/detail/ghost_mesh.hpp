@@ -23,6 +23,7 @@
 #include <cstdint>
 #include <vector>
 
+#include <algorithm>
 #include <array>
 
 #include "algo/detail/big_array.hpp"
@@ -90,7 +91,7 @@ struct GhostMesh {
     [[nodiscard]] bool is_ghost(std::size_t t) const noexcept
     {
         const auto& v = tris[t].v;
-        return (v[0] == ghost) | (v[1] == ghost) | (v[2] == ghost);
+        return std::max({v[0], v[1], v[2]}) == ghost;  // the ghost vertex is the largest id
     }
 };
 
