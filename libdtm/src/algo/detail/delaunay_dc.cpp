@@ -86,7 +86,7 @@ class Builder {
 public:
     Builder(BigArray<KernelPoint>& points, GhostMesh& mesh, const DelaunayDcOptions& options,
             const Progress& progress)
-        : pts_(points.data()), tris_(mesh.tris.data()), options_(options),
+        : pts_(points.data()), mesh_(mesh), options_(options),
           progress_(progress), total_(points.size()),
           progress_unit_(options.parallel_cutoff > 0 ? options.parallel_cutoff : 65536)
     {
@@ -173,18 +173,14 @@ private:
         return {handles(on_hull, frame), right.spare};
     }
 
-    // Mesh access through the raw triangle array (the hot loops of the merge).
-    [[nodiscard]] VertexId& org(HalfEdge h) const noexcept { return tris_[h >> 2].v[h & 3u]; }
-    [[nodiscard]] VertexId dest(HalfEdge h) const noexcept { return org(next(h)); }
-    [[nodiscard]] HalfEdge& twin(HalfEdge h) const noexcept { return tris_[h >> 2].n[h & 3u]; }
-    void bond(HalfEdge a, HalfEdge b) const noexcept
-    {
-        twin(a) = b;
-        twin(b) = a;
-    }
+    // The mesh's own accessors, short names for the merge.
+    [[nodiscard]] VertexId& org(HalfEdge h) const noexcept { return mesh_.org(h); }
+    [[nodiscard]] VertexId dest(HalfEdge h) const noexcept { return mesh_.dest(h); }
+    [[nodiscard]] HalfEdge& twin(HalfEdge h) const noexcept { return mesh_.twin(h); }
+    void bond(HalfEdge a, HalfEdge b) const noexcept { mesh_.bond(a, b); }
     void set_triangle(std::size_t t, VertexId a, VertexId b, VertexId c) const noexcept
     {
-        tris_[t].v = {a, b, c};
+        mesh_.set_triangle(t, a, b, c);
     }
     /// The next ghost along the hull (outer face on the left): (a, b) -> (b, c).
     [[nodiscard]] HalfEdge next_ghost(HalfEdge base) const noexcept
@@ -233,7 +229,7 @@ private:
     void close_with_ghosts(std::size_t t, std::size_t g0, std::size_t g1, std::size_t g2) const noexcept
     {
         const std::array<std::size_t, 3> g{g0, g1, g2};
-        const auto& v = tris_[t].v;
+        const auto& v = mesh_.tris[t].v;
         for (unsigned i = 0; i < 3; ++i) {
             set_triangle(g[i], v[(i + 1) % 3], v[i], ghost);
             bond(half_edge(t, i), half_edge(g[i], 0));
@@ -417,7 +413,7 @@ private:
     }
 
     KernelPoint* pts_;
-    Triangle* tris_;
+    GhostMesh& mesh_;
     const DelaunayDcOptions& options_;
     const Progress& progress_;
     std::size_t total_;

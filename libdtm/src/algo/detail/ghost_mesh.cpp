@@ -14,7 +14,6 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <cstdint>
 #include <utility>
 
 #include "algo/detail/tin_build.hpp"
@@ -41,12 +40,6 @@ std::vector<std::size_t> concatenate(const std::vector<std::vector<std::size_t>>
     return all;
 }
 
-/// @p h runs between two real vertices (one direction of an edge of the triangulation).
-bool is_edge(const GhostMesh& g, HalfEdge h) noexcept
-{
-    return g.org(h) != ghost && g.dest(h) != ghost;
-}
-
 }  // namespace
 
 TinDraft ghost_mesh_to_tin(GhostMesh& g, std::vector<Point3> vertices)
@@ -67,7 +60,7 @@ TinDraft ghost_mesh_to_tin(GhostMesh& g, std::vector<Point3> vertices)
     for (const std::size_t t : ghost_slots) {
         for (unsigned i = 0; i < 3; ++i) {
             const HalfEdge h = half_edge(t, i);
-            if (is_edge(g, h)) g.twin(g.twin(h)) = no_half_edge;
+            if (g.is_edge(h)) g.twin(g.twin(h)) = no_half_edge;
         }
     }
     // 3. Ghost slots below `real` take the real triangles above it, in order.

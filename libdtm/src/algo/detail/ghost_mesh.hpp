@@ -20,11 +20,10 @@
 /// conquer).
 #pragma once
 
-#include <cstdint>
-#include <vector>
-
 #include <algorithm>
 #include <array>
+#include <cstdint>
+#include <vector>
 
 #include "algo/detail/big_array.hpp"
 #include "dtm/core/point.hpp"
@@ -59,7 +58,6 @@ constexpr HalfEdge half_edge(std::size_t t, unsigned i) noexcept
     return static_cast<HalfEdge>(t << 2 | i);
 }
 constexpr std::size_t tri_of(HalfEdge h) noexcept { return h >> 2; }
-constexpr unsigned corner_of(HalfEdge h) noexcept { return h & 3u; }
 constexpr HalfEdge next(HalfEdge h) noexcept { return (h & 3u) == 2 ? h - 2 : h + 1; }
 constexpr HalfEdge prev(HalfEdge h) noexcept { return (h & 3u) == 0 ? h + 2 : h - 1; }
 
@@ -85,6 +83,21 @@ struct GhostMesh {
     [[nodiscard]] VertexId dest(HalfEdge h) const noexcept { return org(next(h)); }
     [[nodiscard]] HalfEdge& twin(HalfEdge h) noexcept { return tris[h >> 2].n[h & 3u]; }
     [[nodiscard]] HalfEdge twin(HalfEdge h) const noexcept { return tris[h >> 2].n[h & 3u]; }
+    /// @p h runs between two real vertices (one direction of an edge of the triangulation).
+    [[nodiscard]] bool is_edge(HalfEdge h) const noexcept
+    {
+        return org(h) != ghost && dest(h) != ghost;
+    }
+    /// Links @p a and @p b as twins.
+    void bond(HalfEdge a, HalfEdge b) noexcept
+    {
+        twin(a) = b;
+        twin(b) = a;
+    }
+    void set_triangle(std::size_t t, VertexId a, VertexId b, VertexId c) noexcept
+    {
+        tris[t].v = {a, b, c};
+    }
     /// The triangle of @p h is real (no corner is the ghost vertex).
     [[nodiscard]] bool is_real(HalfEdge h) const noexcept { return !is_ghost(h >> 2); }
     /// A slot holds a ghost triangle (or is unused) when any corner is the ghost vertex.

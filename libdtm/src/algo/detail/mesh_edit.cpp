@@ -63,7 +63,7 @@ MeshEditor::MeshEditor(GhostMesh& mesh, std::vector<double>& z, double z_toleran
 
 void MeshEditor::set_triangle(std::size_t t, VertexId a, VertexId b, VertexId c)
 {
-    mesh_.tris[t].v = {a, b, c};
+    mesh_.set_triangle(t, a, b, c);
     if (a != ghost) vertex_edge_[a] = half_edge(t, 0);
     if (b != ghost) vertex_edge_[b] = half_edge(t, 1);
     if (c != ghost) vertex_edge_[c] = half_edge(t, 2);
@@ -71,10 +71,8 @@ void MeshEditor::set_triangle(std::size_t t, VertexId a, VertexId b, VertexId c)
 
 void MeshEditor::bond(HalfEdge x, HalfEdge y, std::uint8_t bits)
 {
-    mesh_.twin(x) = y;
-    mesh_.twin(y) = x;
-    mesh_.bits[x >> 2][x & 3u] = bits;
-    mesh_.bits[y >> 2][y & 3u] = bits;
+    mesh_.bond(x, y);
+    mesh_.set_edge_bits(x, bits);
 }
 
 std::size_t MeshEditor::new_triangle()
@@ -152,7 +150,7 @@ Location MeshEditor::locate(Point2 p, HalfEdge e)
         const std::size_t t = tri_of(e);
         for (unsigned i = 0; i < 3; ++i) {
             const HalfEdge h = half_edge(t, i);
-            if (m.org(h) != ghost && m.dest(h) != ghost) e = m.twin(h);
+            if (m.is_edge(h)) e = m.twin(h);
         }
         if (!m.is_real(e)) return {Location::Kind::outside, e};
     }
