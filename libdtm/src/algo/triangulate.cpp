@@ -7,13 +7,12 @@
 //   2. the Delaunay kernel: divide and conquer with alternating cuts on triangles with ghosts;
 //      its top levels run as parallel tiles and the merges that join them are the exact seam
 //      stitches (detail/delaunay_dc.cpp, detail/ghost_mesh.hpp);
-//   3. with constraints: the half-edge mesh made from the triangles (detail/ghost_mesh.cpp),
-//      constraints inserted by cavity retriangulation, crossings split with interpolated heights
-//      (detail/mesh_edit.cpp, detail/mesh_segment.cpp);
-//   4. the TIN: the kernel's triangle array itself without constraints (detail/ghost_mesh.cpp),
-//      else read off the mesh in canonical order (detail/mesh_to_tin.cpp); the domain:
-//      outside the boundary, holes and long border triangles removed (detail/tin_build.cpp,
-//      detail/tin_finish.cpp).
+//   3. constraints inserted into the same triangles by cavity retriangulation, crossings split
+//      with interpolated heights (detail/constraint_batch.cpp, detail/mesh_edit.cpp,
+//      detail/mesh_segment.cpp);
+//   4. the TIN: the triangle array itself, in place, in canonical order (detail/ghost_mesh.cpp);
+//      the domain: outside the boundary, holes and long border triangles removed
+//      (detail/tin_build.cpp, detail/tin_finish.cpp).
 // Soft breakline vertices take their heights from the surface built without them (a first pass
 // of steps 2-3 without soft lines), then everything is built again with them.
 #include "dtm/algo/triangulate.hpp"
@@ -50,7 +49,7 @@ double seconds_since(std::chrono::steady_clock::time_point start)
 /// The kernel's triangles over a subset of the merged vertices, with the constraints inserted.
 struct Kernel {
     detail::GhostMesh triangles;
-    std::vector<double> z;  ///< per kernel vertex (when editable)
+    std::vector<double> z;  ///< per kernel vertex (with keep_heights or segments)
     std::vector<detail::Crossing> crossings;
     std::size_t kernel_count = 0;  ///< vertices before those added at crossings
     double seconds_triangulate = 0.0;
@@ -68,9 +67,9 @@ std::size_t parallel_cutoff(std::size_t n, const TriangulateOptions& options)
 }
 
 /// The kernel over the merged vertices (with @p with_soft, all of them; else those with known
-/// heights) and the segments among them. With @p editable, or when there are segments, the
-/// result is the half-edge mesh.
-Kernel build_kernel(const MergedInput& in, bool with_soft, bool editable,
+/// heights) with the segments among them inserted. With @p keep_heights, or when there are
+/// segments, the heights per kernel vertex are kept in Kernel::z.
+Kernel build_kernel(const MergedInput& in, bool with_soft, bool keep_heights,
                     const TriangulateOptions& options, const Progress& progress)
 {
     Kernel k;
@@ -96,14 +95,14 @@ Kernel build_kernel(const MergedInput& in, bool with_soft, bool editable,
     for (const detail::InputSegment& seg : in.segments) {
         if (with_soft || seg.bits != detail::constraint_soft) segments.push_back(seg);
     }
-    editable = editable || !segments.empty();
+    keep_heights = keep_heights || !segments.empty();
     detail::DelaunayDcOptions dc;
     dc.parallel_cutoff = parallel_cutoff(points.size(), options);
     const std::size_t kernel_count = points.size();
     detail::delaunay_divide_and_conquer(points, k.triangles, dc, progress.sub(0.0, 0.7));
     k.kernel_count = kernel_count;
     k.seconds_triangulate = seconds_since(start);
-    if (!editable) return k;
+    if (!keep_heights) return k;
 
     start = std::chrono::steady_clock::now();
     const detail::BigArray<detail::KernelPoint>& kp = k.triangles.points;
