@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // dtm grid INPUTS... -o DEM --cell C [--extent xmin,ymin,xmax,ymax] [--nodata V] [--cog]
-//          [--hillshade FILE] [--slope FILE] [--aspect FILE]
+//          [--interpolation linear|cubic|natural] [--hillshade FILE] [--slope FILE] [--aspect FILE]
 // The TIN surface sampled at cell centres (parse -> options -> library -> report).
 #include <iostream>
 #include <memory>
@@ -16,6 +16,7 @@
 #include "dtm/io/grid_writer.hpp"
 #include "dtm/io/inputs.hpp"
 #include "input_args.hpp"
+#include "interpolation_args.hpp"
 #include "terminal_progress.hpp"
 #include "tin_args.hpp"
 
@@ -30,6 +31,7 @@ struct GridArgs {
     std::string extent;
     float nodata = -9999.0F;
     bool cog = false;
+    Interpolation interpolation = Interpolation::linear;
     std::string hillshade, slope, aspect;
     bool quiet = false;
 };
@@ -96,8 +98,12 @@ int run_grid(const GridArgs& args) {
     io::GridWriter writer(args.output, spec,
                           {.crs_wkt = inputs.crs_wkt, .nodata = args.nodata, .cog = args.cog});
     CountingSink counter(writer, args.nodata);
-    rasterize(tin, spec, {.nodata = args.nodata, .threads = args.tin.threads}, counter,
-              progress.sub(0.5, 0.9));
+    rasterize(tin, spec,
+              {.nodata = args.nodata,
+               .threads = args.tin.threads,
+               .interpolation = args.interpolation,
+               .gradients = {.threads = args.tin.threads}},
+              counter, progress.sub(0.5, 0.9));
     writer.commit();
     const std::pair<const std::string*, io::DemDerivative> derived[] = {
         {&args.hillshade, io::DemDerivative::hillshade},
@@ -143,6 +149,7 @@ Command grid_command() {
                                "Value of cells outside the TIN, the boundary and holes "
                                "(default -9999)");
                 app.add_flag("--cog", args->cog, "Write a Cloud Optimized GeoTIFF");
+                add_interpolation_option(app, "--interpolation", args->interpolation);
                 app.add_option("--hillshade", args->hillshade, "Also write a hillshade (gdaldem)");
                 app.add_option("--slope", args->slope, "Also write slope in degrees (gdaldem)");
                 app.add_option("--aspect", args->aspect, "Also write aspect in degrees (gdaldem)");

@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: MIT
 // Vertex gradients for the C1 surface: Nielson's minimum-norm network, split at hard breaklines.
 //
-// 1. Sectors. Around a vertex, the triangles are cut into fans at the hard breakline edges
-//    through it (found by walking the vertex's star through the neighbour links); each fan is a
-//    sector with its own gradient. Most vertices touch no hard breakline: their one sector is
-//    the vertex itself, and nothing is walked for them.
+// 1. Sectors. Around a vertex, the triangles are cut into runs at the hard breakline edges
+//    through it (walking the vertex's fan through the neighbour links, detail/vertex_stars);
+//    each run is a sector with its own gradient. Most vertices touch no hard breakline: their
+//    one sector is the vertex. Sectors are numbered in the order the triangles first use their
+//    vertices, so the solver's reads follow the triangles' spatial order.
 // 2. The network. Each edge (a, b) of length L, with d = b - a and height difference h, gets the
 //    cubic Hermite curve defined by the heights and the slopes m_a = g_a.d/L, m_b = g_b.d/L of
 //    the gradients of the sectors it bounds, and its energy
@@ -16,10 +17,12 @@
 // 3. The minimum of the sum over all edges is the solution of a sparse symmetric positive
 //    definite system with one 2 x 2 block row per sector:
 //        (sum 8 d d^T / L^3) g_p + sum_q (4 d d^T / L^3) g_q = sum 12 h d / L^3.
-//    Block Jacobi iterations solve it in parallel; they converge fast because the diagonal
-//    blocks dominate (each off-diagonal block is half of its edge's contribution to the
-//    diagonal). The start is the weighted least-squares plane of each sector's edges (2/3 of
-//    the first Jacobi step). Jacobi is deterministic: the result never depends on the threads.
+//    Each sector's row is built by a walk of its vertex's fan (in parallel, no shared writes).
+//    Block Gauss-Seidel sweeps inside fixed chunks of sectors, Jacobi across chunks, solve it
+//    in parallel; they converge fast because the diagonal blocks dominate (each off-diagonal
+//    block is half of its edge's contribution to the diagonal). The start is the weighted
+//    least-squares plane of each sector's edges (2/3 of the first Jacobi step). The chunks are
+//    fixed, so the result never depends on the thread count.
 //
 // References: G. M. Nielson, "A method for interpolating scattered data based upon a minimum
 // norm network", Mathematics of Computation 40(161), 1983; R. J. Renka, "Algorithm 624:
@@ -35,200 +38,147 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 
+#include "algo/detail/big_array.hpp"
 #include "algo/detail/edge_kinds.hpp"
+#include "algo/detail/vertex_stars.hpp"
+#include "dtm/core/error.hpp"
 
 namespace dtm {
 namespace {
 
-constexpr std::uint32_t unassigned = std::numeric_limits<std::uint32_t>::max();
+using detail::BigArray;
+using detail::Corner;
+using detail::VertexStars;
 
-/// Walks the fans of vertices on hard breaklines and numbers their sectors.
-class SectorBuilder {
-public:
-    SectorBuilder(const Tin& tin, TinGradients& out) : tin_(tin), out_(out) {}
-
-    /// Fills out.corner_sector; returns the number of sectors.
-    std::size_t run() {
-        const std::size_t n = tin_.vertices.size();
-        std::vector<std::uint8_t> split(n, 0);
-        for (std::size_t t = 0; t < tin_.triangles.size(); ++t) {
-            for (std::size_t e = 0; e < 3; ++e) {
-                if ((out_.hard_edges[t] >> e) & 1U) {
-                    split[tin_.triangles[t].v[(e + 1) % 3]] = 1;
-                    split[tin_.triangles[t].v[(e + 2) % 3]] = 1;
-                }
-            }
-        }
-        out_.corner_sector.resize(tin_.triangles.size());
-        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tin_.triangles.size(), 1 << 14),
-                          [&](const tbb::blocked_range<std::size_t>& r) {
-                              for (std::size_t t = r.begin(); t != r.end(); ++t) {
-                                  for (std::size_t i = 0; i < 3; ++i) {
-                                      const VertexIndex v = tin_.triangles[t].v[i];
-                                      out_.corner_sector[t][i] = split[v] ? unassigned : v;
-                                  }
-                              }
-                          });
-        count_ = n;
-        primary_used_.assign(n, 0);
-        for (std::size_t t = 0; t < tin_.triangles.size(); ++t) {
-            for (std::size_t i = 0; i < 3; ++i) {
-                if (out_.corner_sector[t][i] == unassigned) {
-                    walk_fan(static_cast<TriangleIndex>(t), static_cast<int>(i));
-                }
-            }
-        }
-        return count_;
-    }
-
-private:
-    struct Corner {
-        TriangleIndex t;
-        int i;
-    };
-
-    [[nodiscard]] int corner_of(TriangleIndex t, VertexIndex v) const {
-        const auto& tv = tin_.triangles[t].v;
-        return tv[0] == v ? 0 : (tv[1] == v ? 1 : 2);
-    }
-    [[nodiscard]] bool hard(TriangleIndex t, int e) const {
-        return ((out_.hard_edges[t] >> e) & 1U) != 0;
-    }
-    /// The next corner counter-clockwise around the vertex (across the edge to v[i+2]), or
-    /// t == no_triangle at the border.
-    [[nodiscard]] Corner ccw(Corner c) const {
-        const TriangleIndex u = tin_.triangles[c.t].n[static_cast<std::size_t>((c.i + 1) % 3)];
-        const VertexIndex v = tin_.triangles[c.t].v[static_cast<std::size_t>(c.i)];
-        return u == no_triangle ? Corner{no_triangle, 0} : Corner{u, corner_of(u, v)};
-    }
-    [[nodiscard]] Corner cw(Corner c) const {
-        const TriangleIndex u = tin_.triangles[c.t].n[static_cast<std::size_t>((c.i + 2) % 3)];
-        const VertexIndex v = tin_.triangles[c.t].v[static_cast<std::size_t>(c.i)];
-        return u == no_triangle ? Corner{no_triangle, 0} : Corner{u, corner_of(u, v)};
-    }
-
-    /// Assigns the sectors of the fan around the vertex of corner @p from.
-    void walk_fan(TriangleIndex t, int i) {
-        const VertexIndex v = tin_.triangles[t].v[static_cast<std::size_t>(i)];
-        const std::size_t limit = tin_.triangles.size() + 1;
-        // Start of the fan: the clockwise-most triangle of an open fan; for a closed fan, the
-        // triangle after its first hard edge (counter-clockwise from t), or t.
-        Corner start{t, i};
-        bool closed = false;
-        for (std::size_t k = 0; k < limit; ++k) {
-            const Corner prev = cw(start);
-            if (prev.t == no_triangle) {
-                break;
-            }
-            if (prev.t == t) {
-                closed = true;
-                start = {t, i};
-                break;
-            }
-            start = prev;
-        }
-        if (closed) {
-            Corner c{t, i};
-            for (std::size_t k = 0; k < limit; ++k) {
-                const Corner next = ccw(c);
-                if (hard(c.t, (c.i + 1) % 3)) {
-                    start = next;
-                    break;
-                }
-                c = next;
-                if (c.t == t) {
-                    break;
-                }
-            }
-        }
-        std::uint32_t sector = primary_used_[v] ? next_sector() : v;
-        primary_used_[v] = 1;
-        Corner c = start;
-        for (std::size_t k = 0; k < limit; ++k) {
-            out_.corner_sector[c.t][static_cast<std::size_t>(c.i)] = sector;
-            const Corner next = ccw(c);
-            if (next.t == no_triangle || next.t == start.t) {
-                break;
-            }
-            if (hard(c.t, (c.i + 1) % 3)) {
-                sector = next_sector();
-            }
-            c = next;
-        }
-    }
-
-    std::uint32_t next_sector() { return static_cast<std::uint32_t>(count_++); }
-
-    const Tin& tin_;
-    TinGradients& out_;
-    std::size_t count_ = 0;
-    std::vector<std::uint8_t> primary_used_;
-};
-
-/// The block system of the network: per sector, a CSR row of off-diagonal couplings.
+/// The block system of the network: per sector, a row of off-diagonal couplings.
 struct NetworkSystem {
-    std::vector<VertexIndex> vertex;          ///< per sector, its vertex
-    std::vector<std::array<double, 3>> kinv;  ///< per sector, inverse diagonal block (xx, xy, yy)
-    std::vector<Gradient> rhs;                ///< per sector
-    std::vector<std::uint32_t> offsets;       ///< CSR: couplings of sector p
+    BigArray<std::array<double, 3>> kinv;  ///< per sector, inverse diagonal block (xx, xy, yy)
+    BigArray<Gradient> rhs;                ///< per sector
+    BigArray<std::array<std::uint32_t, 2>> rows;  ///< per sector, its couplings [begin, end)
     struct Coupling {
+        double ax, ay;         ///< 2 d / L^1.5: the coupling block is 4 d d^T / L^3 = a a^T
         std::uint32_t sector;  ///< the other end's sector
-        double weight;         ///< 1 / L^3
     };
-    std::vector<Coupling> couplings;
+    BigArray<Coupling> couplings;  ///< not zeroed: every used entry is written
 };
 
-NetworkSystem build_system(const Tin& tin, const TinGradients& g, std::size_t sectors) {
-    NetworkSystem s;
-    s.vertex.assign(sectors, no_vertex);
-    for (std::size_t t = 0; t < tin.triangles.size(); ++t) {
-        for (std::size_t i = 0; i < 3; ++i) {
-            s.vertex[g.corner_sector[t][i]] = tin.triangles[t].v[i];
-        }
-    }
-    std::vector<std::array<double, 3>> diag(sectors, {0.0, 0.0, 0.0});
-    s.rhs.assign(sectors, {});
-    s.offsets.assign(sectors + 1, 0);
-    // Every term is visited from the triangle that owns it: a plain interior edge from its
-    // lower-numbered triangle, a hard or border edge from each triangle it bounds.
-    const auto each_term = [&](auto&& fn) {
-        for (std::size_t t = 0; t < tin.triangles.size(); ++t) {
-            const Triangle& tri = tin.triangles[t];
-            for (std::size_t e = 0; e < 3; ++e) {
-                const TriangleIndex u = tri.n[e];
-                if (u != no_triangle && u < t && ((g.hard_edges[t] >> e) & 1U) == 0) {
-                    continue;
-                }
-                fn(g.corner_sector[t][(e + 1) % 3], g.corner_sector[t][(e + 2) % 3]);
-            }
+/// Calls term(sector, far corner) for every network term of @p v's sectors: each fan edge once
+/// for the sector it lies in, and a hard edge once more for the sector on its other side.
+template <class Term>
+void each_term_of(const VertexStars& stars,
+                  const TinGradients& g,
+                  std::uint32_t rank,
+                  Term&& term) {
+    const auto sector = [&](Corner c) {
+        return g.corner_sector[c.t][static_cast<std::size_t>(c.i)];
+    };
+    Corner last{};
+    bool open = false;
+    const auto close_fan = [&] {
+        if (open && last.t != no_triangle) {  // the border edge after the last triangle
+            term(sector(last), Corner{last.t, (last.i + 2) % 3});
         }
     };
-    each_term([&](std::uint32_t p, std::uint32_t q) {
-        ++s.offsets[p + 1];
-        ++s.offsets[q + 1];
-    });
-    for (std::size_t p = 0; p < sectors; ++p) {
-        s.offsets[p + 1] += s.offsets[p];
+    stars.for_each_fan(
+        rank,
+        [&](bool fan_open) {
+            close_fan();
+            last = {};
+            open = fan_open;
+        },
+        [&](Corner c) {
+            term(sector(c), Corner{c.t, (c.i + 1) % 3});  // the edge to corner i + 1
+            if (stars.hard(c, 1)) {
+                const Corner prev = stars.cw(c);
+                if (prev.t != no_triangle) {
+                    term(sector(prev), Corner{prev.t, (prev.i + 2) % 3});
+                }
+            }
+            last = c;
+        });
+    close_fan();
+}
+
+NetworkSystem build_system(const Tin& tin, const VertexStars& stars, const TinGradients& g) {
+    NetworkSystem s;
+    const std::size_t sectors = g.sector_vertex.size();
+    const auto& order = stars.order();
+    // Each used vertex gets a block of couplings (an upper bound of its term count) and fills
+    // it alone, in parallel; a sector's row is a run inside its vertex's block.
+    BigArray<std::size_t> block(order.size() + 1, 0);
+    for (std::uint32_t k = 0; k < order.size(); ++k) {
+        const std::size_t corners = stars.corner_count(k);
+        block[k + 1] =
+            block[k] + corners + stars.fan_count(k) + (stars.on_hard_edge(k) ? corners : 0);
     }
-    s.couplings.resize(s.offsets.back());
-    std::vector<std::uint32_t> fill(s.offsets.begin(), s.offsets.end() - 1);
-    each_term([&](std::uint32_t p, std::uint32_t q) {
-        const Point3& a = tin.vertices[s.vertex[p]];
-        const Point3& b = tin.vertices[s.vertex[q]];
+    if (block.back() > std::numeric_limits<std::uint32_t>::max()) {
+        throw Error("gradients: the TIN is too large for the network's 32-bit indices");
+    }
+    s.couplings.resize(block.back());
+    // The vertices in sector order: the walks below read them in the triangles' order, not in
+    // the (often random) input order.
+    BigArray<Point3> at_sector(sectors);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, sectors, 1 << 14),
+                      [&](const tbb::blocked_range<std::size_t>& r) {
+                          for (std::size_t p = r.begin(); p != r.end(); ++p) {
+                              at_sector[p] = tin.vertices[g.sector_vertex[p]];
+                          }
+                      });
+    s.rows.assign(sectors, {0, 0});
+    s.rhs.assign(sectors, {});
+    BigArray<std::array<double, 3>> diag(sectors, {0.0, 0.0, 0.0});
+    struct Term {
+        std::uint32_t sector;
+        NetworkSystem::Coupling coupling;
+    };
+    const auto coupling = [&](const Point3& a, Corner far, std::uint32_t p) {
+        const std::uint32_t q = g.corner_sector[far.t][static_cast<std::size_t>(far.i)];
+        const Point3& b = at_sector[q];
         const double dx = b.x - a.x, dy = b.y - a.y, h = b.z - a.z;
         const double l2 = dx * dx + dy * dy;
-        const double w = 1.0 / (l2 * std::sqrt(l2));
-        for (const std::uint32_t r : {p, q}) {
-            diag[r][0] += 8.0 * w * dx * dx;
-            diag[r][1] += 8.0 * w * dx * dy;
-            diag[r][2] += 8.0 * w * dy * dy;
-            s.rhs[r].dx += 12.0 * w * h * dx;
-            s.rhs[r].dy += 12.0 * w * h * dy;
-        }
-        s.couplings[fill[p]++] = {q, w};
-        s.couplings[fill[q]++] = {p, w};
-    });
+        const double l = std::sqrt(l2);
+        const double w = 1.0 / (l2 * l);
+        const double scale = 2.0 / std::sqrt(l2 * l);
+        diag[p][0] += 8.0 * w * dx * dx;
+        diag[p][1] += 8.0 * w * dx * dy;
+        diag[p][2] += 8.0 * w * dy * dy;
+        s.rhs[p].dx += 12.0 * w * h * dx;
+        s.rhs[p].dy += 12.0 * w * h * dy;
+        return NetworkSystem::Coupling{scale * dx, scale * dy, q};
+    };
+    tbb::parallel_for(
+        tbb::blocked_range<std::size_t>(0, order.size(), 1 << 11),
+        [&](const tbb::blocked_range<std::size_t>& r) {
+            std::vector<Term> terms;
+            for (std::size_t k = r.begin(); k != r.end(); ++k) {
+                const auto rank = static_cast<std::uint32_t>(k);
+                const Point3& a = at_sector[k];
+                auto at = static_cast<std::uint32_t>(block[k]);
+                if (!stars.on_hard_edge(rank)) {  // one sector: the row is the whole block
+                    s.rows[rank][0] = at;
+                    each_term_of(stars, g, rank, [&](std::uint32_t, Corner far) {
+                        s.couplings[at++] = coupling(a, far, rank);
+                    });
+                    s.rows[rank][1] = at;
+                    continue;
+                }
+                terms.clear();
+                each_term_of(stars, g, rank, [&](std::uint32_t p, Corner far) {
+                    terms.push_back({p, coupling(a, far, p)});
+                });
+                std::stable_sort(terms.begin(), terms.end(),
+                                 [](const Term& x, const Term& y) { return x.sector < y.sector; });
+                for (std::size_t i = 0; i < terms.size(); ++i) {
+                    if (i == 0 || terms[i].sector != terms[i - 1].sector) {
+                        s.rows[terms[i].sector][0] = at;
+                    }
+                    s.couplings[at++] = terms[i].coupling;
+                    s.rows[terms[i].sector][1] = at;
+                }
+            }
+        });
     s.kinv.resize(sectors);
     for (std::size_t p = 0; p < sectors; ++p) {
         const auto [a, b, c] = diag[p];
@@ -243,12 +193,11 @@ Gradient apply(const std::array<double, 3>& m, double x, double y) {
     return {m[0] * x + m[1] * y, m[1] * x + m[2] * y};
 }
 
-void solve(const Tin& tin,
-           const NetworkSystem& s,
+void solve(const NetworkSystem& s,
            const GradientOptions& options,
            TinGradients& out,
            const Progress& progress) {
-    const std::size_t n = s.vertex.size();
+    const std::size_t n = s.kinv.size();
     std::vector<Gradient>& g = out.gradient;
     g.assign(n, {});
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1 << 14),
@@ -272,26 +221,33 @@ void solve(const Tin& tin,
     };
     out.iterations = 0;
     out.change = 0.0;
+    // Sweeps over fixed chunks of sectors in parallel: inside a chunk the sectors are updated in
+    // order with the new values of the chunk's earlier sectors (Gauss-Seidel), across chunks
+    // with the values of the previous sweep (Jacobi). The chunks never depend on the thread
+    // count, so neither does the result.
+    constexpr std::size_t chunk = 2048;
+    const std::size_t chunks = (n + chunk - 1) / chunk;
     for (unsigned it = 0; it < options.max_iterations; ++it) {
         progress.check();
         const double change = tbb::parallel_reduce(
-            tbb::blocked_range<std::size_t>(0, n, 1 << 12), 0.0,
+            tbb::blocked_range<std::size_t>(0, chunks, 1), 0.0,
             [&](const tbb::blocked_range<std::size_t>& r, double m) {
-                for (std::size_t p = r.begin(); p != r.end(); ++p) {
-                    const Point3& a = tin.vertices[s.vertex[p]];
-                    double x = s.rhs[p].dx, y = s.rhs[p].dy;
-                    for (std::uint32_t k = s.offsets[p]; k < s.offsets[p + 1]; ++k) {
-                        const auto& c = s.couplings[k];
-                        const Point3& b = tin.vertices[s.vertex[c.sector]];
-                        const double dx = b.x - a.x, dy = b.y - a.y;
-                        const double f =
-                            4.0 * c.weight * (dx * g[c.sector].dx + dy * g[c.sector].dy);
-                        x -= f * dx;
-                        y -= f * dy;
+                for (std::size_t ch = r.begin(); ch != r.end(); ++ch) {
+                    const std::size_t c0 = ch * chunk, c1 = std::min(n, c0 + chunk);
+                    for (std::size_t p = c0; p < c1; ++p) {
+                        double x = s.rhs[p].dx, y = s.rhs[p].dy;
+                        for (std::uint32_t k = s.rows[p][0]; k < s.rows[p][1]; ++k) {
+                            const auto& c = s.couplings[k];
+                            const Gradient& q =
+                                c.sector >= c0 && c.sector < p ? next[c.sector] : g[c.sector];
+                            const double f = c.ax * q.dx + c.ay * q.dy;
+                            x -= f * c.ax;
+                            y -= f * c.ay;
+                        }
+                        next[p] = apply(s.kinv[p], x, y);
+                        m = std::max(
+                            {m, std::abs(next[p].dx - g[p].dx), std::abs(next[p].dy - g[p].dy)});
                     }
-                    next[p] = apply(s.kinv[p], x, y);
-                    m = std::max(
-                        {m, std::abs(next[p].dx - g[p].dx), std::abs(next[p].dy - g[p].dy)});
                 }
                 return m;
             },
@@ -320,9 +276,10 @@ TinGradients estimate(const Tin& tin, const GradientOptions& options, const Prog
         }
         out.hard_edges[t] = bits;
     }
-    const std::size_t sectors = SectorBuilder(tin, out).run();
-    const NetworkSystem system = build_system(tin, out, sectors);
-    solve(tin, system, options, out, progress);
+    const VertexStars stars(tin, out.hard_edges);
+    detail::number_sectors(tin, stars, out.corner_sector, out.sector_vertex);
+    const NetworkSystem system = build_system(tin, stars, out);
+    solve(system, options, out, progress);
     progress.report(1.0, "gradients");
     return out;
 }
