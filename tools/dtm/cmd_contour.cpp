@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // dtm contour INPUTS... -o OUT --interval I [--base B] [--levels L1,L2,...] [--index-every K]
-//             [--smooth N]
+//             [--smooth N] [--surface linear|cubic|natural] [--subdivisions M]
 // Contour lines traced exactly on the TIN (parse -> options -> library -> report).
 #include <iostream>
 #include <memory>
@@ -15,6 +15,7 @@
 #include "dtm/io/contour_writer.hpp"
 #include "dtm/io/inputs.hpp"
 #include "input_args.hpp"
+#include "interpolation_args.hpp"
 #include "terminal_progress.hpp"
 #include "tin_args.hpp"
 
@@ -39,6 +40,7 @@ int run_contour(ContourArgs args) {
         inputs.tin ? std::move(*inputs.tin)
                    : triangulate(std::move(inputs.terrain), args.tin, progress.sub(0.2, 0.6)).tin;
     args.contour.threads = args.tin.threads;
+    args.contour.gradients.threads = args.tin.threads;
     io::ContourWriter writer(args.output, {.crs_wkt = inputs.crs_wkt});
     contour(tin, args.contour, writer, progress.sub(0.6, 1.0));
     writer.commit();
@@ -71,6 +73,11 @@ Command contour_command() {
                 app.add_option("--smooth", args->contour.smooth,
                                "Corner-cutting passes that keep lines inside their triangles "
                                "and never crossing (default 0)");
+                add_interpolation_option(app, "--surface", args->contour.surface);
+                app.add_option("--subdivisions", args->contour.subdivisions,
+                               "cubic/natural: each triangle's three sub-triangles are cut into "
+                               "M x M pieces on which the lines are traced (default 4)")
+                    ->check(CLI::Range(1, 64));
                 app.add_option("--max-levels", args->contour.max_levels,
                                "Refuse more levels than this (default 100000)");
                 app.add_flag("-q,--quiet", args->quiet, "No progress on stderr");

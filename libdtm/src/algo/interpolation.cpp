@@ -79,6 +79,26 @@ double TinEvaluator::value(TriangleIndex t, double x, double y) {
     return a.z + l1 * (b.z - a.z) + l2 * (c.z - a.z);
 }
 
+void TinEvaluator::values(TriangleIndex t, std::span<const Point2> points, std::span<double> out) {
+    if (interpolant_.method() != Interpolation::cubic) {
+        for (std::size_t k = 0; k < points.size(); ++k) {
+            out[k] = value(t, points[k].x, points[k].y);
+        }
+        return;
+    }
+    const Triangle& tri = tin_.triangles[t];
+    const CloughTocherPatch patch = CubicSurface(tin_, interpolant_.gradients()).patch(t);
+    for (std::size_t k = 0; k < points.size(); ++k) {
+        const Point2& p = points[k];
+        out[k] = patch.value(p.x, p.y);
+        for (const VertexIndex v : tri.v) {
+            if (tin_.vertices[v].x == p.x && tin_.vertices[v].y == p.y) {
+                out[k] = tin_.vertices[v].z;
+            }
+        }
+    }
+}
+
 double TinEvaluator::value_at(double x, double y, TriangleIndex& hint) {
     const TriangleIndex t = locate_triangle(tin_, x, y, hint);
     if (t == no_triangle) {

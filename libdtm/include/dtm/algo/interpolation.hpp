@@ -6,7 +6,9 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "dtm/algo/clough_tocher.hpp"
@@ -61,6 +63,9 @@ public:
     /// The height at (x, y), a point in triangle @p t or on its border. On a vertex it is the
     /// vertex height exactly, for every method.
     [[nodiscard]] double value(TriangleIndex t, double x, double y);
+
+    /// Heights at several points of triangle @p t (one patch set-up for all of them).
+    void values(TriangleIndex t, std::span<const Point2> points, std::span<double> out);
 
     /// The height at (x, y) anywhere: the triangle is found by a walk from @p hint (updated to
     /// the triangle found). NaN when (x, y) is outside every triangle.
