@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "command.hpp"
+#include "contour_flats_args.hpp"
 #include "dtm/algo/contour.hpp"
 #include "dtm/algo/triangulate.hpp"
 #include "dtm/core/error.hpp"
@@ -25,6 +26,7 @@ namespace {
 struct ContourArgs {
     InputArgs input;
     TriangulateOptions tin;
+    ContourFlatsArgs flats;
     std::string output;
     ContourOptions contour;
     bool quiet = false;
@@ -36,11 +38,17 @@ int run_contour(ContourArgs args) {
     }
     const Progress progress = terminal_progress("contour", args.quiet);
     io::LoadedInputs inputs = io::load_inputs(to_load_options(args.input), progress.sub(0.0, 0.2));
-    const Tin tin =
-        inputs.tin ? std::move(*inputs.tin)
-                   : triangulate(std::move(inputs.terrain), args.tin, progress.sub(0.2, 0.6)).tin;
+    TerrainTin built;
+    if (inputs.tin) {
+        built.result.tin = std::move(*inputs.tin);
+    } else {
+        built = triangulate_terrain(inputs, args.input, args.tin, args.flats,
+                                    progress.sub(0.2, 0.6), "contour", args.quiet);
+    }
+    const Tin& tin = built.result.tin;
     args.contour.threads = args.tin.threads;
     args.contour.gradients.threads = args.tin.threads;
+    args.contour.gradients.crease_at_breaklines = !built.contour_input;
     io::ContourWriter writer(args.output, {.crs_wkt = inputs.crs_wkt});
     contour(tin, args.contour, writer, progress.sub(0.6, 1.0));
     writer.commit();
@@ -58,6 +66,7 @@ Command contour_command() {
                 args->contour.interval = 0.0;
                 add_input_options(app, args->input);
                 add_tin_options(app, args->tin);
+                add_contour_flats_options(app, args->flats);
                 app.add_option("-o,--output", args->output,
                                "Contour file: .gpkg (default format), .shp, .dxf, .geojson")
                     ->required();

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "command.hpp"
+#include "contour_flats_args.hpp"
 #include "dtm/algo/rasterize.hpp"
 #include "dtm/algo/triangulate.hpp"
 #include "dtm/core/error.hpp"
@@ -26,6 +27,7 @@ namespace {
 struct GridArgs {
     InputArgs input;
     TriangulateOptions tin;
+    ContourFlatsArgs flats;
     std::string output;
     double cell = 0.0;
     std::string extent;
@@ -81,9 +83,14 @@ private:
 int run_grid(const GridArgs& args) {
     const Progress progress = terminal_progress("grid", args.quiet);
     io::LoadedInputs inputs = io::load_inputs(to_load_options(args.input), progress.sub(0.0, 0.2));
-    const Tin tin =
-        inputs.tin ? std::move(*inputs.tin)
-                   : triangulate(std::move(inputs.terrain), args.tin, progress.sub(0.2, 0.5)).tin;
+    TerrainTin built;
+    if (inputs.tin) {
+        built.result.tin = std::move(*inputs.tin);
+    } else {
+        built = triangulate_terrain(inputs, args.input, args.tin, args.flats,
+                                    progress.sub(0.2, 0.5), "grid", args.quiet);
+    }
+    const Tin& tin = built.result.tin;
     if (tin.triangles.empty()) {
         throw InputError("grid: the inputs give no triangle to rasterise");
     }
@@ -98,12 +105,13 @@ int run_grid(const GridArgs& args) {
     io::GridWriter writer(args.output, spec,
                           {.crs_wkt = inputs.crs_wkt, .nodata = args.nodata, .cog = args.cog});
     CountingSink counter(writer, args.nodata);
-    rasterize(tin, spec,
-              {.nodata = args.nodata,
-               .threads = args.tin.threads,
-               .interpolation = args.interpolation,
-               .gradients = {.threads = args.tin.threads}},
-              counter, progress.sub(0.5, 0.9));
+    rasterize(
+        tin, spec,
+        {.nodata = args.nodata,
+         .threads = args.tin.threads,
+         .interpolation = args.interpolation,
+         .gradients = {.threads = args.tin.threads, .crease_at_breaklines = !built.contour_input}},
+        counter, progress.sub(0.5, 0.9));
     writer.commit();
     const std::pair<const std::string*, io::DemDerivative> derived[] = {
         {&args.hillshade, io::DemDerivative::hillshade},
@@ -135,6 +143,7 @@ Command grid_command() {
                 auto args = std::make_shared<GridArgs>();
                 add_input_options(app, args->input);
                 add_tin_options(app, args->tin);
+                add_contour_flats_options(app, args->flats);
                 app.add_option("-o,--output", args->output,
                                "DEM file; the extension picks the GDAL driver (default .tif: "
                                "tiled DEFLATE Float32 GeoTIFF; .asc, .img, ...)")

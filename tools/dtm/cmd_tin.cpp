@@ -12,6 +12,7 @@
 #include "dtm/core/error.hpp"
 #include "dtm/io/atomic_file.hpp"
 #include "dtm/io/tin_file.hpp"
+#include "contour_flats_args.hpp"
 #include "input_args.hpp"
 #include "json_text.hpp"
 #include "terminal_progress.hpp"
@@ -23,6 +24,7 @@ namespace {
 struct TinArgs {
     InputArgs input;
     TriangulateOptions triangulate;
+    ContourFlatsArgs flats;
     std::string output;
     std::string report;
     bool ascii = false;
@@ -81,16 +83,16 @@ int run_tin(const TinArgs& a)
     io::LoadedInputs loaded = io::load_inputs(to_load_options(a.input), progress.sub(0, 0.2));
     const double read_s = since(start);
 
-    TriangulateResult result;
+    TerrainTin built;
     if (loaded.tin) {
-        result.tin = *loaded.tin;
+        built.result.tin = *loaded.tin;
     } else {
-        // Without --check the input is not needed afterwards: let the triangulation consume it.
-        result = a.check ? triangulate(loaded.terrain, a.triangulate, progress.sub(0.2, 0.9))
-                         : triangulate(std::move(loaded.terrain), a.triangulate,
-                                       progress.sub(0.2, 0.9));
+        // Without --check the input is not needed afterwards: the triangulation consumes it.
+        built = triangulate_terrain(loaded, a.input, a.triangulate, a.flats, progress.sub(0.2, 0.9),
+                                    "tin", a.quiet || a.stats, a.check);
     }
-    if (a.check) check_tin(result, loaded.tin ? TerrainInput{} : loaded.terrain);
+    const TriangulateResult& result = built.result;
+    if (a.check) check_tin(result, built.input);
 
     const auto write_start = std::chrono::steady_clock::now();
     io::TinWriteOptions write_options;
@@ -116,7 +118,17 @@ int run_tin(const TinArgs& a)
                   << ", \"triangles\": " << result.tin.triangles.size()
                   << ", \"constrained_edges\": " << result.tin.constraints.size()
                   << ", \"intersections\": " << s.intersections << ", \"conflicts\": " << s.conflicts
-                  << ", \"removed_triangles\": " << s.removed_triangles << ", \"seconds\": {\"read\": "
+                  << ", \"removed_triangles\": " << s.removed_triangles;
+        if (built.flats) {
+            const ContourFlatsReport& f = *built.flats;
+            std::cout << ", \"contour_flats\": {\"flat_before\": " << f.flat_before
+                      << ", \"triangles_before\": " << f.triangles_before
+                      << ", \"flat_after\": " << f.flat_after
+                      << ", \"points_added\": " << f.points_added
+                      << ", \"regions\": " << f.regions << ", \"real_flats\": " << f.true_flats
+                      << ", \"estimated_peaks\": " << f.peaks.size() << "}";
+        }
+        std::cout << ", \"seconds\": {\"read\": "
                   << json_number(read_s) << ", \"triangulate\": " << json_number(s.seconds_triangulate)
                   << ", \"constrain\": " << json_number(s.seconds_constrain)
                   << ", \"write\": " << json_number(write_s) << ", \"total\": " << json_number(since(start))
@@ -134,6 +146,7 @@ Command tin_command()
                 auto args = std::make_shared<TinArgs>();
                 add_input_options(app, args->input);
                 add_tin_options(app, args->triangulate);
+                add_contour_flats_options(app, args->flats);
                 app.add_option("-o,--output", args->output, "Output TIN (format by extension)")
                     ->required();
                 app.add_flag("--ascii", args->ascii, "PLY as text instead of binary");

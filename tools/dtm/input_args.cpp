@@ -24,6 +24,9 @@ void add_input_options(CLI::App& app, InputArgs& args)
           "Outer boundary: polygons (inner rings are holes) or closed lines; repeatable");
     files("--holes", args.holes,
           "Holes: polygons or closed lines, or points as hole seeds; repeatable");
+    files("--flat-areas", args.flat_areas,
+          "Real flats (lakes, ponds): closed lines or polygons at one height whose inside stays "
+          "flat when contour flats are removed; hard breaklines otherwise; repeatable");
     io::LoadOptions& o = args.load;
     app.add_option("--crs", o.crs, "CRS of inputs that carry none (EPSG:5514, WKT, PROJ)");
     app.add_option("--target-crs", o.target_crs,
@@ -52,6 +55,7 @@ io::LoadOptions to_load_options(const InputArgs& args)
     add(args.soft_breaklines, io::InputRole::soft_breaklines);
     add(args.boundaries, io::InputRole::boundary);
     add(args.holes, io::InputRole::holes);
+    add(args.flat_areas, io::InputRole::breaklines);
     return options;
 }
 

@@ -5,7 +5,6 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
-
 #include <string>
 #include <vector>
 
@@ -19,13 +18,14 @@ struct InputArgs {
     std::vector<std::string> soft_breaklines;
     std::vector<std::string> boundaries;
     std::vector<std::string> holes;
-    io::LoadOptions load;  ///< everything else the readers take
+    std::vector<std::string> flat_areas;  ///< real flats (lakes): hard breaklines, loaded last
+    io::LoadOptions load;                 ///< everything else the readers take
 };
 
 /// Declares the positional INPUTS and the reader options on @p app.
 void add_input_options(CLI::App& app, InputArgs& args);
 
-/// The LoadOptions for io::load_inputs.
+/// The LoadOptions for io::load_inputs (the --flat-areas files come last, as breaklines).
 [[nodiscard]] io::LoadOptions to_load_options(const InputArgs& args);
 
 }  // namespace dtm::cli

@@ -26,6 +26,7 @@
 #include "dtm/algo/clough_tocher.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace dtm {
 namespace {
@@ -119,12 +120,24 @@ CornerDerivatives CubicSurface::derivatives(TriangleIndex t) const {
     CornerDerivatives d{};
     for (std::size_t i = 0; i < 3; ++i) {
         const Point3& p = tin_.vertices[tri.v[i]];
-        const Gradient& g = gradients_.gradient[gradients_.corner_sector[t][i]];
+        const std::uint32_t sector = gradients_.corner_sector[t][i];
+        const Gradient& g = gradients_.gradient[sector];
+        const double relief = gradients_.relief.empty() ? 0.0 : gradients_.relief[sector];
         for (std::size_t s = 0; s < 2; ++s) {
             const std::size_t j = (i + 1 + s) % 3;  // the other end of the edge
             const std::size_t k = (i + 2 - s) % 3;  // the edge is the one opposite corner k
             const Point3& q = tin_.vertices[tri.v[j]];
-            d[i][s] = ((hard >> k) & 1U) ? q.z - p.z : g.dx * (q.x - p.x) + g.dy * (q.y - p.y);
+            const double rise = q.z - p.z;
+            if ((hard >> k) & 1U) {
+                d[i][s] = rise;
+                continue;
+            }
+            // The derivative along the edge, bounded by three times the corner's relief
+            // (Fritsch and Carlson's factor): inactive on sound data, it keeps a gradient made
+            // steep by a defect (two nearby points far apart in height) from throwing a long
+            // edge's cubic off.
+            const double limit = 3.0 * std::max(std::abs(rise), relief);
+            d[i][s] = std::clamp(g.dx * (q.x - p.x) + g.dy * (q.y - p.y), -limit, limit);
         }
     }
     return d;

@@ -101,7 +101,64 @@ void each_term_of(const VertexStars& stars,
     close_fan();
 }
 
-NetworkSystem build_system(const Tin& tin, const VertexStars& stars, const TinGradients& g) {
+/// A sector whose edges all point (nearly) one way, such as a thin fan between two breakline
+/// edges, leaves its gradient across them undetermined: the network's energy does not depend
+/// on it, and the diagonal block is (nearly) singular. Such a sector is pulled towards the
+/// area-weighted mean of its triangles' planes by a term 10^-3 x the block's larger eigenvalue
+/// (zero for a linear surface, where the planes are the exact gradient; well-conditioned sectors
+/// are left as they are).
+void regularise_undetermined(const VertexStars& stars,
+                             const TinGradients& g,
+                             const BigArray<Point3>& at_sector,
+                             BigArray<std::array<double, 3>>& diag,
+                             BigArray<Gradient>& rhs) {
+    constexpr double ratio = 1e-3;
+    for (std::size_t p = 0; p < diag.size(); ++p) {
+        const auto [a, b, c] = diag[p];
+        const double half_trace = 0.5 * (a + c);
+        const double spread = std::sqrt(0.25 * (a - c) * (a - c) + b * b);
+        const double largest = half_trace + spread, smallest = half_trace - spread;
+        if (!(largest > 0.0) || smallest >= ratio * largest) {
+            continue;
+        }
+        double sx = 0.0, sy = 0.0, weight = 0.0;
+        const auto rank = stars.rank(g.sector_vertex[p]);
+        stars.for_each_fan(
+            rank, [](bool) {},
+            [&](Corner k) {
+                const auto& cs = g.corner_sector[k.t];
+                if (cs[static_cast<std::size_t>(k.i)] != p) {
+                    return;
+                }
+                const Point3 &q0 = at_sector[cs[0]], &q1 = at_sector[cs[1]], &q2 = at_sector[cs[2]];
+                const double bx = q1.x - q0.x, by = q1.y - q0.y, bz = q1.z - q0.z;
+                const double cx = q2.x - q0.x, cy = q2.y - q0.y, cz = q2.z - q0.z;
+                const double det = bx * cy - cx * by;
+                if (det == 0.0) {
+                    return;
+                }
+                // area weight |det| / 2 times the plane's gradient (bz cy - cz by, bx cz - cx bz) /
+                // det
+                const double sign = det > 0.0 ? 0.5 : -0.5;
+                sx += sign * (bz * cy - cz * by);
+                sy += sign * (bx * cz - cx * bz);
+                weight += 0.5 * std::abs(det);
+            });
+        if (weight <= 0.0) {
+            continue;
+        }
+        const double tau = ratio * largest;
+        diag[p][0] += tau;
+        diag[p][2] += tau;
+        rhs[p].dx += tau * sx / weight;
+        rhs[p].dy += tau * sy / weight;
+    }
+}
+
+NetworkSystem build_system(const Tin& tin,
+                           const VertexStars& stars,
+                           const TinGradients& g,
+                           std::vector<float>& relief) {
     NetworkSystem s;
     const std::size_t sectors = g.sector_vertex.size();
     const auto& order = stars.order();
@@ -131,6 +188,7 @@ NetworkSystem build_system(const Tin& tin, const VertexStars& stars, const TinGr
     BigArray<std::array<double, 3>> diag(sectors, {0.0, 0.0, 0.0});
     struct Term {
         std::uint32_t sector;
+        float rise;
         NetworkSystem::Coupling coupling;
     };
     const auto coupling = [&](const Point3& a, Corner far, std::uint32_t p) {
@@ -152,6 +210,10 @@ NetworkSystem build_system(const Tin& tin, const VertexStars& stars, const TinGr
         tbb::blocked_range<std::size_t>(0, order.size(), 1 << 11),
         [&](const tbb::blocked_range<std::size_t>& r) {
             std::vector<Term> terms;
+            const auto rise = [&](const Point3& a, Corner far) {
+                return static_cast<float>(std::abs(
+                    at_sector[g.corner_sector[far.t][static_cast<std::size_t>(far.i)]].z - a.z));
+            };
             for (std::size_t k = r.begin(); k != r.end(); ++k) {
                 const auto rank = static_cast<std::uint32_t>(k);
                 const Point3& a = at_sector[k];
@@ -160,13 +222,14 @@ NetworkSystem build_system(const Tin& tin, const VertexStars& stars, const TinGr
                     s.rows[rank][0] = at;
                     each_term_of(stars, g, rank, [&](std::uint32_t, Corner far) {
                         s.couplings[at++] = coupling(a, far, rank);
+                        relief[rank] = std::max(relief[rank], rise(a, far));
                     });
                     s.rows[rank][1] = at;
                     continue;
                 }
                 terms.clear();
                 each_term_of(stars, g, rank, [&](std::uint32_t p, Corner far) {
-                    terms.push_back({p, coupling(a, far, p)});
+                    terms.push_back({p, rise(a, far), coupling(a, far, p)});
                 });
                 std::stable_sort(terms.begin(), terms.end(),
                                  [](const Term& x, const Term& y) { return x.sector < y.sector; });
@@ -176,9 +239,11 @@ NetworkSystem build_system(const Tin& tin, const VertexStars& stars, const TinGr
                     }
                     s.couplings[at++] = terms[i].coupling;
                     s.rows[terms[i].sector][1] = at;
+                    relief[terms[i].sector] = std::max(relief[terms[i].sector], terms[i].rise);
                 }
             }
         });
+    regularise_undetermined(stars, g, at_sector, diag, s.rhs);
     s.kinv.resize(sectors);
     for (std::size_t p = 0; p < sectors; ++p) {
         const auto [a, b, c] = diag[p];
@@ -265,8 +330,10 @@ void solve(const NetworkSystem& s,
 
 TinGradients estimate(const Tin& tin, const GradientOptions& options, const Progress& progress) {
     TinGradients out;
-    const detail::TriangleEdgeKinds kinds = detail::triangle_edge_kinds(tin);
-    out.hard_edges.resize(tin.triangles.size());
+    const detail::TriangleEdgeKinds kinds = options.crease_at_breaklines
+                                                ? detail::triangle_edge_kinds(tin)
+                                                : detail::TriangleEdgeKinds{};
+    out.hard_edges.assign(tin.triangles.size(), 0);
     for (std::size_t t = 0; t < kinds.size(); ++t) {
         std::uint8_t bits = 0;
         for (std::size_t e = 0; e < 3; ++e) {
@@ -278,7 +345,8 @@ TinGradients estimate(const Tin& tin, const GradientOptions& options, const Prog
     }
     const VertexStars stars(tin, out.hard_edges);
     detail::number_sectors(tin, stars, out.corner_sector, out.sector_vertex);
-    const NetworkSystem system = build_system(tin, stars, out);
+    out.relief.assign(out.sector_vertex.size(), 0.0F);
+    const NetworkSystem system = build_system(tin, stars, out, out.relief);
     solve(system, options, out, progress);
     progress.report(1.0, "gradients");
     return out;

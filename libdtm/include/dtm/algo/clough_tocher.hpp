@@ -60,6 +60,7 @@ class CubicSurface {
 public:
     CubicSurface(const Tin& tin, const TinGradients& gradients)
         : tin_(tin), gradients_(gradients) {}
+    CubicSurface(const Tin& tin, TinGradients&& gradients) = delete;  // it keeps a reference
 
     [[nodiscard]] CornerDerivatives derivatives(TriangleIndex t) const;
     [[nodiscard]] CloughTocherPatch patch(TriangleIndex t) const;

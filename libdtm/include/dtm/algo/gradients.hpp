@@ -29,6 +29,10 @@ struct GradientOptions {
     /// against the truth agree to four digits with a fully converged solve).
     double tolerance = 1e-6;
     unsigned threads = 0;  ///< worker threads (0: all cores); never changes the result
+    /// Split the stars at hard breaklines, so that the surface creases along them. false: the
+    /// surface is smooth across them too (right for contour lines given as breaklines: the
+    /// terrain does not kink at a contour).
+    bool crease_at_breaklines = true;
 };
 
 /// The gradients of the surface, one per sector. A sector is a maximal fan of triangles around a
@@ -43,6 +47,11 @@ struct TinGradients {
     std::vector<std::array<std::uint32_t, 3>> corner_sector;
     std::vector<Gradient> gradient;          ///< per sector
     std::vector<VertexIndex> sector_vertex;  ///< per sector, its vertex
+    /// Per sector, the largest height difference along its edges: it bounds the corner
+    /// derivatives of the cubic (CubicSurface) against data defects, such as two points a
+    /// centimetre apart and metres apart in height, whose steep gradient would throw the cubic
+    /// of every long edge at that vertex off.
+    std::vector<float> relief;
     /// Per triangle, bit e set when edge e (opposite v[e]) is a hard breakline.
     std::vector<std::uint8_t> hard_edges;
     unsigned iterations = 0;  ///< sweeps done

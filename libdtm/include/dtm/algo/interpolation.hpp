@@ -59,6 +59,7 @@ private:
 class TinEvaluator {
 public:
     TinEvaluator(const Tin& tin, const TinInterpolant& interpolant);
+    TinEvaluator(const Tin& tin, TinInterpolant&& interpolant) = delete;  // it keeps a reference
 
     /// The height at (x, y), a point in triangle @p t or on its border. On a vertex it is the
     /// vertex height exactly, for every method.
