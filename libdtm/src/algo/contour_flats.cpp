@@ -247,16 +247,18 @@ private:
         if (!openings.empty()) {
             // The nodes inside the region get heights towards the nearest opening's level; the
             // openings' own midpoints are only the sources (a point there would change the
-            // non-flat triangle beyond, which is right as it is).
+            // non-flat triangle beyond, which is right as it is)
             std::vector<double> to_open(nodes_.size()), z1(nodes_.size());
             spread(skeleton_graph(), openings, opening_z1, to_open, z1);
             std::vector<std::uint8_t> is_opening(nodes_.size(), 0);
             for (const auto& o : openings) {
                 is_opening[o.first] = 1;
             }
+            // (a region of openings only, such as one triangle, does get them)
+            const bool only_openings = openings.size() == nodes_.size();
             for (std::size_t i = 0; i < nodes_.size(); ++i) {
                 const Node& n = nodes_[i];
-                if (!is_opening[i]) {
+                if (!is_opening[i] || only_openings) {
                     added.push_back(
                         {{n.at.x, n.at.y, z0 + (z1[i] - z0) * n.d0 / (n.d0 + to_open[i])},
                          std::min(z0, z1[i]),

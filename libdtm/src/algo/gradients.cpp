@@ -328,6 +328,63 @@ void solve(const NetworkSystem& s,
     }
 }
 
+/// Where a hard breakline ends inside the TIN, its vertex has one sector all around, whose
+/// gradient mixes both sides of the crease (dominated by the side with the shorter, steeper
+/// edges) and throws the cubic off on the other side. So the crease is carried one edge further:
+/// the edge most nearly continuing the breakline (within 45 degrees of straight on) is treated
+/// as hard too, and the crease fades out at its far end.
+void extend_breakline_ends(const Tin& tin, std::vector<std::uint8_t>& hard) {
+    const VertexStars stars(tin, hard);
+    std::vector<std::pair<TriangleIndex, std::size_t>> extensions;
+    for (std::uint32_t rank = 0; rank < stars.order().size(); ++rank) {
+        if (!stars.on_hard_edge(rank) || stars.fan_count(rank) != 1) {
+            continue;
+        }
+        const Point3& v = tin.vertices[stars.order()[rank]];
+        std::size_t hard_count = 0;
+        bool closed = true;
+        Point2 along{};
+        std::vector<Corner> corners;
+        stars.for_each_fan(
+            rank, [&](bool open) { closed = !open; },
+            [&](Corner c) {
+                corners.push_back(c);
+                if (stars.hard(c, 1)) {  // the edge to corner i + 1, counted once per fan
+                    ++hard_count;
+                    const Point3& w = tin.vertices[tin.triangles[c.t].v[(c.i + 1) % 3]];
+                    along = {w.x - v.x, w.y - v.y};
+                }
+            });
+        if (!closed || hard_count != 1) {
+            continue;
+        }
+        const double len = std::hypot(along.x, along.y);
+        double best = -std::sqrt(0.5);  // the cosine of 135 degrees: at least that straight
+        Corner pick{};
+        for (const Corner c : corners) {
+            const Point3& w = tin.vertices[tin.triangles[c.t].v[(c.i + 1) % 3]];
+            const double dx = w.x - v.x, dy = w.y - v.y;
+            const double cosine = (dx * along.x + dy * along.y) / (std::hypot(dx, dy) * len);
+            if (cosine < best) {  // the most nearly opposite edge
+                best = cosine;
+                pick = c;
+            }
+        }
+        if (pick.t != no_triangle) {
+            extensions.push_back({pick.t, static_cast<std::size_t>((pick.i + 2) % 3)});
+        }
+    }
+    for (const auto& [t, e] : extensions) {
+        hard[t] = static_cast<std::uint8_t>(hard[t] | (1U << e));
+        const TriangleIndex u = tin.triangles[t].n[e];
+        if (u != no_triangle) {
+            const auto& n = tin.triangles[u].n;
+            const std::size_t back = n[0] == t ? 0 : (n[1] == t ? 1 : 2);
+            hard[u] = static_cast<std::uint8_t>(hard[u] | (1U << back));
+        }
+    }
+}
+
 TinGradients estimate(const Tin& tin, const GradientOptions& options, const Progress& progress) {
     TinGradients out;
     const detail::TriangleEdgeKinds kinds = options.crease_at_breaklines
@@ -342,6 +399,9 @@ TinGradients estimate(const Tin& tin, const GradientOptions& options, const Prog
             }
         }
         out.hard_edges[t] = bits;
+    }
+    if (std::any_of(out.hard_edges.begin(), out.hard_edges.end(), [](auto b) { return b != 0; })) {
+        extend_breakline_ends(tin, out.hard_edges);
     }
     const VertexStars stars(tin, out.hard_edges);
     detail::number_sectors(tin, stars, out.corner_sector, out.sector_vertex);
