@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Loading every input of a subcommand into one TerrainInput in one planar CRS:
-//   1. each file goes to its reader (registry.cpp; .ply positional inputs are dtm TINs);
+//   1. each file goes to its reader (reader.cpp; .ply positional inputs are dtm TINs);
 //   2. its CRS is the one the file carries, else --crs; S-JTSK positive (Y, X) become
 //      Krovak East-North; the summary is taken here, in the input's own CRS;
 //   3. the output CRS is --target-crs, else the first input's CRS; a geographic output CRS is

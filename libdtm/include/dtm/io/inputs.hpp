@@ -2,7 +2,7 @@
 /// @file
 /// @brief Loading every input a subcommand names (points, breaklines, boundaries, holes, TINs) into
 /// one TerrainInput in one planar CRS, with a summary of what each reader found.
-/// The readers themselves sit behind the registry in src/io/registry.cpp.
+/// The readers themselves sit behind the registry in src/io/reader.cpp.
 #pragma once
 
 #include <array>

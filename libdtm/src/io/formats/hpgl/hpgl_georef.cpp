@@ -17,8 +17,8 @@
 #include <sstream>
 
 #include "dtm/core/error.hpp"
-#include "io/formats/detail/hpgl_georef.hpp"
-#include "io/formats/detail/hpgl_plot.hpp"
+#include "io/formats/hpgl/hpgl_georef.hpp"
+#include "io/formats/hpgl/hpgl_plot.hpp"
 
 namespace dtm::io::hpgl {
 namespace {

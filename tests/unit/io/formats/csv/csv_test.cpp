@@ -12,7 +12,7 @@
 #include <string>
 
 #include "dtm/core/error.hpp"
-#include "io/formats/csv_detail.hpp"
+#include "io/formats/csv/csv_detail.hpp"
 #include "support/test_support.hpp"
 
 namespace {

@@ -17,8 +17,8 @@
 #include <tuple>
 #include <utility>
 
-#include "io/formats/detail/hpgl_grid.hpp"
-#include "io/formats/detail/hpgl_heights.hpp"
+#include "io/formats/hpgl/hpgl_grid.hpp"
+#include "io/formats/hpgl/hpgl_plan.hpp"
 
 namespace dtm::io::hpgl {
 

@@ -11,7 +11,7 @@
 #include <string_view>
 #include <vector>
 
-#include "io/formats/detail/hpgl_pe.hpp"
+#include "io/formats/hpgl/hpgl_pe.hpp"
 
 namespace dtm::io::hpgl {
 

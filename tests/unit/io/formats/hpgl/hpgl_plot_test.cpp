@@ -6,7 +6,7 @@
 #include <cmath>
 #include <string>
 
-#include "io/formats/detail/hpgl_plot.hpp"
+#include "io/formats/hpgl/hpgl_plot.hpp"
 #include "support/hpgl_plan_generator.hpp"
 
 namespace {

@@ -17,8 +17,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "io/formats/detail/hpgl_lexer.hpp"
-#include "io/formats/detail/hpgl_plot.hpp"
+#include "io/formats/hpgl/hpgl_lexer.hpp"
+#include "io/formats/hpgl/hpgl_plot.hpp"
 
 namespace dtm::io::hpgl {
 namespace {

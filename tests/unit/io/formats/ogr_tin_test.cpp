@@ -10,7 +10,7 @@
 
 #include "dtm/core/error.hpp"
 #include "support/test_support.hpp"
-#include "tin_fixture.hpp"
+#include "support/tin_fixture.hpp"
 
 namespace {
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// HPGL plan reader: bytes -> plot (hpgl_lexer, hpgl_pe, hpgl_plotter) -> spot heights and lines
-// by pen role (hpgl_heights, hpgl_lines) -> ground coordinates (hpgl_georef) -> ReadResult.
+// HPGL plan reader: bytes -> plot (hpgl_lexer, hpgl_pe, hpgl_plot) -> spot heights and lines
+// by pen role (hpgl_plan_heights, hpgl_plan_lines) -> ground coordinates (hpgl_georef) -> ReadResult.
 // See docs/formats.md, section "HPGL", for the user-facing rules.
 #include "dtm/io/formats/hpgl.hpp"
 
@@ -12,9 +12,9 @@
 #include <limits>
 
 #include "dtm/core/error.hpp"
-#include "io/formats/detail/hpgl_georef.hpp"
-#include "io/formats/detail/hpgl_heights.hpp"
-#include "io/formats/detail/hpgl_plot.hpp"
+#include "io/formats/hpgl/hpgl_georef.hpp"
+#include "io/formats/hpgl/hpgl_plan.hpp"
+#include "io/formats/hpgl/hpgl_plot.hpp"
 
 namespace dtm::io {
 namespace {

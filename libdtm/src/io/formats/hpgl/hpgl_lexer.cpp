@@ -13,7 +13,7 @@
 //  - HP RS-232 device control: ESC . X with parameters up to ':' (ESC .I81;;17:).
 // References: HP-GL/2 and HP RTL Reference Guide (1997); PCL 5 Technical Reference Manual,
 // chapter 2 "PCL command syntax"; PJL Technical Reference Manual, "UEL command".
-#include "io/formats/detail/hpgl_lexer.hpp"
+#include "io/formats/hpgl/hpgl_lexer.hpp"
 
 #include <algorithm>
 #include <cstdio>

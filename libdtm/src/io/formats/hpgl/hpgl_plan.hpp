@@ -13,7 +13,7 @@
 
 #include "dtm/core/point.hpp"
 #include "dtm/io/formats/hpgl_options.hpp"
-#include "io/formats/detail/hpgl_plot.hpp"
+#include "io/formats/hpgl/hpgl_plot.hpp"
 
 namespace dtm::io::hpgl {
 

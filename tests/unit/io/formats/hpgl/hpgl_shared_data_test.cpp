@@ -12,7 +12,7 @@
 
 #include "dtm/core/error.hpp"
 #include "dtm/io/formats/hpgl.hpp"
-#include "io/formats/detail/hpgl_plot.hpp"
+#include "io/formats/hpgl/hpgl_plot.hpp"
 #include "support/test_support.hpp"
 
 namespace {

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "dtm/core/error.hpp"
-#include "io/formats/detail/hpgl_georef.hpp"
+#include "io/formats/hpgl/hpgl_georef.hpp"
 #include "support/test_support.hpp"
 
 namespace {

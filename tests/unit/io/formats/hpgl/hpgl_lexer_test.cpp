@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "dtm/core/error.hpp"
-#include "io/formats/detail/hpgl_lexer.hpp"
+#include "io/formats/hpgl/hpgl_lexer.hpp"
 #include "support/hpgl_plan_generator.hpp"
 
 namespace {

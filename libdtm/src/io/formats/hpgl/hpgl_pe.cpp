@@ -14,14 +14,14 @@
 // C2 or C3 followed by 80-BF is the trace of a UTF-8 re-encoding of 8-bit data (a plot opened
 // and saved as text), which corrupts every number it touches.
 // Reference: HP-GL/2 and HP RTL Reference Guide (Hewlett-Packard, 1997), chapter "PE".
-#include "io/formats/detail/hpgl_pe.hpp"
+#include "io/formats/hpgl/hpgl_pe.hpp"
 
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <string>
 
-#include "io/formats/detail/hpgl_lexer.hpp"
+#include "io/formats/hpgl/hpgl_lexer.hpp"
 
 namespace dtm::io::hpgl {
 namespace {

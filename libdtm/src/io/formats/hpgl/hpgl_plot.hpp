@@ -2,7 +2,7 @@
 /// @file
 /// @brief What an HP-GL plot draws, in plotter units (40 per millimetre, the logical plotter
 /// frame after IP/SC scaling): pen-down polylines, labels and point markers. Produced by the
-/// plotter state machine (hpgl_plotter.cpp), consumed by the spot-height matcher.
+/// plotter state machine (hpgl_plot.cpp), consumed by the spot-height matcher.
 #pragma once
 
 #include <cstddef>

@@ -7,7 +7,7 @@
 #include <string>
 #include <tuple>
 
-#include "io/formats/detail/hpgl_heights.hpp"
+#include "io/formats/hpgl/hpgl_plan.hpp"
 #include "support/hpgl_plan_generator.hpp"
 
 namespace {
