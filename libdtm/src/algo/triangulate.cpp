@@ -9,10 +9,10 @@
 //      stitches (detail/delaunay_dc.cpp, detail/ghost_mesh.hpp);
 //   3. constraints inserted into the same triangles by cavity retriangulation, crossings split
 //      with interpolated heights (detail/constraint_batch.cpp, detail/mesh_edit.cpp,
-//      detail/mesh_segment.cpp);
-//   4. the TIN: the triangle array itself, in place, in canonical order (detail/ghost_mesh.cpp);
+//      detail/mesh_edit_segment.cpp);
+//   4. the TIN: the triangle array itself, in place, in canonical order (detail/tin_build_triangles.cpp);
 //      the domain: outside the boundary, holes and long border triangles removed
-//      (detail/tin_build.cpp, detail/tin_finish.cpp).
+//      (detail/tin_build_domain.cpp, detail/tin_build_finish.cpp).
 // Soft breakline vertices take their heights from the surface built without them (a first pass
 // of steps 2-3 without soft lines), then everything is built again with them.
 #include "dtm/algo/triangulate.hpp"

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 //
-// The domain of the TIN (the conversion from the kernel's triangles is in ghost_mesh.cpp).
+// The domain of the TIN (the conversion from the kernel's triangles is in tin_build_triangles.cpp).
 //
 // Domain: the outer boundary and hole rings are constrained edges. Triangles are classified by a
 // 0-1 breadth-first search from the convex hull that counts how many boundary or hole edges must
