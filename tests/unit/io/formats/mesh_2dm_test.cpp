@@ -5,6 +5,7 @@
 
 #include <sstream>
 
+#include "dtm/algo/validate.hpp"
 #include "dtm/core/error.hpp"
 #include "support/test_support.hpp"
 #include "support/tin_fixture.hpp"
@@ -23,6 +24,33 @@ TEST(Mesh2dm, RoundTripKeepsCountsCoordinatesAndConnectivity) {
     }
     for (std::size_t i = 0; i < tin.triangles.size(); ++i) {
         EXPECT_EQ(back.triangles[i].v, tin.triangles[i].v) << "triangle " << i;
+    }
+}
+
+TEST(Mesh2dm, ReadingGivesALinkedTin) {
+    dtm::Tin tin = dtm::test::grid_tin(6);
+    tin.constraints.clear();  // 2DM carries none
+    dtm::test::ScratchDir dir;
+    dtm::io::write_2dm(tin, dir / "tin.2dm", {});
+    const dtm::Tin back = dtm::io::read_2dm(dir / "tin.2dm");
+    EXPECT_TRUE(dtm::verify_topology(back).ok()) << dtm::verify_topology(back).text();
+    std::size_t links = 0;
+    for (const dtm::Triangle& t : back.triangles) {
+        for (const auto n : t.n) links += n != dtm::no_triangle ? 1 : 0;
+    }
+    EXPECT_EQ(links, 2 * (3 * 5 * 5 - 2 * 5));  // twice the interior edges of a 5 x 5 cell grid
+}
+
+TEST(Mesh2dm, OverlappingElementsAreAnInputErrorNamingTheFile) {
+    dtm::test::ScratchDir dir;
+    dtm::test::write_file(dir / "bad.2dm",
+                          "MESH2D\nND 1 0 0 0\nND 2 1 0 0\nND 3 0 1 0\nE3T 1 1 2 3 1\nE3T 2 1 2 3 1\n");
+    try {
+        (void)dtm::io::read_2dm(dir / "bad.2dm");
+        FAIL() << "no exception";
+    } catch (const dtm::InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("bad.2dm"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("same direction"), std::string::npos) << e.what();
     }
 }
 

@@ -4,7 +4,7 @@
 // comment lines are fine) and names the file and header line of anything else, rather than
 // guessing at a PLY written for another purpose. Neighbour links are not stored in the file; they
 // are rebuilt from the faces: every directed edge a->b of a counter-clockwise triangle meets the
-// edge b->a of its neighbour, found among b's outgoing edges (a vertex-indexed table, O(n)).
+// edge b->a of its neighbour (dtm::link_neighbours, O(n)).
 // Reference: Greg Turk, "The PLY Polygon File Format" (1994).
 #include <algorithm>
 #include <bit>
@@ -255,10 +255,14 @@ struct BodyReader {
 
     void add_edge(
         std::int64_t a, std::int64_t b, unsigned kind, std::size_t which, std::size_t line) {
-        if (kind > static_cast<unsigned>(ConstraintKind::hole)) {
+        if (kind >= constraint_kind_count) {
+            std::string known;
+            for (unsigned k = 0; k < constraint_kind_count; ++k) {
+                known += (k > 0 ? ", " : "") + std::to_string(k) + " " +
+                         constraint_kind_name(static_cast<ConstraintKind>(k));
+            }
             fail(line, "edge " + std::to_string(which) + " has unknown kind " +
-                           std::to_string(kind) +
-                           " (0 breakline, 1 soft breakline, 2 boundary, 3 hole)");
+                           std::to_string(kind) + " (" + known + ")");
         }
         ConstrainedEdge& edge = tin.constraints.emplace_back();
         edge.a = vertex_index(a, "edge", which, line);
@@ -387,61 +391,6 @@ void read_ascii_body(BodyReader& reader, std::string_view body) {
     if (cursor.next(text)) reader.fail(cursor.line, "unexpected data after the last element");
 }
 
-// ---- neighbours --------------------------------------------------------------------------------
-
-/// Sets Triangle::n from the faces. Directed edge i of triangle t runs v[i+1] -> v[i+2] (the edge
-/// opposite v[i]) and is numbered 3 t + i; its neighbour holds the reversed edge. Every directed
-/// edge is listed (counting sort) under the smaller of its two vertices, so an edge and its twin
-/// land in the same short row: both the duplicate check and the twin search scan that one
-/// contiguous row, with no jump to the other vertex's row (which is what costs on large TINs,
-/// whose vertex numbering follows the survey, not the space).
-void link_neighbours(Tin& tin, const fs::path& path) {
-    const std::size_t n = tin.vertices.size();
-    if (tin.triangles.size() > std::numeric_limits<std::uint32_t>::max() / 3) {
-        throw InputError(path, 0, 0, "too many faces");
-    }
-    struct Listed {
-        VertexIndex other;   ///< the larger vertex of the edge
-        std::uint32_t edge;  ///< 3 t + i
-        bool forward;        ///< the edge runs from the row's vertex to `other`
-    };
-    std::vector<std::uint32_t> first(n + 1, 0);
-    for (const Triangle& t : tin.triangles) {
-        for (std::uint32_t i = 0; i < 3; ++i) {
-            ++first[std::min(t.v[(i + 1) % 3], t.v[(i + 2) % 3]) + 1];
-        }
-    }
-    for (std::size_t v = 0; v < n; ++v) first[v + 1] += first[v];
-    std::vector<Listed> rows(first[n]);
-    std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
-    for (std::size_t t = 0; t < tin.triangles.size(); ++t) {
-        const auto& v = tin.triangles[t].v;
-        for (std::uint32_t i = 0; i < 3; ++i) {
-            const VertexIndex a = v[(i + 1) % 3];
-            const VertexIndex b = v[(i + 2) % 3];
-            rows[fill[std::min(a, b)]++] = {std::max(a, b), static_cast<std::uint32_t>(3 * t + i),
-                                            a < b};
-        }
-    }
-    for (VertexIndex a = 0; a < n; ++a) {
-        for (std::uint32_t k = first[a]; k < first[a + 1]; ++k) {
-            for (std::uint32_t j = k + 1; j < first[a + 1]; ++j) {
-                if (rows[j].other != rows[k].other) continue;
-                if (rows[j].forward == rows[k].forward) {
-                    const VertexIndex from = rows[k].forward ? a : rows[k].other;
-                    const VertexIndex to = rows[k].forward ? rows[k].other : a;
-                    throw InputError(path, 0, 0,
-                                     "edge " + std::to_string(from) + "-" + std::to_string(to) +
-                                         " is used twice in the same direction (faces "
-                                         "overlap or are not consistently oriented)");
-                }
-                tin.triangles[rows[k].edge / 3].n[rows[k].edge % 3] = rows[j].edge / 3;
-                tin.triangles[rows[j].edge / 3].n[rows[j].edge % 3] = rows[k].edge / 3;
-            }
-        }
-    }
-}
-
 }  // namespace
 
 LoadedTin read_tin_ply(const fs::path& path) {
@@ -454,7 +403,11 @@ LoadedTin read_tin_ply(const fs::path& path) {
     } else {
         read_binary_body(reader, body);
     }
-    link_neighbours(reader.tin, path);
+    try {
+        link_neighbours(reader.tin);
+    } catch (const InputError& e) {
+        throw InputError(path, 0, 0, e.what());
+    }
     return {std::move(reader.tin), header.crs_wkt};
 }
 
