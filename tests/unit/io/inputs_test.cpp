@@ -144,7 +144,7 @@ TEST(LoadInputs, TwoDimensionalHardBreaklineTakesHeightsOfCoincidentPointsOrFail
         FAIL();
     } catch (const dtm::InputError& e) {
         EXPECT_NE(std::string(e.what()).find("bad.csv:1"), std::string::npos) << e.what();
-        EXPECT_NE(std::string(e.what()).find("--soft-breaklines"), std::string::npos);
+        EXPECT_NE(std::string(e.what()).find("`soft_breaklines`"), std::string::npos);
     }
 }
 
