@@ -5,12 +5,8 @@
 //      Krovak East-North; the summary is taken here, in the input's own CRS;
 //   3. the output CRS is --target-crs, else the first input's CRS; a geographic output CRS is
 //      replaced by the UTM zone of the data (GeographicLib); every input is transformed into it;
-//   4. polyline vertices without a height (2-D lines, rings) take the z of a survey point at
-//      exactly the same xy; hard breakline vertices left without one are an error; boundary and
-//      hole vertices left without one take the height of the surface (linear interpolation in
-//      the Delaunay TIN of the points and hard breaklines, built without the rings; nearest
-//      vertex outside its hull); soft breakline vertices keep NaN (the triangulator computes
-//      them).
+// Line vertices without a height keep NaN z: triangulate() gives them one
+// (algo/line_heights.hpp), and `dtm info` shows the lines as they are.
 #include "dtm/io/inputs.hpp"
 
 #include <algorithm>
@@ -19,7 +15,6 @@
 #include <unordered_map>
 
 #include "dtm/algo/duplicates.hpp"
-#include "dtm/algo/line_heights.hpp"
 #include "dtm/core/error.hpp"
 #include "dtm/io/formats/crs.hpp"
 #include "dtm/io/reader.hpp"
@@ -229,16 +224,6 @@ LoadedInputs load_inputs(const LoadOptions& options, const Progress& progress)
         merge(out, loaded[i]);
     }
     out.crs_wkt = target.wkt;
-    if (!options.resolve_heights) return out;
-    const LineHeightReport heights = resolve_line_heights(out.terrain);
-    if (heights.from_surface > 0) {
-        const std::string note = std::to_string(heights.from_surface) +
-                                 " boundary/hole vertices without height took the height of the "
-                                 "surface";
-        for (InputSummary& s : out.summaries) {
-            if (s.boundaries > 0 || s.holes > 0) s.warnings.push_back(note);
-        }
-    }
     return out;
 }
 

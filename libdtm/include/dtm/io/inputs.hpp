@@ -38,10 +38,6 @@ struct LoadOptions {
     std::string layer;    ///< --layer: OGR layer name; empty = every layer
     std::string where;    ///< --where: OGR attribute filter (SQL WHERE clause)
     std::string z_field;  ///< --z-field: OGR attribute holding the height (points, contours)
-    /// Give polyline vertices without a height one (from a survey point at the same xy, or the
-    /// surface for boundary/hole rings) and reject hard breakline vertices left without.
-    /// false (dtm info): leave them NaN.
-    bool resolve_heights = true;
     HpglOptions hpgl;  ///< options of the HPGL plan reader
 };
 

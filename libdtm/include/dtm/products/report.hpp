@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 /// @file
-/// @brief The JSON report of `dtm build`: inputs, what became of every input point, TIN counts,
-/// CRS, extent, z range, areas, breakline conflicts, products and timings per stage.
+/// @brief The report of products::build() (report.json): inputs, what became of every input
+/// point, TIN counts, CRS, extent, z range, areas, breakline conflicts, each product's figures
+/// and the timings per stage. A new product adds its section here and in src/products/report.cpp.
 #pragma once
 
 #include <cstddef>
@@ -14,7 +15,7 @@
 #include "dtm/core/grid.hpp"
 #include "dtm/io/inputs.hpp"
 
-namespace dtm::io {
+namespace dtm::products {
 
 struct StageTime {
     std::string stage;
@@ -22,20 +23,24 @@ struct StageTime {
 };
 
 struct BuildReport {
-    std::vector<InputSummary> inputs;
-    std::size_t skipped_lines = 0;  ///< bad input lines skipped (--skip-bad-lines)
+    // what was read and built
+    std::vector<io::InputSummary> inputs;
+    std::size_t skipped_lines = 0;  ///< bad input lines skipped (ReadOptions::skip_bad_lines)
     std::string crs_wkt;
     InputAccounting accounting;
     TriangulateStats triangulation;
     std::vector<ConstraintConflict> conflicts;
     SurfaceStats surface;
+    // the DEM (step "dem": dem.tif, hillshade.tif)
     GridSpec dem;
-    std::string cell_rule;  ///< how the cell size was chosen ("given" or the automatic rule)
+    std::string cell_rule;  ///< how the cell size was chosen (given, or the automatic rule)
+    // the contours (step "contours": contours.gpkg)
     double contour_interval = 0.0;
     std::size_t index_every = 0;
     std::string interval_rule;
     std::size_t contour_levels = 0;
     std::size_t contour_lines = 0;
+    // the run
     std::vector<StageTime> timings;
     std::vector<std::string> outputs;  ///< file names written into the output folder
 };
@@ -50,4 +55,4 @@ inline constexpr std::size_t report_conflict_limit = 1000;
 /// @throws Error if the file cannot be written.
 void write_report(const BuildReport& report, const std::filesystem::path& path);
 
-}  // namespace dtm::io
+}  // namespace dtm::products

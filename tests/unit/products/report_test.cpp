@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "dtm/io/formats/report.hpp"
+#include "dtm/products/report.hpp"
 
 #include <cpl_json.h>
 #include <gtest/gtest.h>
@@ -11,8 +11,8 @@
 
 namespace {
 
-dtm::io::BuildReport sample_report() {
-    dtm::io::BuildReport r;
+dtm::products::BuildReport sample_report() {
+    dtm::products::BuildReport r;
     dtm::io::InputSummary in;
     in.path = "survey \"A\".csv";
     in.format = "csv";
@@ -43,7 +43,7 @@ CPLJSONObject parse(const std::string& text) {
 }
 
 TEST(Report, IsValidJsonWithEscapedStrings) {
-    const CPLJSONObject root = parse(dtm::io::report_json(sample_report()));
+    const CPLJSONObject root = parse(dtm::products::report_json(sample_report()));
     ASSERT_TRUE(root.IsValid());
     const CPLJSONArray inputs = root.GetArray("inputs");
     ASSERT_EQ(inputs.Size(), 1);
@@ -52,7 +52,7 @@ TEST(Report, IsValidJsonWithEscapedStrings) {
 }
 
 TEST(Report, PointAccountingAddsUpToEveryInputRecord) {
-    const CPLJSONObject points = parse(dtm::io::report_json(sample_report())).GetObj("points");
+    const CPLJSONObject points = parse(dtm::products::report_json(sample_report())).GetObj("points");
     EXPECT_EQ(points.GetObj("survey_points").GetLong("merged_duplicates"), 2);
     EXPECT_EQ(points.GetObj("survey_points").GetLong("outside_boundary_or_in_hole"), 1);
     EXPECT_EQ(points.GetLong("skipped_bad_lines"), 2);
@@ -60,7 +60,7 @@ TEST(Report, PointAccountingAddsUpToEveryInputRecord) {
 }
 
 TEST(Report, CrsConflictsAreaAndTimingsAreReported) {
-    const CPLJSONObject root = parse(dtm::io::report_json(sample_report()));
+    const CPLJSONObject root = parse(dtm::products::report_json(sample_report()));
     EXPECT_EQ(root.GetObj("crs").GetString("authority"), "EPSG:5514");
     EXPECT_EQ(root.GetObj("conflicts").GetLong("count"), 1);
     EXPECT_DOUBLE_EQ(root.GetObj("conflicts").GetArray("items")[0].GetDouble("difference"), 0.5);

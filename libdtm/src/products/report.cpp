@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
-// JSON report of `dtm build`, written with a small streaming JSON builder (no dependency).
+// The JSON report of products::build(), written with a small streaming JSON builder.
 // Numbers use the shortest text that reads back to the same double; NaN and infinities, which
 // JSON cannot hold, become null.
-#include "dtm/io/formats/report.hpp"
+#include "dtm/products/report.hpp"
 
 #include <ogr_spatialref.h>
 
@@ -15,7 +15,7 @@
 
 #include "dtm/core/error.hpp"
 
-namespace dtm::io {
+namespace dtm::products {
 namespace {
 
 class Json {
@@ -112,7 +112,7 @@ private:
 
 void write_inputs(Json& json, const BuildReport& report) {
     json.open('[', "inputs");
-    for (const InputSummary& in : report.inputs) {
+    for (const io::InputSummary& in : report.inputs) {
         json.open('{');
         json.value("path", in.path.generic_string());
         json.value("format", in.format);
@@ -279,4 +279,4 @@ void write_report(const BuildReport& report, const std::filesystem::path& path) 
     }
 }
 
-}  // namespace dtm::io
+}  // namespace dtm::products
