@@ -39,13 +39,13 @@ struct KernelPoint : Point2 {
     std::uint32_t id = 0;
 };
 
-/// Bit flags per edge: which constraint kinds run along it.
+/// Bit flags per edge: which constraint kinds run along it (constraint_bit, core/tin.hpp).
 enum ConstraintBits : std::uint8_t {
     constraint_none = 0,
-    constraint_breakline = 1,
-    constraint_soft = 2,
-    constraint_boundary = 4,
-    constraint_hole = 8,
+    constraint_breakline = constraint_bit(ConstraintKind::breakline),
+    constraint_soft = constraint_bit(ConstraintKind::soft_breakline),
+    constraint_boundary = constraint_bit(ConstraintKind::boundary),
+    constraint_hole = constraint_bit(ConstraintKind::hole),
 };
 
 inline constexpr VertexId ghost = no_vertex;
