@@ -56,7 +56,7 @@ void search_partition(std::span<const Point3> pts,
                       const Entry* entries,
                       std::size_t count,
                       std::vector<Entry>& table,
-                      std::vector<VertexIndex>& first) {
+                      BigArray<VertexIndex>& first) {
     std::size_t capacity = 16;  // a power of two, at least twice the entries
     while (capacity < 2 * count) capacity *= 2;
     table.assign(capacity, Entry{0, no_vertex});
@@ -78,9 +78,9 @@ void search_partition(std::span<const Point3> pts,
 
 }  // namespace
 
-std::vector<VertexIndex> first_occurrences(std::span<const Point3> pts) {
+BigArray<VertexIndex> first_occurrences(std::span<const Point3> pts) {
     const std::size_t n = pts.size();
-    std::vector<VertexIndex> first(n);
+    BigArray<VertexIndex> first(n);
     unsigned partition_bits = 0;  // partitions of 2^12 to 2^13 points, at most 2^10 of them
     while (partition_bits < 10 && (n >> partition_bits) > (std::size_t{1} << 13)) ++partition_bits;
     const std::size_t partitions = std::size_t{1} << partition_bits;
