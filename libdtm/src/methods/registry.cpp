@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: MIT
+// The explicit table of triangulation methods. Adding a method: its file pair in src/methods/,
+// one row here, its section in docs/algorithms/methods.md.
+#include "dtm/methods/registry.hpp"
+
+#include <array>
+
+#include "dc.hpp"
+
+namespace dtm::methods {
+namespace {
+
+const std::array kMethods{
+    MethodInfo{"dc", Family::delaunay, "000 §3.7; Guibas-Stolfi 1985",
+               "O(n log n) worst case",
+               "the production kernel: divide and conquer in parallel tiles, exact merges",
+               true, false, Output::triangulation, "", &run_dc},
+};
+
+}  // namespace
+
+std::span<const MethodInfo> registry() { return kMethods; }
+
+const MethodInfo* find_method(std::string_view name) {
+    for (const MethodInfo& m : kMethods) {
+        if (m.name == name) return &m;
+    }
+    return nullptr;
+}
+
+std::string_view family_name(Family family) {
+    switch (family) {
+        case Family::delaunay: return "delaunay";
+        case Family::voronoi: return "voronoi";
+        case Family::optimal: return "optimal";
+        case Family::greedy: return "greedy";
+        case Family::constrained: return "constrained";
+        case Family::pseudo: return "pseudo";
+        case Family::enumeration: return "enumeration";
+    }
+    return "?";
+}
+
+}  // namespace dtm::methods
