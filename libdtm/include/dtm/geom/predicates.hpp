@@ -62,9 +62,10 @@ inline constexpr double incircle_underflow_guard = 0x1p-500;
     const double det = detleft - detright;
     const double detsum = std::abs(detleft) + std::abs(detright);
     const double bound = detail::orient_bound_a * (detsum + detail::orient_underflow_guard);
-    // NaN/inf from overflow fail the test and go to the exact path.
+    // NaN/inf from overflow fail the test and go to the exact path. A det that passes is not 0
+    // (bound >= 0), so its sign is +1 or -1, which lets `orient2d(...) > 0` compile to det > 0.
     if (std::abs(det) > bound) [[likely]] {
-        return (det > 0.0) - (det < 0.0);
+        return det > 0.0 ? 1 : -1;
     }
     return detail::orient2d_adaptive(ax, ay, bx, by, cx, cy, detsum);
 }
@@ -107,7 +108,7 @@ inline constexpr double incircle_underflow_guard = 0x1p-500;
                              (std::abs(adxbdy) + std::abs(bdxady) + g) * (clift + g);
     const double bound = detail::incircle_bound_a * permanent;
     if (std::abs(det) > bound) [[likely]] {
-        return (det > 0.0) - (det < 0.0);
+        return det > 0.0 ? 1 : -1;  // not 0: see orient2d
     }
     return detail::incircle_adaptive(ax, ay, bx, by, cx, cy, dx, dy, permanent);
 }
