@@ -6,15 +6,20 @@
 #include <array>
 
 #include "dc.hpp"
+#include "lawson_flip.hpp"
 
 namespace dtm::methods {
 namespace {
 
 const std::array kMethods{
-    MethodInfo{"dc", Family::delaunay, "000 §3.7; Guibas-Stolfi 1985",
-               "O(n log n) worst case",
-               "the production kernel: divide and conquer in parallel tiles, exact merges",
-               true, false, Output::triangulation, "", &run_dc},
+    MethodInfo{"dc", Family::delaunay, "000 §3.7; Guibas-Stolfi 1985", "O(n log n) worst case",
+               "the production kernel: divide and conquer in parallel tiles, exact merges", true,
+               false, Output::triangulation, "", &run_dc},
+    MethodInfo{"lawson-flip", Family::delaunay, "000 §2.4.1, §2.3; 004 Alg. 2; 003",
+               "O(n^2) flips (004), plus the initial triangulation",
+               "Lawson's local improvement: a sweep triangulation, then flips of illegal edges",
+               false, true, Output::triangulation, "initial=sweep order=stack|pass",
+               &run_lawson_flip},
 };
 
 }  // namespace
@@ -30,13 +35,20 @@ const MethodInfo* find_method(std::string_view name) {
 
 std::string_view family_name(Family family) {
     switch (family) {
-        case Family::delaunay: return "delaunay";
-        case Family::voronoi: return "voronoi";
-        case Family::optimal: return "optimal";
-        case Family::greedy: return "greedy";
-        case Family::constrained: return "constrained";
-        case Family::pseudo: return "pseudo";
-        case Family::enumeration: return "enumeration";
+        case Family::delaunay:
+            return "delaunay";
+        case Family::voronoi:
+            return "voronoi";
+        case Family::optimal:
+            return "optimal";
+        case Family::greedy:
+            return "greedy";
+        case Family::constrained:
+            return "constrained";
+        case Family::pseudo:
+            return "pseudo";
+        case Family::enumeration:
+            return "enumeration";
     }
     return "?";
 }
