@@ -4,7 +4,8 @@
 // Prints per method and N: seconds (best of R), ns per N log2 N, the ratio to dc, the
 // method's own peak bytes per point, flips and walk steps per point.
 //
-//   methods_scaling [--methods a,b,...] [--n 1000,10000,...] [--dist uniform] [--repeat R]
+//   methods_scaling [--methods a,b:key=value:key=value,...] [--n 1000,10000,...] [--dist uniform]
+//   [--repeat R]
 //                   [--threads T] [--seed S] [--cap SECONDS]
 //
 // A method whose previous size took longer than --cap seconds (default 20) is skipped at the
@@ -118,8 +119,19 @@ int main(int argc, char** argv) {
         std::printf("%-24s %9zu %10.4f %12.2f %8.2f %8s %8s %8s\n", "dc (1 thread)", n, ref.seconds,
                     1e9 * ref.seconds / nlogn, 1.0, "-", "-", "-");
         options.threads = threads;
-        for (const std::string& name : methods) {
-            const dtm::methods::MethodInfo* m = dtm::methods::find_method(name);
+        for (const std::string& spec : methods) {
+            // name[:key=value]...
+            std::vector<std::string> parts;
+            std::stringstream in(spec);
+            for (std::string part; std::getline(in, part, ':');) parts.push_back(part);
+            const std::string name = spec;
+            options.params.clear();
+            for (std::size_t k = 1; k < parts.size(); ++k) {
+                const auto eq = parts[k].find('=');
+                options.params[parts[k].substr(0, eq)] =
+                    eq == std::string::npos ? "" : parts[k].substr(eq + 1);
+            }
+            const dtm::methods::MethodInfo* m = dtm::methods::find_method(parts.at(0));
             if (m == nullptr) {
                 std::fprintf(stderr, "methods_scaling: no method %s\n", name.c_str());
                 return 2;

@@ -53,7 +53,9 @@ public:
         while (pred_.orient(p_[order[0]], p_[order[1]], p_[order[k]]) == 0) ++k;
         start(order, k);
         for (std::size_t i = k + 1; i < order.size(); ++i) {
-            if ((i & 4095) == 0) progress.report(static_cast<double>(i) / static_cast<double>(order.size()), "sweep");
+            if ((i & 4095) == 0)
+                progress.report(static_cast<double>(i) / static_cast<double>(order.size()),
+                                "sweep");
             add(order[i]);
         }
     }

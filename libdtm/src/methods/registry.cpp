@@ -7,6 +7,7 @@
 
 #include "dc.hpp"
 #include "lawson_flip.hpp"
+#include "randomized_dag.hpp"
 
 namespace dtm::methods {
 namespace {
@@ -20,6 +21,10 @@ const std::array kMethods{
                "Lawson's local improvement: a sweep triangulation, then flips of illegal edges",
                false, true, Output::triangulation, "initial=sweep order=stack|pass",
                &run_lawson_flip},
+    MethodInfo{"randomized-dag", Family::delaunay, "003 Alg. 1-4; de Berg et al. ch. 9",
+               "O(n log n) expected time, O(n) expected memory",
+               "randomized incremental insertion, point location in the history DAG", false, false,
+               Output::triangulation, "super-triangle=symbolic|finite", &run_randomized_dag},
 };
 
 }  // namespace
