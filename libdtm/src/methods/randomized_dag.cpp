@@ -96,18 +96,17 @@ public:
     /// The triangles without a corner of the super-triangle, linked, compacted in place (the
     /// mesh is the output); the history is released first.
     [[nodiscard]] std::vector<Triangle> take_real_triangles(std::size_t& peak) {
-        std::vector<TriangleIndex> renumber(mesh_.tri.size(), no_triangle);
-        peak = std::max(peak, bytes() + detail::bytes_of(renumber));
+        peak = std::max(peak, bytes());
         fate_.clear();
         two_.clear();
         three_.clear();
-        slot_id_ = {};
+        std::vector<std::uint32_t>& renumber = slot_id_;  // reused: same size, no longer needed
         TriangleIndex count = 0;
         for (TriangleIndex t = 0; t < mesh_.tri.size(); ++t) {
             const auto& v = mesh_[t].v;
-            if (!st_.is_corner(v[0]) && !st_.is_corner(v[1]) && !st_.is_corner(v[2])) {
-                renumber[t] = count++;
-            }
+            const bool real =
+                !st_.is_corner(v[0]) && !st_.is_corner(v[1]) && !st_.is_corner(v[2]);
+            renumber[t] = real ? count++ : no_triangle;
         }
         for (TriangleIndex t = 0; t < mesh_.tri.size(); ++t) {
             if (renumber[t] == no_triangle) continue;
@@ -116,6 +115,7 @@ public:
             mesh_.tri[renumber[t]] = x;
         }
         mesh_.tri.resize(count);
+        slot_id_ = {};
         return std::move(mesh_.tri);
     }
 
