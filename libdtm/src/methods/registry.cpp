@@ -6,6 +6,7 @@
 #include <array>
 
 #include "dc.hpp"
+#include "incremental_walk.hpp"
 #include "lawson_flip.hpp"
 #include "randomized_dag.hpp"
 
@@ -21,6 +22,10 @@ const std::array kMethods{
                "Lawson's local improvement: a sweep triangulation, then flips of illegal edges",
                false, true, Output::triangulation, "initial=sweep order=stack|pass",
                &run_lawson_flip},
+    MethodInfo{"incremental-walk", Family::delaunay, "000 §3.8, §3.8.1",
+               "O(N^2) (000); O(N^{1/2}) per walk for sorted input",
+               "incremental insertion on a winged-edge structure, point location by walking", false,
+               false, Output::triangulation, "order=hilbert|random|input", &run_incremental_walk},
     MethodInfo{"randomized-dag", Family::delaunay, "003 Alg. 1-4; de Berg et al. ch. 9",
                "O(n log n) expected time, O(n) expected memory",
                "randomized incremental insertion, point location in the history DAG", false, false,
