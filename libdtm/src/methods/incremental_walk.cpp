@@ -56,8 +56,8 @@ MethodResult run_incremental_walk(const MethodInput& input,
         order = {};
         result.counters.flips = we.flips();
         result.tin.triangles = we.real_triangles();
-        peak = std::max(inserting,
-                        we.bytes() + detail::bytes_of(pts) + detail::bytes_of(result.tin.triangles));
+        peak = std::max(
+            inserting, we.bytes() + detail::bytes_of(pts) + detail::bytes_of(result.tin.triangles));
     }
     result.tin.vertices = std::move(prepared.vertices);
     detail::finish_counters(result, pred, prepared.duplicates, peak);

@@ -6,6 +6,7 @@
 #include <array>
 
 #include "dc.hpp"
+#include "incremental_kirkpatrick.hpp"
 #include "incremental_walk.hpp"
 #include "lawson_flip.hpp"
 #include "randomized_dag.hpp"
@@ -26,6 +27,10 @@ const std::array kMethods{
                "O(N^2) (000); O(N^{1/2}) per walk for sorted input",
                "incremental insertion on a winged-edge structure, point location by walking", false,
                false, Output::triangulation, "order=hilbert|random|input", &run_incremental_walk},
+    MethodInfo{"incremental-kirkpatrick", Family::delaunay, "000 §3.8, §3.8.2; Kirkpatrick 1983",
+               "O(log N) location, O(N) space, O(N log N) preprocessing (000)",
+               "incremental insertion on a winged-edge structure, Kirkpatrick's hierarchy", false,
+               false, Output::triangulation, "", &run_incremental_kirkpatrick},
     MethodInfo{"randomized-dag", Family::delaunay, "003 Alg. 1-4; de Berg et al. ch. 9",
                "O(n log n) expected time, O(n) expected memory",
                "randomized incremental insertion, point location in the history DAG", false, false,
