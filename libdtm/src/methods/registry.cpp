@@ -6,6 +6,7 @@
 #include <array>
 
 #include "dc.hpp"
+#include "delaunay_distance.hpp"
 #include "incremental_kirkpatrick.hpp"
 #include "incremental_walk.hpp"
 #include "lawson_flip.hpp"
@@ -14,28 +15,37 @@
 namespace dtm::methods {
 namespace {
 
+// Rows in the order of the sources' chapters (000 §2.4, §3.x; then lecture 003).
+// clang-format off
 const std::array kMethods{
     MethodInfo{"dc", Family::delaunay, "000 §3.7; Guibas-Stolfi 1985", "O(n log n) worst case",
-               "the production kernel: divide and conquer in parallel tiles, exact merges", true,
-               false, Output::triangulation, "", &run_dc},
+               "the production kernel: divide and conquer in parallel tiles, exact merges",
+               true, false, Output::triangulation, "", &run_dc},
     MethodInfo{"lawson-flip", Family::delaunay, "000 §2.4.1, §2.3; 004 Alg. 2; 003",
                "O(n^2) flips (004), plus the initial triangulation",
                "Lawson's local improvement: a sweep triangulation, then flips of illegal edges",
                false, true, Output::triangulation, "initial=sweep order=stack|pass",
                &run_lawson_flip},
+    MethodInfo{"delaunay-distance", Family::delaunay, "004; 000 §2.4.3",
+               "O(n^2); O(n log n) with suitable structures, O(n) for regular input (004)",
+               "incremental construction by Delaunay distance with an active edge list",
+               false, true, Output::triangulation, "", &run_delaunay_distance},
     MethodInfo{"incremental-walk", Family::delaunay, "000 §3.8, §3.8.1",
                "O(N^2) (000); O(N^{1/2}) per walk for sorted input",
-               "incremental insertion on a winged-edge structure, point location by walking", false,
-               false, Output::triangulation, "order=hilbert|random|input", &run_incremental_walk},
+               "incremental insertion on a winged-edge structure, point location by walking",
+               false, false, Output::triangulation, "order=hilbert|random|input",
+               &run_incremental_walk},
     MethodInfo{"incremental-kirkpatrick", Family::delaunay, "000 §3.8, §3.8.2; Kirkpatrick 1983",
                "O(log N) location, O(N) space, O(N log N) preprocessing (000)",
-               "incremental insertion on a winged-edge structure, Kirkpatrick's hierarchy", false,
-               false, Output::triangulation, "", &run_incremental_kirkpatrick},
+               "incremental insertion on a winged-edge structure, Kirkpatrick's hierarchy",
+               false, false, Output::triangulation, "", &run_incremental_kirkpatrick},
     MethodInfo{"randomized-dag", Family::delaunay, "003 Alg. 1-4; de Berg et al. ch. 9",
                "O(n log n) expected time, O(n) expected memory",
-               "randomized incremental insertion, point location in the history DAG", false, false,
-               Output::triangulation, "super-triangle=symbolic|finite", &run_randomized_dag},
+               "randomized incremental insertion, point location in the history DAG",
+               false, false, Output::triangulation,
+               "super-triangle=symbolic|finite order=random|brio", &run_randomized_dag},
 };
+// clang-format on
 
 }  // namespace
 
