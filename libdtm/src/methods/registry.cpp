@@ -11,6 +11,7 @@
 #include "incremental_walk.hpp"
 #include "lawson_flip.hpp"
 #include "randomized_dag.hpp"
+#include "uniform_grid.hpp"
 
 namespace dtm::methods {
 namespace {
@@ -39,6 +40,10 @@ const std::array kMethods{
                "O(log N) location, O(N) space, O(N log N) preprocessing (000)",
                "incremental insertion on a winged-edge structure, Kirkpatrick's hierarchy",
                false, false, Output::triangulation, "", &run_incremental_kirkpatrick},
+    MethodInfo{"uniform-grid", Family::delaunay, "000 §3.10; Fang and Piegl 1993",
+               "O(N) (000, measured on a 486: Fig. 36)",
+               "uniform-grid advancing front with the vertex-list output (the thesis' method)",
+               false, false, Output::triangulation, "tol=<distance>", &run_uniform_grid},
     MethodInfo{"randomized-dag", Family::delaunay, "003 Alg. 1-4; de Berg et al. ch. 9",
                "O(n log n) expected time, O(n) expected memory",
                "randomized incremental insertion, point location in the history DAG",
