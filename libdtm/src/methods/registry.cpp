@@ -7,10 +7,12 @@
 
 #include "dc.hpp"
 #include "delaunay_distance.hpp"
+#include "dewall.hpp"
 #include "incremental_kirkpatrick.hpp"
 #include "incremental_walk.hpp"
 #include "lawson_flip.hpp"
 #include "randomized_dag.hpp"
+#include "topological_dc.hpp"
 #include "uniform_grid.hpp"
 
 namespace dtm::methods {
@@ -31,6 +33,10 @@ const std::array kMethods{
                "O(n^2); O(n log n) with suitable structures, O(n) for regular input (004)",
                "incremental construction by Delaunay distance with an active edge list",
                false, true, Output::triangulation, "", &run_delaunay_distance},
+    MethodInfo{"topological-dc", Family::delaunay, "000 §3.7; Oishi and Sugihara 1993 [OIS93]",
+               "O(N log N) average and worst case (000)",
+               "topology-oriented divide and conquer: Guibas-Stolfi merge under conditions 1-6",
+               false, false, Output::triangulation, "", &run_topological_dc},
     MethodInfo{"incremental-walk", Family::delaunay, "000 §3.8, §3.8.1",
                "O(N^2) (000); O(N^{1/2}) per walk for sorted input",
                "incremental insertion on a winged-edge structure, point location by walking",
@@ -40,6 +46,10 @@ const std::array kMethods{
                "O(log N) location, O(N) space, O(N log N) preprocessing (000)",
                "incremental insertion on a winged-edge structure, Kirkpatrick's hierarchy",
                false, false, Output::triangulation, "", &run_incremental_kirkpatrick},
+    MethodInfo{"dewall", Family::delaunay, "000 §3.9; Cignoni et al. 1992 [CIG92]",
+               "O(N log N) (000)",
+               "DeWall: the wall across the cut first, then both halves in parallel (TBB)",
+               false, false, Output::triangulation, "", &run_dewall},
     MethodInfo{"uniform-grid", Family::delaunay, "000 §3.10; Fang and Piegl 1993",
                "O(N) (000, measured on a 486: Fig. 36)",
                "uniform-grid advancing front with the vertex-list output (the thesis' method)",

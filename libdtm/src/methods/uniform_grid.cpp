@@ -127,7 +127,6 @@ public:
 
 private:
     VertexIndex start_point() const;
-    VertexIndex nearest_neighbour(VertexIndex p1);
     void emit(VertexIndex v, bool hull) {
         lists_.take(v, scratch_);
         if (!hull && scratch_.size() > 1) scratch_.pop_back();  // cyclic: first came back
@@ -172,40 +171,10 @@ VertexIndex GridSweep::start_point() const {
     return 0;
 }
 
-/// The exact nearest neighbour of p1 by rings of cells; a side of a ring is scanned only while
-/// its distance from p1 is below the best distance (the per-direction pruning of §3.10.3).
-VertexIndex GridSweep::nearest_neighbour(VertexIndex p1) {
-    const int pc = grid_.col(p_[p1].x), pr = grid_.row(p_[p1].y);
-    const double s = grid_.cell_size();
-    VertexIndex best = no_vertex;
-    double best_d = 0.0;  // an upper estimate of the best distance, for the pruning only
-    auto consider = [&](VertexIndex v) {
-        if (v == p1) return;
-        if (best == no_vertex || pred_.compare_distances(p_[p1], p_[v], p_[p1], p_[best]) < 0) {
-            best = v;
-            best_d = std::hypot(p_[v].x - p_[p1].x, p_[v].y - p_[p1].y) * (1.0 + 1e-9);
-        }
-    };
-    grid_.for_each(pc, pr, consider);
-    const int rings = std::max(grid_.cols(), grid_.rows());
-    for (int k = 1; k <= rings; ++k) {
-        // The inner boundary of ring k lies at least (k - 1) cells from p1's cell border.
-        const double reach = (k - 1) * s;
-        if (best != no_vertex && reach > best_d) break;
-        for (int r = pr - k; r <= pr + k; ++r) {
-            for (int c = pc - k; c <= pc + k; ++c) {
-                if (std::max(std::abs(r - pr), std::abs(c - pc)) != k) continue;
-                if (r < 0 || c < 0 || r >= grid_.rows() || c >= grid_.cols()) continue;
-                grid_.for_each(c, r, consider);
-            }
-        }
-    }
-    return best;
-}
-
 void GridSweep::run(const Progress& progress) {
     const VertexIndex p1 = start_point();
-    const VertexIndex p2 = nearest_neighbour(p1);
+    const VertexIndex p2 =
+        detail::nearest_in_grid(grid_, p_, pred_, p1, [](VertexIndex) { return true; });
     used_[p1] = used_[p2] = 1;
     next_[p1] = prev_[p1] = p2;
     next_[p2] = prev_[p2] = p1;

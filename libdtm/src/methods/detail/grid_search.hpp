@@ -183,4 +183,51 @@ private:
     double dlen_ = 0.0;
 };
 
+/// The exact nearest neighbour of point q among the grid's points for which keep(v) holds
+/// (q itself excluded), by rings of cells around q's cell; a ring is scanned only while it can
+/// hold a point closer than the best so far (the per-direction pruning of 000 §3.10.3), and
+/// no farther than @p bound when bound >= 0. no_vertex if there is none.
+template <class Keep>
+VertexIndex nearest_in_grid(const PointGrid& grid,
+                            const std::vector<Point3>& p,
+                            CountingPredicates& pred,
+                            VertexIndex q,
+                            Keep&& keep,
+                            double bound = -1.0) {
+    const int qc = grid.col(p[q].x), qr = grid.row(p[q].y);
+    const double s = grid.cell_size();
+    VertexIndex best = no_vertex;
+    double best_d = bound;  // an upper estimate of the best distance, for the pruning only
+    auto consider = [&](VertexIndex v) {
+        if (v == q || !keep(v)) return;
+        if (bound >= 0.0) {
+            const double dx = p[v].x - p[q].x, dy = p[v].y - p[q].y;
+            if (std::sqrt(dx * dx + dy * dy) > bound * (1.0 + 1e-9)) return;
+        }
+        if (best == no_vertex || pred.compare_distances(p[q], p[v], p[q], p[best]) < 0) {
+            const double dx = p[v].x - p[q].x, dy = p[v].y - p[q].y;
+            best = v;
+            best_d = std::sqrt(dx * dx + dy * dy) * (1.0 + 1e-9);
+        }
+    };
+    grid.for_each(qc, qr, consider);
+    const int rings = std::max(grid.cols(), grid.rows());
+    for (int k = 1; k <= rings; ++k) {
+        // Ring k lies at least (k - 1) cells beyond q's cell.
+        if (best_d >= 0.0 && (k - 1) * s > best_d) break;
+        const int r0 = qr - k, r1 = qr + k, c0 = qc - k, c1 = qc + k;
+        for (int r = std::max(r0, 0); r <= std::min(r1, grid.rows() - 1); ++r) {
+            if (r == r0 || r == r1) {
+                for (int c = std::max(c0, 0); c <= std::min(c1, grid.cols() - 1); ++c) {
+                    grid.for_each(c, r, consider);
+                }
+            } else {
+                if (c0 >= 0) grid.for_each(c0, r, consider);
+                if (c1 < grid.cols()) grid.for_each(c1, r, consider);
+            }
+        }
+    }
+    return best;
+}
+
 }  // namespace dtm::methods::detail
