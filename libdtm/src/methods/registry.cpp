@@ -11,6 +11,7 @@
 #include "incremental_kirkpatrick.hpp"
 #include "incremental_walk.hpp"
 #include "lawson_flip.hpp"
+#include "lifting.hpp"
 #include "randomized_dag.hpp"
 #include "topological_dc.hpp"
 #include "uniform_grid.hpp"
@@ -33,6 +34,10 @@ const std::array kMethods{
                "O(n^2); O(n log n) with suitable structures, O(n) for regular input (004)",
                "incremental construction by Delaunay distance with an active edge list",
                false, true, Output::triangulation, "", &run_delaunay_distance},
+    MethodInfo{"lifting", Family::delaunay, "000 §2.4.4; Brown 1979, Clarkson-Shor 1989",
+               "O(n log n) expected (randomized 3-D hull)",
+               "lower convex hull of the points lifted to the paraboloid (exact orient3d)",
+               false, false, Output::triangulation, "", &run_lifting},
     MethodInfo{"topological-dc", Family::delaunay, "000 §3.7; Oishi and Sugihara 1993 [OIS93]",
                "O(N log N) average and worst case (000)",
                "topology-oriented divide and conquer: Guibas-Stolfi merge under conditions 1-6",

@@ -23,7 +23,7 @@ namespace dtm::methods {
 namespace {
 
 struct ExactPredicates {
-    const std::vector<Point3>& p;
+    const std::vector<Point2>& p;
     detail::CountingPredicates& pred;
     int orient(VertexIndex a, VertexIndex b, VertexIndex c) {
         return pred.orient(p[a], p[b], p[c]);
@@ -42,44 +42,70 @@ MethodResult run_topological_dc(const MethodInput& input,
     params.finish();
     detail::CountingPredicates pred;
     detail::PreparedPoints prepared = detail::prepare_points("topological-dc", input, pred);
-    const std::vector<Point3>& p = prepared.vertices;
+    // Work on a copy sorted lexicographically (the division's order), so that each half's
+    // points are contiguous in memory; triangles are mapped back at the end.
+    std::vector<VertexIndex> perm(prepared.vertices.size());
+    for (VertexIndex i = 0; i < perm.size(); ++i) perm[i] = i;
+    {
+        const std::vector<Point3>& in = prepared.vertices;
+        std::sort(perm.begin(), perm.end(), [&](VertexIndex a, VertexIndex b) {
+            return in[a].x < in[b].x || (in[a].x == in[b].x && in[a].y < in[b].y);
+        });
+    }
+    std::vector<Point2> p(perm.size());
+    for (std::size_t k = 0; k < p.size(); ++k) p[k] = prepared.vertices[perm[k]].xy();
     std::vector<VertexIndex> order(p.size());
     for (VertexIndex i = 0; i < order.size(); ++i) order[i] = i;
-    std::sort(order.begin(), order.end(), [&](VertexIndex a, VertexIndex b) {
-        return p[a].x < p[b].x || (p[a].x == p[b].x && p[a].y < p[b].y);
-    });
     progress.report(0.1, "dividing");
     ExactPredicates exact{p, pred};
     detail::TopologicalDc<ExactPredicates> dc(std::move(order), exact);
     dc.run();
     progress.check();
+    const std::size_t working = dc.edges().bytes() + detail::bytes_of(p) +
+                                detail::bytes_of(prepared.vertices) + 2 * detail::bytes_of(perm);
+    p = {};
+    const std::vector<Point3>& v = prepared.vertices;
     const detail::EdgeAlgebra& q = dc.edges();
     // The counter-clockwise faces of three edges are the triangles (the outer face runs
-    // clockwise).
-    std::vector<detail::TriangleCorners> triangles;
+    // clockwise); each half-edge learns its face, so the links come from the twins.
+    std::vector<TriangleIndex> face(q.half_edges(), no_triangle);
+    std::vector<Triangle> triangles;
     triangles.reserve(2 * p.size());
-    std::vector<bool> seen(q.half_edges(), false);
+    std::vector<detail::HalfEdge> first;
+    first.reserve(2 * p.size());
     for (detail::HalfEdge e = 0; e < q.half_edges(); ++e) {
-        if (seen[e] || !q.alive(e)) continue;
+        if (face[e] != no_triangle || !q.alive(e)) continue;
         const detail::HalfEdge f = q.lnext(e);
         const detail::HalfEdge g = q.lnext(f);
-        seen[e] = seen[f] = seen[g] = true;
-        if (q.lnext(g) != e) {
-            for (detail::HalfEdge h = q.lnext(g); h != e; h = q.lnext(h)) seen[h] = true;
+        if (q.lnext(g) != e ||
+            pred.orient(v[perm[q.org(e)]], v[perm[q.org(f)]], v[perm[q.org(g)]]) <= 0) {
             continue;
         }
-        const detail::TriangleCorners t{q.org(e), q.org(f), q.org(g)};
-        if (pred.orient(p[t[0]], p[t[1]], p[t[2]]) > 0) triangles.push_back(t);
+        const auto t = static_cast<TriangleIndex>(triangles.size());
+        face[e] = face[f] = face[g] = t;
+        Triangle x;
+        x.v = {perm[q.org(e)], perm[q.org(f)], perm[q.org(g)]};
+        triangles.push_back(x);
+        first.push_back(e);
+    }
+    for (TriangleIndex t = 0; t < triangles.size(); ++t) {
+        // v[0] = org(e): opposite it lies the edge f = lnext(e), and so on.
+        const detail::HalfEdge e = first[t];
+        const detail::HalfEdge f = q.lnext(e);
+        const detail::HalfEdge g = q.lnext(f);
+        triangles[t].n = {face[detail::EdgeAlgebra::sym(f)], face[detail::EdgeAlgebra::sym(g)],
+                          face[detail::EdgeAlgebra::sym(e)]};
     }
     MethodResult result;
     const detail::MergeCounts& c = dc.counts();
     result.counters.extra["deletions"] = c.deletions;
     result.counters.extra["refused_deletions"] = c.refused_deletions;
     result.counters.extra["conflicts"] = c.conflicts;
-    const std::size_t peak = q.bytes() + detail::bytes_of(p) + p.size() * sizeof(VertexIndex) +
-                             detail::bytes_of(triangles) + seen.capacity() / 8 +
-                             triangles.size() * sizeof(Triangle);
-    result.tin = detail::tin_from_triangles(std::move(prepared.vertices), triangles);
+    const std::size_t peak = std::max(
+        working, q.bytes() + detail::bytes_of(v) + detail::bytes_of(perm) + detail::bytes_of(face) +
+                     detail::bytes_of(first) + detail::bytes_of(triangles));
+    result.tin.vertices = std::move(prepared.vertices);
+    result.tin.triangles = std::move(triangles);
     detail::finish_counters(result, pred, prepared.duplicates, peak);
     progress.report(1.0, "triangulated");
     return result;

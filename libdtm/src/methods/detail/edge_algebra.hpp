@@ -18,52 +18,44 @@ inline constexpr HalfEdge no_half_edge = 0xffffffffu;
 
 class EdgeAlgebra {
 public:
-    void reserve(std::size_t edges) {
-        org_.reserve(2 * edges);
-        onext_.reserve(2 * edges);
-        oprev_.reserve(2 * edges);
-    }
+    void reserve(std::size_t edges) { he_.reserve(2 * edges); }
 
     [[nodiscard]] static HalfEdge sym(HalfEdge e) noexcept { return e ^ 1u; }
-    [[nodiscard]] VertexIndex org(HalfEdge e) const noexcept { return org_[e]; }
-    [[nodiscard]] VertexIndex dest(HalfEdge e) const noexcept { return org_[e ^ 1u]; }
+    [[nodiscard]] VertexIndex org(HalfEdge e) const noexcept { return he_[e].org; }
+    [[nodiscard]] VertexIndex dest(HalfEdge e) const noexcept { return he_[e ^ 1u].org; }
     /// Next counter-clockwise around the origin.
-    [[nodiscard]] HalfEdge onext(HalfEdge e) const noexcept { return onext_[e]; }
+    [[nodiscard]] HalfEdge onext(HalfEdge e) const noexcept { return he_[e].onext; }
     /// Next clockwise around the origin.
-    [[nodiscard]] HalfEdge oprev(HalfEdge e) const noexcept { return oprev_[e]; }
+    [[nodiscard]] HalfEdge oprev(HalfEdge e) const noexcept { return he_[e].oprev; }
     /// Next counter-clockwise around the left face.
-    [[nodiscard]] HalfEdge lnext(HalfEdge e) const noexcept { return oprev_[e ^ 1u]; }
+    [[nodiscard]] HalfEdge lnext(HalfEdge e) const noexcept { return he_[e ^ 1u].oprev; }
     /// Previous around the right face (clockwise from the destination).
-    [[nodiscard]] HalfEdge rprev(HalfEdge e) const noexcept { return onext_[e ^ 1u]; }
+    [[nodiscard]] HalfEdge rprev(HalfEdge e) const noexcept { return he_[e ^ 1u].onext; }
 
     /// A new isolated edge a -> b.
     HalfEdge make_edge(VertexIndex a, VertexIndex b) {
         HalfEdge e;
         if (free_ != no_half_edge) {
             e = free_;
-            free_ = onext_[e];
+            free_ = he_[e].onext;
         } else {
-            e = static_cast<HalfEdge>(org_.size());
-            org_.resize(org_.size() + 2);
-            onext_.resize(onext_.size() + 2);
-            oprev_.resize(oprev_.size() + 2);
+            e = static_cast<HalfEdge>(he_.size());
+            he_.resize(he_.size() + 2);
         }
-        org_[e] = a;
-        org_[e ^ 1u] = b;
-        onext_[e] = oprev_[e] = e;
-        onext_[e ^ 1u] = oprev_[e ^ 1u] = e ^ 1u;
+        he_[e] = {a, e, e};
+        he_[e ^ 1u] = {b, e ^ 1u, e ^ 1u};
         ++live_;
         return e;
     }
 
     /// Guibas-Stolfi splice on the origin rings of a and b (joins two rings or splits one).
     void splice(HalfEdge a, HalfEdge b) noexcept {
-        const HalfEdge alpha = onext_[a];
-        const HalfEdge beta = onext_[b];
-        onext_[a] = beta;
-        onext_[b] = alpha;
-        oprev_[beta] = a;
-        oprev_[alpha] = b;
+        const HalfEdge alpha = he_[a].onext;
+        const HalfEdge beta = he_[b].onext;
+        he_[a].onext = beta;
+        he_[b].onext = alpha;
+        he_[beta].oprev = a;
+        he_[alpha].oprev = b;
     }
 
     /// A new edge from a's destination to b's origin, in the face left of both.
@@ -75,26 +67,27 @@ public:
     }
 
     void delete_edge(HalfEdge e) noexcept {
-        splice(e, oprev_[e]);
-        splice(sym(e), oprev_[sym(e)]);
+        splice(e, he_[e].oprev);
+        splice(sym(e), he_[sym(e)].oprev);
         e &= ~1u;
-        org_[e] = org_[e ^ 1u] = no_vertex;
-        onext_[e] = free_;
+        he_[e].org = he_[e ^ 1u].org = no_vertex;
+        he_[e].onext = free_;
         free_ = e;
         --live_;
     }
 
-    [[nodiscard]] bool alive(HalfEdge e) const noexcept { return org_[e] != no_vertex; }
-    [[nodiscard]] std::size_t half_edges() const noexcept { return org_.size(); }
+    [[nodiscard]] bool alive(HalfEdge e) const noexcept { return he_[e].org != no_vertex; }
+    [[nodiscard]] std::size_t half_edges() const noexcept { return he_.size(); }
     [[nodiscard]] std::size_t edges() const noexcept { return live_; }
-    [[nodiscard]] std::size_t bytes() const noexcept {
-        return (org_.capacity() + onext_.capacity() + oprev_.capacity()) * 4;
-    }
+    [[nodiscard]] std::size_t bytes() const noexcept { return he_.capacity() * sizeof(Record); }
 
 private:
-    std::vector<VertexIndex> org_;
-    std::vector<HalfEdge> onext_;
-    std::vector<HalfEdge> oprev_;
+    struct Record {
+        VertexIndex org;
+        HalfEdge onext;
+        HalfEdge oprev;
+    };
+    std::vector<Record> he_;  ///< one record per half-edge: a walk touches one cache line
     HalfEdge free_ = no_half_edge;
     std::size_t live_ = 0;
 };

@@ -198,20 +198,22 @@ private:
             const bool lv = valid_left(lcand);
             const bool rv = valid_right(rcand);
             if (!lv && !rv) break;
-            // Condition 5: a cross edge must not duplicate an edge.
-            const bool l_ok = lv && !adjacent(q_.org(basel), EdgeAlgebra::sym(lcand));
-            const bool r_ok = rv && !adjacent(q_.dest(basel), EdgeAlgebra::sym(rcand));
+            // Condition 5: a cross edge must not duplicate an edge (the preferred one is
+            // checked first, the other only when needed).
             bool take_right = !lv || (rv && pred_.incircle(q_.dest(lcand), q_.org(lcand),
                                                            q_.org(rcand), q_.dest(rcand)) > 0);
-            if (take_right && !r_ok && l_ok) {
-                take_right = false;
-                ++counts_.swapped_choices;
-            } else if (!take_right && !l_ok && r_ok) {
-                take_right = true;
-                ++counts_.swapped_choices;
-            } else if (!l_ok && !r_ok) {
-                ++counts_.conflicts;
-                break;
+            const auto allowed = [&](bool right) {
+                return right ? !adjacent(q_.dest(basel), EdgeAlgebra::sym(rcand))
+                             : !adjacent(q_.org(basel), EdgeAlgebra::sym(lcand));
+            };
+            if (!allowed(take_right)) {
+                if ((take_right ? lv : rv) && allowed(!take_right)) {
+                    take_right = !take_right;
+                    ++counts_.swapped_choices;
+                } else {
+                    ++counts_.conflicts;
+                    break;
+                }
             }
             basel = take_right ? q_.connect(rcand, EdgeAlgebra::sym(basel))
                                : q_.connect(EdgeAlgebra::sym(basel), EdgeAlgebra::sym(lcand));
@@ -306,7 +308,11 @@ private:
     /// left of @p outer), combinatorially: ears are cut off, an ear being two face edges
     /// a -> b -> c with a != c not yet joined (a chord a-c never duplicates an edge).
     void close_face(HalfEdge e, HalfEdge outer) {
-        std::vector<HalfEdge> cycle;
+        if (left_triangle(e) && e != outer && q_.lnext(e) != outer &&
+            q_.lnext(q_.lnext(e)) != outer) {
+            return;  // the usual case: no allocation
+        }
+        std::vector<HalfEdge>& cycle = scratch_;
         for (bool cut = true; cut;) {
             cycle.clear();
             HalfEdge f = e;
@@ -340,6 +346,7 @@ private:
     std::vector<HalfEdge> cross_;    ///< the cross edges of the current merge
     std::vector<HalfEdge> hanging_;  ///< edges out of vertices a deletion left with one edge
     bool hull_hit_ = false;          ///< a deletion took one of the halves' extreme hull edges
+    std::vector<HalfEdge> scratch_;
 };
 
 }  // namespace dtm::methods::detail
