@@ -54,8 +54,11 @@ void link_neighbours(Tin& tin) {
     const std::size_t n = tin.vertices.size();
     const std::size_t count = tin.triangles.size();
     if (count > std::numeric_limits<std::uint32_t>::max() / 3) throw InputError("too many faces");
-    unsigned shift = 12;  // 2^12 row vertices per bucket (about 6 sides each), at most 2^10 buckets
-    while ((n >> shift) >= 1024) ++shift;
+    if (count == 0) return;
+    // 2^12 row vertices per bucket (about 6 sides each), at most 2^10 buckets until the rows
+    // reach 2^16 vertices (Side::row), more buckets beyond
+    unsigned shift = 12;
+    while ((n >> shift) >= 1024 && shift < 16) ++shift;
     const std::size_t buckets = (n >> shift) + 1;
     const std::size_t blocks = (count + block - 1) / block;
     const auto for_block = [&](std::size_t b, auto&& body) {
