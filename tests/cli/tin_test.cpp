@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // `dtm tin` end to end: the real river survey with boundary and hole seeds, byte-identical output
-// for every thread and tile count, stats and reports, bad input (exit 2, nothing written).
+// for every thread and tile count, stats and reports, contour input without its flat triangles
+// (--z-field, --contours-fix-flats), bad input (exit 2, nothing written).
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -8,7 +9,9 @@
 #include <sstream>
 
 #include "dtm/algo/validate.hpp"
+#include "dtm/io/formats/ply.hpp"
 #include "dtm/io/tin_file.hpp"
+#include "support/contour_terrain.hpp"
 #include "support/terrain_fixtures.hpp"
 #include "support/test_support.hpp"
 
@@ -113,6 +116,45 @@ TEST(TinCli, StatsPrintOneJsonObjectWithCountsAndTimings)
                             "\"total\":"}) {
         EXPECT_TRUE(contains(r.out, key)) << key << " missing in " << r.out;
     }
+}
+
+TEST(TinCli, ContourLinesWithZFieldLoseTheirFlatTrianglesUnlessAskedNotTo)
+{
+    ScratchDir dir;
+    std::ostringstream json;
+    json << std::setprecision(12) << R"({"type": "FeatureCollection", "crs": {"type": "name",)"
+         << R"( "properties": {"name": "urn:ogc:def:crs:EPSG::5514"}}, "features": [)";
+    const TerrainInput contours = test::contour_terrain_input(5.0, 2.0);
+    for (std::size_t i = 0; i < contours.breaklines.size(); ++i) {
+        const Polyline& line = contours.breaklines[i];
+        json << (i ? "," : "") << R"({"type": "Feature", "properties": {"ELEV": )"
+             << line.points[0].z << R"(}, "geometry": {"type": "LineString", "coordinates": [)";
+        for (std::size_t k = 0; k <= line.points.size(); ++k) {
+            if (k == line.points.size() && !line.closed) break;
+            const Point3& p = line.points[k % line.points.size()];
+            json << (k ? "," : "") << '[' << p.x << ',' << p.y << ']';
+        }
+        json << "]}}";
+    }
+    json << "]}";
+    const auto path = dir / "contours.geojson";
+    test::write_file(path, json.str());
+    const RunResult fixed = run_dtm({"tin", path.string(), "--z-field", "ELEV", "-o",
+                                     (dir / "a.ply").string(), "--check", "--stats"});
+    ASSERT_EQ(fixed.exit_code, 0) << fixed.err;
+    EXPECT_TRUE(contains(fixed.out, "\"contour_flats\": {\"flat_before\": ")) << fixed.out;
+    const RunResult summary = run_dtm(
+        {"tin", path.string(), "--z-field", "ELEV", "-o", (dir / "b.ply").string()});
+    ASSERT_EQ(summary.exit_code, 0) << summary.err;
+    EXPECT_TRUE(contains(summary.err, "dtm tin: contour flats: ")) << summary.err;
+    const RunResult kept = run_dtm({"tin", path.string(), "--z-field", "ELEV",
+                                    "--no-contours-fix-flats", "-o", (dir / "c.ply").string(),
+                                    "--stats"});
+    ASSERT_EQ(kept.exit_code, 0) << kept.err;
+    EXPECT_FALSE(contains(kept.out, "contour_flats")) << kept.out;
+    const RunResult both = run_dtm({"tin", path.string(), "--contours-fix-flats",
+                                    "--no-contours-fix-flats", "-o", (dir / "d.ply").string()});
+    EXPECT_EQ(both.exit_code, 2);
 }
 
 TEST(TinCli, ReportListsEveryMergedDuplicate)

@@ -11,10 +11,10 @@
 #include "command.hpp"
 #include "contour_flats_args.hpp"
 #include "dtm/algo/contour.hpp"
-#include "dtm/algo/triangulate.hpp"
 #include "dtm/core/error.hpp"
 #include "dtm/io/contour_writer.hpp"
 #include "dtm/io/inputs.hpp"
+#include "dtm/products/surface.hpp"
 #include "input_args.hpp"
 #include "interpolation_args.hpp"
 #include "terminal_progress.hpp"
@@ -26,7 +26,7 @@ namespace {
 struct ContourArgs {
     InputArgs input;
     TriangulateOptions tin;
-    ContourFlatsArgs flats;
+    products::ContourFlats flats = products::ContourFlats::automatic;
     std::string output;
     ContourOptions contour;
     bool quiet = false;
@@ -38,17 +38,15 @@ int run_contour(ContourArgs args) {
     }
     const Progress progress = terminal_progress("contour", args.quiet);
     io::LoadedInputs inputs = io::load_inputs(to_load_options(args.input), progress.sub(0.0, 0.2));
-    TerrainTin built;
-    if (inputs.tin) {
-        built.result.tin = std::move(*inputs.tin);
-    } else {
-        built = triangulate_terrain(inputs, args.input, args.tin, args.flats,
-                                    progress.sub(0.2, 0.6), "contour", args.quiet);
+    const products::Surface surface = products::surface(
+        inputs, surface_options(args.input, args.tin, args.flats), progress.sub(0.2, 0.6));
+    if (surface.contour_flats && !args.quiet) {
+        print_contour_flats(*surface.contour_flats, "contour");
     }
-    const Tin& tin = built.result.tin;
+    const Tin& tin = surface.result.tin;
     args.contour.threads = args.tin.threads;
     args.contour.gradients.threads = args.tin.threads;
-    args.contour.gradients.crease_at_breaklines = !built.contour_input;
+    args.contour.gradients.crease_at_breaklines = !surface.contour_input;
     io::ContourWriter writer(args.output, {.crs_wkt = inputs.crs_wkt});
     contour(tin, args.contour, writer, progress.sub(0.6, 1.0));
     writer.commit();

@@ -12,10 +12,10 @@
 #include "command.hpp"
 #include "contour_flats_args.hpp"
 #include "dtm/algo/rasterize.hpp"
-#include "dtm/algo/triangulate.hpp"
 #include "dtm/core/error.hpp"
 #include "dtm/io/grid_writer.hpp"
 #include "dtm/io/inputs.hpp"
+#include "dtm/products/surface.hpp"
 #include "input_args.hpp"
 #include "interpolation_args.hpp"
 #include "terminal_progress.hpp"
@@ -27,7 +27,7 @@ namespace {
 struct GridArgs {
     InputArgs input;
     TriangulateOptions tin;
-    ContourFlatsArgs flats;
+    products::ContourFlats flats = products::ContourFlats::automatic;
     std::string output;
     double cell = 0.0;
     std::string extent;
@@ -83,14 +83,10 @@ private:
 int run_grid(const GridArgs& args) {
     const Progress progress = terminal_progress("grid", args.quiet);
     io::LoadedInputs inputs = io::load_inputs(to_load_options(args.input), progress.sub(0.0, 0.2));
-    TerrainTin built;
-    if (inputs.tin) {
-        built.result.tin = std::move(*inputs.tin);
-    } else {
-        built = triangulate_terrain(inputs, args.input, args.tin, args.flats,
-                                    progress.sub(0.2, 0.5), "grid", args.quiet);
-    }
-    const Tin& tin = built.result.tin;
+    products::Surface surface = products::surface(
+        inputs, surface_options(args.input, args.tin, args.flats), progress.sub(0.2, 0.5));
+    if (surface.contour_flats && !args.quiet) print_contour_flats(*surface.contour_flats, "grid");
+    const Tin& tin = surface.result.tin;
     if (tin.triangles.empty()) {
         throw InputError("grid: the inputs give no triangle to rasterise");
     }
@@ -105,13 +101,13 @@ int run_grid(const GridArgs& args) {
     io::GridWriter writer(args.output, spec,
                           {.crs_wkt = inputs.crs_wkt, .nodata = args.nodata, .cog = args.cog});
     CountingSink counter(writer, args.nodata);
-    rasterize(
-        tin, spec,
-        {.nodata = args.nodata,
-         .threads = args.tin.threads,
-         .interpolation = args.interpolation,
-         .gradients = {.threads = args.tin.threads, .crease_at_breaklines = !built.contour_input}},
-        counter, progress.sub(0.5, 0.9));
+    rasterize(tin, spec,
+              {.nodata = args.nodata,
+               .threads = args.tin.threads,
+               .interpolation = args.interpolation,
+               .gradients = {.threads = args.tin.threads,
+                             .crease_at_breaklines = !surface.contour_input}},
+              counter, progress.sub(0.5, 0.9));
     writer.commit();
     const std::pair<const std::string*, io::DemDerivative> derived[] = {
         {&args.hillshade, io::DemDerivative::hillshade},

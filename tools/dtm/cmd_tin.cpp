@@ -1,20 +1,22 @@
 // SPDX-License-Identifier: MIT
 // `dtm tin`: read points and breaklines, build the constrained Delaunay TIN, write it by extension.
-// Thin: parse -> options -> io::load_inputs -> dtm::triangulate -> io::write_tin -> report.
+// Thin: parse -> options -> io::load_inputs -> products::surface -> io::write_tin -> report.
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
 
 #include "command.hpp"
+#include "contour_flats_args.hpp"
 #include "dtm/algo/triangulate.hpp"
 #include "dtm/algo/validate.hpp"
 #include "dtm/core/error.hpp"
 #include "dtm/io/atomic_file.hpp"
+#include "dtm/io/json_writer.hpp"
 #include "dtm/io/tin_file.hpp"
-#include "contour_flats_args.hpp"
+#include "dtm/products/surface.hpp"
 #include "input_args.hpp"
-#include "json_text.hpp"
 #include "terminal_progress.hpp"
 #include "tin_args.hpp"
 
@@ -24,7 +26,7 @@ namespace {
 struct TinArgs {
     InputArgs input;
     TriangulateOptions triangulate;
-    ContourFlatsArgs flats;
+    products::ContourFlats flats = products::ContourFlats::automatic;
     std::string output;
     std::string report;
     bool ascii = false;
@@ -38,31 +40,87 @@ double since(std::chrono::steady_clock::time_point t)
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 
+/// --report: every merged duplicate and every height conflict.
 void write_report(const std::string& path, const TriangulateResult& r)
 {
+    using Layout = io::JsonWriter::Layout;
+    io::JsonWriter json;
+    json.begin_object();
+    json.value("duplicates_merged", r.merges.size());
+    json.begin_array("merges");
+    const auto point = [&json](const char* key, const Point3& p) {
+        json.begin_array(key, Layout::inline_);
+        for (const double c : {p.x, p.y, p.z}) json.value({}, c);
+        json.end();
+    };
+    for (const DuplicateMerge& m : r.merges) {
+        json.begin_object({}, Layout::inline_);
+        json.value("kept_input", m.kept_input);
+        json.value("merged_input", m.merged_input);
+        point("kept", m.kept);
+        point("merged", m.merged);
+        json.end();
+    }
+    json.end();
+    json.begin_array("conflicts");
+    for (const ConstraintConflict& c : r.conflicts) {
+        json.begin_object({}, Layout::inline_);
+        json.value("x", c.at.x);
+        json.value("y", c.at.y);
+        json.value("z_first", c.z_first);
+        json.value("z_second", c.z_second);
+        json.end();
+    }
+    json.end();
+    json.end();
     io::AtomicOutput out(path);
     {
-        std::ofstream f(out.temp_path());
-        f << "{\n  \"duplicates_merged\": " << r.merges.size() << ",\n  \"merges\": [";
-        for (std::size_t i = 0; i < r.merges.size(); ++i) {
-            const DuplicateMerge& m = r.merges[i];
-            f << (i ? ",\n    " : "\n    ") << "{\"kept_input\": " << m.kept_input
-              << ", \"merged_input\": " << m.merged_input << ", \"kept\": [" << json_number(m.kept.x)
-              << ", " << json_number(m.kept.y) << ", " << json_number(m.kept.z) << "], \"merged\": ["
-              << json_number(m.merged.x) << ", " << json_number(m.merged.y) << ", " << json_number(m.merged.z)
-              << "]}";
-        }
-        f << "\n  ],\n  \"conflicts\": [";
-        for (std::size_t i = 0; i < r.conflicts.size(); ++i) {
-            const ConstraintConflict& c = r.conflicts[i];
-            f << (i ? ",\n    " : "\n    ") << "{\"x\": " << json_number(c.at.x) << ", \"y\": "
-              << json_number(c.at.y) << ", \"z_first\": " << json_number(c.z_first)
-              << ", \"z_second\": " << json_number(c.z_second) << "}";
-        }
-        f << "\n  ]\n}\n";
+        std::ofstream f(out.temp_path(), std::ios::binary);
+        f << json.str();
         if (!f) throw Error("cannot write the report " + path);
     }
     out.commit();
+}
+
+/// --stats: one line of counts and timings.
+std::string stats_json(const products::Surface& surface, std::size_t skipped_lines,
+                       const std::array<double, 3>& seconds)
+{
+    using Layout = io::JsonWriter::Layout;
+    const TriangulateResult& result = surface.result;
+    const TriangulateStats& s = result.stats;
+    io::JsonWriter json;
+    json.begin_object({}, Layout::inline_);
+    json.value("points_in", s.points_in);
+    json.value("duplicates_merged", s.duplicates_merged);
+    json.value("skipped_lines", skipped_lines);
+    json.value("vertices", result.tin.vertices.size());
+    json.value("triangles", result.tin.triangles.size());
+    json.value("constrained_edges", result.tin.constraints.size());
+    json.value("intersections", s.intersections);
+    json.value("conflicts", s.conflicts);
+    json.value("removed_triangles", s.removed_triangles);
+    if (surface.contour_flats) {
+        const ContourFlatsReport& f = *surface.contour_flats;
+        json.begin_object("contour_flats", Layout::inline_);
+        json.value("flat_before", f.flat_before);
+        json.value("triangles_before", f.triangles_before);
+        json.value("flat_after", f.flat_after);
+        json.value("points_added", f.points_added);
+        json.value("regions", f.regions);
+        json.value("real_flats", f.true_flats);
+        json.value("estimated_peaks", f.peaks.size());
+        json.end();
+    }
+    json.begin_object("seconds", Layout::inline_);
+    json.value("read", seconds[0]);
+    json.value("triangulate", s.seconds_triangulate);
+    json.value("constrain", s.seconds_constrain);
+    json.value("write", seconds[1]);
+    json.value("total", seconds[2]);
+    json.end();
+    json.end();
+    return json.str();
 }
 
 void check_tin(const TriangulateResult& result, const TerrainInput& input)
@@ -83,16 +141,20 @@ int run_tin(const TinArgs& a)
     io::LoadedInputs loaded = io::load_inputs(to_load_options(a.input), progress.sub(0, 0.2));
     const double read_s = since(start);
 
-    TerrainTin built;
-    if (loaded.tin) {
-        built.result.tin = *loaded.tin;
-    } else {
-        // Without --check the input is not needed afterwards: the triangulation consumes it.
-        built = triangulate_terrain(loaded, a.input, a.triangulate, a.flats, progress.sub(0.2, 0.9),
-                                    "tin", a.quiet || a.stats, a.check);
+    // --check compares the TIN with the input, so it keeps a copy; otherwise the triangulation
+    // consumes the input.
+    TerrainInput kept = a.check && !loaded.tin ? loaded.terrain : TerrainInput{};
+    const products::Surface surface = products::surface(
+        loaded, surface_options(a.input, a.triangulate, a.flats), progress.sub(0.2, 0.9));
+    if (surface.contour_flats && !a.quiet && !a.stats) {
+        print_contour_flats(*surface.contour_flats, "tin");
     }
-    const TriangulateResult& result = built.result;
-    if (a.check) check_tin(result, built.input);
+    const TriangulateResult& result = surface.result;
+    if (a.check) {
+        kept.points.insert(kept.points.end(), surface.added_points.begin(),
+                           surface.added_points.end());
+        check_tin(result, kept);
+    }
 
     const auto write_start = std::chrono::steady_clock::now();
     io::TinWriteOptions write_options;
@@ -106,34 +168,11 @@ int run_tin(const TinArgs& a)
     if (result.stats.conflicts > 0 && !a.stats) {
         std::cerr << "dtm: warning: " << result.stats.conflicts
                   << " breakline crossings with heights differing by more than "
-                  << a.triangulate.z_tolerance << " (first at " << json_number(result.conflicts[0].at.x)
-                  << ", " << json_number(result.conflicts[0].at.y) << "; --report lists them all)\n";
+                  << a.triangulate.z_tolerance << " (first at "
+                  << io::json_number(result.conflicts[0].at.x) << ", "
+                  << io::json_number(result.conflicts[0].at.y) << "; --report lists them all)\n";
     }
-    if (a.stats) {
-        const TriangulateStats& s = result.stats;
-        std::cout << "{\"points_in\": " << s.points_in
-                  << ", \"duplicates_merged\": " << s.duplicates_merged
-                  << ", \"skipped_lines\": " << loaded.skipped_lines
-                  << ", \"vertices\": " << result.tin.vertices.size()
-                  << ", \"triangles\": " << result.tin.triangles.size()
-                  << ", \"constrained_edges\": " << result.tin.constraints.size()
-                  << ", \"intersections\": " << s.intersections << ", \"conflicts\": " << s.conflicts
-                  << ", \"removed_triangles\": " << s.removed_triangles;
-        if (built.flats) {
-            const ContourFlatsReport& f = *built.flats;
-            std::cout << ", \"contour_flats\": {\"flat_before\": " << f.flat_before
-                      << ", \"triangles_before\": " << f.triangles_before
-                      << ", \"flat_after\": " << f.flat_after
-                      << ", \"points_added\": " << f.points_added
-                      << ", \"regions\": " << f.regions << ", \"real_flats\": " << f.true_flats
-                      << ", \"estimated_peaks\": " << f.peaks.size() << "}";
-        }
-        std::cout << ", \"seconds\": {\"read\": "
-                  << json_number(read_s) << ", \"triangulate\": " << json_number(s.seconds_triangulate)
-                  << ", \"constrain\": " << json_number(s.seconds_constrain)
-                  << ", \"write\": " << json_number(write_s) << ", \"total\": " << json_number(since(start))
-                  << "}}" << std::endl;
-    }
+    if (a.stats) std::cout << stats_json(surface, loaded.skipped_lines, {read_s, write_s, since(start)}) << std::flush;
     return 0;
 }
 

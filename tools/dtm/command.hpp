@@ -24,5 +24,6 @@ Command info_command();
 Command grid_command();
 Command contour_command();
 Command build_command();
+Command methods_command();
 
 }  // namespace dtm::cli

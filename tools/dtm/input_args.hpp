@@ -5,6 +5,7 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+
 #include <string>
 #include <vector>
 
@@ -19,13 +20,15 @@ struct InputArgs {
     std::vector<std::string> boundaries;
     std::vector<std::string> holes;
     std::vector<std::string> flat_areas;  ///< real flats (lakes): hard breaklines, loaded last
-    io::LoadOptions load;                 ///< everything else the readers take
+    io::ReadOptions read;                 ///< what the readers take
+    io::CrsOptions crs;
 };
 
 /// Declares the positional INPUTS and the reader options on @p app.
 void add_input_options(CLI::App& app, InputArgs& args);
 
-/// The LoadOptions for io::load_inputs (the --flat-areas files come last, as breaklines).
+/// The LoadOptions for io::load_inputs and products::build (the --flat-areas files come last,
+/// as breaklines).
 [[nodiscard]] io::LoadOptions to_load_options(const InputArgs& args);
 
 }  // namespace dtm::cli

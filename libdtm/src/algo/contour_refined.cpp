@@ -218,7 +218,7 @@ public:
                 }
             }
             if (static_cast<double>(base[j]) + count > std::numeric_limits<std::uint32_t>::max()) {
-                throw Error("contour: the refinement has too many vertices; lower --subdivisions");
+                throw Error("contour: the refinement has too many vertices; lower `subdivisions`");
             }
             base[j + 1] = base[j] + count;
         }
@@ -420,7 +420,7 @@ void run(const Tin& tin,
          ContourSink& sink,
          const Progress& progress) {
     if (options.subdivisions == 0 || options.subdivisions > 64) {
-        throw UsageError("contour: subdivisions must be between 1 and 64");
+        throw UsageError("contour: `subdivisions` must be between 1 and 64");
     }
     const Lattice lattice(options.subdivisions);
     const Ranges ranges = height_ranges(tin, interpolant, lattice);
