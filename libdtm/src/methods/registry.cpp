@@ -6,6 +6,9 @@
 #include <array>
 
 #include "dc.hpp"
+#include "voronoi_dc.hpp"
+#include "voronoi_incremental.hpp"
+#include "voronoi_topological.hpp"
 
 namespace dtm::methods {
 namespace {
@@ -15,6 +18,19 @@ const std::array kMethods{
                "O(n log n) worst case",
                "the production kernel: divide and conquer in parallel tiles, exact merges",
                true, false, Output::triangulation, "", &run_dc},
+    MethodInfo{"voronoi-dc", Family::voronoi, "000 §3.4; Shamos-Hoey 1975", "O(n log n)",
+               "Voronoi diagram by divide and conquer: the dividing chain sigma on a DCEL", false,
+               false, Output::voronoi, "", &run_voronoi_dc},
+    MethodInfo{"voronoi-incremental", Family::voronoi, "000 §3.5; Green-Sibson 1978",
+               "O(n) average, O(n^2) worst",
+               "incremental Voronoi diagram with three auxiliary generators, trusting each sign",
+               false, false, Output::voronoi, "faults=P (test: corrupt in-circle signs)",
+               &run_voronoi_incremental},
+    MethodInfo{"voronoi-topological", Family::voronoi, "000 §3.6; Sugihara-Iri 1992",
+               "O(n) average, O(n^2) worst",
+               "topology-oriented incremental Voronoi diagram: valid topology under any signs",
+               false, false, Output::voronoi, "faults=P (test: corrupt in-circle signs)",
+               &run_voronoi_topological},
 };
 
 }  // namespace

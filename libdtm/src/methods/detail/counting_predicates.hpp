@@ -6,6 +6,7 @@
 
 #include <cstdint>
 
+#include "dtm/geom/bisector_predicates.hpp"
 #include "dtm/geom/predicates.hpp"
 #include "dtm/methods/method.hpp"
 
@@ -24,16 +25,24 @@ public:
         ++incircle_;
         return geom::incircle(a, b, c, d);
     }
+    /// geom::distance_order: which of a and b is nearer to p (counted in extra["distance_calls"]).
+    template <class P, class A, class B>
+    [[nodiscard]] int distance_order(const P& p, const A& a, const B& b) noexcept {
+        ++distance_;
+        return geom::distance_order(p, a, b);
+    }
     [[nodiscard]] std::uint64_t orient_calls() const noexcept { return orient_; }
     [[nodiscard]] std::uint64_t incircle_calls() const noexcept { return incircle_; }
-    void add_to(MethodCounters& counters) const noexcept {
+    void add_to(MethodCounters& counters) const {
         counters.orient_calls += orient_;
         counters.incircle_calls += incircle_;
+        if (distance_ != 0) counters.extra["distance_calls"] += distance_;
     }
 
 private:
     std::uint64_t orient_ = 0;
     std::uint64_t incircle_ = 0;
+    std::uint64_t distance_ = 0;
 };
 
 }  // namespace dtm::methods::detail
