@@ -14,6 +14,7 @@
 
 #include <cmath>
 
+#include "dtm/geom/predicates.hpp"
 #include "geom/detail/bigint.hpp"
 
 namespace dtm::geom {
@@ -103,19 +104,6 @@ struct Exact {
 
 }  // namespace
 
-int distance_order(double px, double py, double ax, double ay, double bx, double by) noexcept {
-    const Point2 p{px, py};
-    const Point2 a{ax, ay};
-    const Point2 b{bx, by};
-    const double v[6] = {px, py, ax, ay, bx, by};
-    if (in_range(v, 6)) {
-        const int s = certain_sign(power_difference(p, a, b));
-        if (s != 2) return s;
-    }
-    const Exact exact{detail::common_exponent(v, 6)};
-    return exact.power_difference(p, a, b).sign;
-}
-
 int dot_sign(double ax,
              double ay,
              double bx,
@@ -148,7 +136,7 @@ int crossing_order(
     // X = a + t (b - a) with F_h(X) = 0, F_h(x) = |x-g|^2 - |x-h|^2 affine along the segment:
     // F_k(X) = (F_h(a) F_k(b) - F_k(a) F_h(b)) / (F_h(a) - F_h(b)), and the denominator has the
     // sign of F_h(a) (a and b are strictly on opposite sides).
-    const int side_a = distance_order(a, g, h);
+    const int side_a = compare_distances(a, g, a, h);
     const double v[10] = {a.x, a.y, b.x, b.y, g.x, g.y, h.x, h.y, k.x, k.y};
     if (in_range(v, 10)) {
         const Approx hb = power_difference(b, g, h);

@@ -6,7 +6,6 @@
 
 #include <cstdint>
 
-#include "dtm/geom/bisector_predicates.hpp"
 #include "dtm/geom/predicates.hpp"
 #include "dtm/methods/method.hpp"
 
@@ -25,18 +24,29 @@ public:
         ++incircle_;
         return geom::incircle(a, b, c, d);
     }
-    /// geom::distance_order: which of a and b is nearer to p (counted in extra["distance_calls"]).
-    template <class P, class A, class B>
-    [[nodiscard]] int distance_order(const P& p, const A& a, const B& b) noexcept {
+    /// The lifted 3-D orientation (counted with the orientations).
+    template <class A, class B, class C, class D>
+    [[nodiscard]] int orient3d_lifted(const A& a, const B& b, const C& c, const D& d) noexcept {
+        ++orient_;
+        return geom::orient3d_lifted(a, b, c, d);
+    }
+    /// Sign of |a-b|^2 - |c-d|^2 (counted as "distance_calls").
+    template <class A, class B, class C, class D>
+    [[nodiscard]] int compare_distances(const A& a, const B& b, const C& c, const D& d) noexcept {
         ++distance_;
-        return geom::distance_order(p, a, b);
+        return geom::compare_distances(a, b, c, d);
     }
     [[nodiscard]] std::uint64_t orient_calls() const noexcept { return orient_; }
     [[nodiscard]] std::uint64_t incircle_calls() const noexcept { return incircle_; }
-    void add_to(MethodCounters& counters) const {
+    void add(const CountingPredicates& other) noexcept {
+        orient_ += other.orient_;
+        incircle_ += other.incircle_;
+        distance_ += other.distance_;
+    }
+    void add_to(MethodCounters& counters) const noexcept {
         counters.orient_calls += orient_;
         counters.incircle_calls += incircle_;
-        if (distance_ != 0) counters.extra["distance_calls"] += distance_;
+        if (distance_ > 0) counters.extra["distance_calls"] += distance_;
     }
 
 private:

@@ -11,7 +11,6 @@
 #include <string>
 
 #include "dtm/core/error.hpp"
-#include "dtm/geom/bisector_predicates.hpp"
 
 namespace dtm::methods::detail {
 namespace {
@@ -181,7 +180,7 @@ std::uint32_t IncrementalVoronoi::nearest(const Point2& p) {
         std::uint32_t h = start;
         do {
             const std::uint32_t q = face(h ^ 1u);
-            if (q < real_ && pred_.distance_order(p, sites_.xy[q], sites_.xy[g]) < 0) {
+            if (q < real_ && pred_.compare_distances(p, sites_.xy[q], p, sites_.xy[g]) < 0) {
                 g = q;
                 moved = true;
                 ++walk_steps_;
