@@ -21,6 +21,7 @@
 #include "dtm/core/error.hpp"
 #include "dtm/geom/predicates.hpp"
 #include "dtm/methods/registry.hpp"
+#include "methods_fixtures.hpp"
 #include "support/terrain_fixtures.hpp"
 
 namespace dtm::methods {
@@ -121,7 +122,7 @@ void expect_valid(const std::string& name, std::span<const Point3> pts, const Me
 TEST(Voronoi, DualEqualsTheKernelOnRandomPoints) {
     for (const std::uint32_t seed : {1u, 2u, 3u, 4u}) {
         for (const std::size_t n : {3u, 4u, 5u, 7u, 10u, 31u, 100u, 1000u}) {
-            const auto pts = test::random_points(n, seed * 7919 + static_cast<std::uint32_t>(n));
+            const auto pts = dtm::test::random_points(n, seed * 7919 + static_cast<std::uint32_t>(n));
             const MethodResult dc = run("dc", pts);
             for (const std::string& name : voronoi_methods()) {
                 SCOPED_TRACE(name + " n=" + std::to_string(n) + " seed=" + std::to_string(seed));
@@ -197,7 +198,7 @@ TEST(Voronoi, DegenerateSmallSetsGiveOneCanonicalDiagram) {
 
 // A tilted grid is cocircular everywhere: one Voronoi vertex of degree 4 per grid square.
 TEST(Voronoi, GridVerticesHaveDegreeFour) {
-    const auto pts = test::tilted_grid(9, 7, 2.5, 0.0, 100.0, 200.0);
+    const auto pts = dtm::test::tilted_grid(9, 7, 2.5, 0.0, 100.0, 200.0);
     for (const std::string& name : voronoi_methods()) {
         SCOPED_TRACE(name);
         const MethodResult r = run(name, pts);
@@ -262,7 +263,7 @@ TEST(Voronoi, CollinearPointsGiveParallelLines) {
 }
 
 TEST(Voronoi, DuplicatesHaveNoRegionAndTheTinKeepsTheFirst) {
-    auto pts = test::random_points(200, 11);
+    auto pts = dtm::test::random_points(200, 11);
     pts.insert(pts.begin() + 50, pts[10]);
     pts.push_back(pts[3]);
     pts.push_back({pts[7].x, pts[7].y, 99.0});
@@ -280,16 +281,16 @@ TEST(Voronoi, DuplicatesHaveNoRegionAndTheTinKeepsTheFirst) {
 }
 
 TEST(Voronoi, SurveyCoordinatesAndClusters) {
-    auto pts = test::random_points(3000, 5, test::sjtsk_e, test::sjtsk_n, 500.0);
+    auto pts = dtm::test::random_points(3000, 5, dtm::test::sjtsk_e, dtm::test::sjtsk_n, 500.0);
     // A tight cluster and a nearly collinear arc of a huge circle next to it.
     std::mt19937_64 rng(2);
     std::normal_distribution<double> g(0.0, 0.01);
     for (int i = 0; i < 500; ++i)
-        pts.push_back({test::sjtsk_e + 250 + g(rng), test::sjtsk_n + 250 + g(rng), 0});
+        pts.push_back({dtm::test::sjtsk_e + 250 + g(rng), dtm::test::sjtsk_n + 250 + g(rng), 0});
     for (int i = 0; i < 300; ++i) {
         const double t = -0.00071234 + 0.002 * i / 300.0;  // not symmetric about 0
         pts.push_back(
-            {test::sjtsk_e + 1e6 * std::sin(t), test::sjtsk_n - 1e6 * (1 - std::cos(t)) - 10, 0});
+            {dtm::test::sjtsk_e + 1e6 * std::sin(t), dtm::test::sjtsk_n - 1e6 * (1 - std::cos(t)) - 10, 0});
     }
     const MethodResult dc = run("dc", pts);
     for (const std::string& name : voronoi_methods()) {
@@ -306,7 +307,7 @@ TEST(Voronoi, TypedRefusalsAndParameters) {
     bad.params["nonsense"] = "1";
     MethodOptions faults;
     faults.params["faults"] = "2";
-    const auto pts = test::random_points(20, 1);
+    const auto pts = dtm::test::random_points(20, 1);
     for (const std::string& name : voronoi_methods()) {
         EXPECT_THROW((void)run(name, one), InputError) << name;
         EXPECT_THROW((void)run(name, pts, bad), UsageError) << name;
@@ -319,7 +320,7 @@ TEST(Voronoi, TypedRefusalsAndParameters) {
 // 000 §3.3.2: the Preparata-Shamos edge nodes; VRCHOL lists a vertex's edges counter-clockwise,
 // OBLAST a region's edges clockwise (checked through the generators they lead to).
 TEST(Voronoi, EdgeNodeDcelTraversals) {
-    const auto pts = test::random_points(300, 17);
+    const auto pts = dtm::test::random_points(300, 17);
     const MethodResult r = run("voronoi-dc", pts);
     const EdgeNodeDcel dcel = edge_node_dcel(r.voronoi);
     ASSERT_EQ(dcel.v1.size(), r.voronoi.half_edges.size() / 2);
@@ -370,7 +371,7 @@ TEST(Voronoi, EdgeNodeDcelTraversals) {
 // R32: the convex hull read off the rays (each separates two hull neighbours) is the hull of
 // the kernel's triangulation.
 TEST(Voronoi, HullFromTheRays) {
-    const auto pts = test::random_points(1000, 23);
+    const auto pts = dtm::test::random_points(1000, 23);
     const MethodResult dc = run("dc", pts);
     std::set<std::pair<VertexIndex, VertexIndex>> hull;
     for (const Triangle& t : dc.tin.triangles) {
@@ -392,9 +393,34 @@ TEST(Voronoi, HullFromTheRays) {
     }
 }
 
+// The lab's and the degenerate families of point_sets.hpp, plain and at survey coordinates
+// with millimetre rounding: valid diagrams, the same from every method, duals that are
+// Delaunay triangulations (the kernel's where that is unique).
+TEST(Voronoi, EveryPointSetFamily) {
+    for (const Distribution dist : all_distributions()) {
+        for (const std::size_t n : {60u, 700u}) {
+            for (const bool survey : {false, true}) {
+                SCOPED_TRACE(std::string(distribution_name(dist)) + " n=" + std::to_string(n) +
+                             (survey ? " survey" : ""));
+                const auto pts = generate_points(dist, n, 3, survey ? test::sjtsk_mm() : PointSetOptions{});
+                std::vector<Canonical> diagrams;
+                for (const std::string& name : voronoi_methods()) {
+                    SCOPED_TRACE(name);
+                    test::expect_delaunay_like_dc(name, pts);
+                    const MethodResult r = run(name, pts);
+                    const CheckReport check = verify_voronoi(r.voronoi, pts);
+                    EXPECT_TRUE(check.ok()) << check.text();
+                    diagrams.push_back(canonical(r.voronoi));
+                }
+                for (std::size_t i = 1; i < diagrams.size(); ++i) EXPECT_TRUE(diagrams[i] == diagrams[0]);
+            }
+        }
+    }
+}
+
 // The validator can fail: each corruption of a valid diagram is caught.
 TEST(Voronoi, ValidatorCatchesCorruptions) {
-    const auto pts = test::random_points(200, 29);
+    const auto pts = dtm::test::random_points(200, 29);
     const MethodResult r = run("voronoi-dc", pts);
     ASSERT_TRUE(verify_voronoi(r.voronoi, pts).ok());
     const auto broken = [&](auto&& mutate) {
