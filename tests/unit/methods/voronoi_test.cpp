@@ -11,6 +11,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <numbers>
 #include <random>
 #include <set>
 #include <string>
@@ -122,7 +123,8 @@ void expect_valid(const std::string& name, std::span<const Point3> pts, const Me
 TEST(Voronoi, DualEqualsTheKernelOnRandomPoints) {
     for (const std::uint32_t seed : {1u, 2u, 3u, 4u}) {
         for (const std::size_t n : {3u, 4u, 5u, 7u, 10u, 31u, 100u, 1000u}) {
-            const auto pts = dtm::test::random_points(n, seed * 7919 + static_cast<std::uint32_t>(n));
+            const auto pts =
+                dtm::test::random_points(n, seed * 7919 + static_cast<std::uint32_t>(n));
             const MethodResult dc = run("dc", pts);
             for (const std::string& name : voronoi_methods()) {
                 SCOPED_TRACE(name + " n=" + std::to_string(n) + " seed=" + std::to_string(seed));
@@ -289,8 +291,8 @@ TEST(Voronoi, SurveyCoordinatesAndClusters) {
         pts.push_back({dtm::test::sjtsk_e + 250 + g(rng), dtm::test::sjtsk_n + 250 + g(rng), 0});
     for (int i = 0; i < 300; ++i) {
         const double t = -0.00071234 + 0.002 * i / 300.0;  // not symmetric about 0
-        pts.push_back(
-            {dtm::test::sjtsk_e + 1e6 * std::sin(t), dtm::test::sjtsk_n - 1e6 * (1 - std::cos(t)) - 10, 0});
+        pts.push_back({dtm::test::sjtsk_e + 1e6 * std::sin(t),
+                       dtm::test::sjtsk_n - 1e6 * (1 - std::cos(t)) - 10, 0});
     }
     const MethodResult dc = run("dc", pts);
     for (const std::string& name : voronoi_methods()) {
@@ -344,8 +346,8 @@ TEST(Voronoi, EdgeNodeDcelTraversals) {
         int turns = 0;
         for (int i = 0; i < 3; ++i) {
             double d = angles[(i + 1) % 3] - angles[i];
-            while (d < 0) d += 2 * M_PI;
-            turns += d < M_PI ? 1 : 0;
+            while (d < 0) d += 2 * std::numbers::pi;
+            turns += d < std::numbers::pi ? 1 : 0;
         }
         EXPECT_GE(turns, 2) << "vertex " << v;
     }
@@ -402,7 +404,8 @@ TEST(Voronoi, EveryPointSetFamily) {
             for (const bool survey : {false, true}) {
                 SCOPED_TRACE(std::string(distribution_name(dist)) + " n=" + std::to_string(n) +
                              (survey ? " survey" : ""));
-                const auto pts = generate_points(dist, n, 3, survey ? test::sjtsk_mm() : PointSetOptions{});
+                const auto pts =
+                    generate_points(dist, n, 3, survey ? test::sjtsk_mm() : PointSetOptions{});
                 std::vector<Canonical> diagrams;
                 for (const std::string& name : voronoi_methods()) {
                     SCOPED_TRACE(name);
@@ -412,7 +415,8 @@ TEST(Voronoi, EveryPointSetFamily) {
                     EXPECT_TRUE(check.ok()) << check.text();
                     diagrams.push_back(canonical(r.voronoi));
                 }
-                for (std::size_t i = 1; i < diagrams.size(); ++i) EXPECT_TRUE(diagrams[i] == diagrams[0]);
+                for (std::size_t i = 1; i < diagrams.size(); ++i)
+                    EXPECT_TRUE(diagrams[i] == diagrams[0]);
             }
         }
     }
