@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "dtm/core/error.hpp"
+#include "dtm/geom/constructions.hpp"
 #include "dtm/geom/predicates.hpp"
 #include "dtm/methods/registry.hpp"
 #include "dtm/methods/voronoi.hpp"
@@ -162,7 +163,7 @@ TEST(VoronoiTopological, CircumcentreFromTheCofactors) {
     for (int i = 0; i < 10000; ++i) {
         const Point2 a{700000 + u(rng), 1000000 + u(rng)}, b{700000 + u(rng), 1000000 + u(rng)},
             c{700000 + u(rng), 1000000 + u(rng)};
-        const Point2 m = detail::circumcentre(a, b, c);
+        const Point2 m = geom::circumcentre(a, b, c);
         // Reference in long double, relative to a.
         const long double bx = b.x - a.x, by = b.y - a.y, cx = c.x - a.x, cy = c.y - a.y;
         const long double d = 2 * (bx * cy - by * cx);

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "dtm/core/error.hpp"
+#include "dtm/geom/constructions.hpp"
 
 namespace dtm::methods::detail {
 namespace {
@@ -214,20 +215,7 @@ double IncrementalVoronoi::h_value(std::uint32_t v, const Point2& p) const {
 
 double sugihara_iri_h(const Point2& a, const Point2& b, const Point2& c, const Point2& p) noexcept {
     const Point2* g[3] = {&a, &b, &c};
-    int k = 0;
-    double best = 2.0;
-    for (int m = 0; m < 3; ++m) {
-        const Point2& o = *g[m];
-        const Point2& u = *g[(m + 1) % 3];
-        const Point2& w = *g[(m + 2) % 3];
-        const double ux = u.x - o.x, uy = u.y - o.y, wx = w.x - o.x, wy = w.y - o.y;
-        const double norm = std::sqrt((ux * ux + uy * uy) * (wx * wx + wy * wy));
-        const double cosine = norm > 0.0 ? std::abs(ux * wx + uy * wy) / norm : 1.0;
-        if (cosine < best) {
-            best = cosine;
-            k = m;
-        }
-    }
+    const int k = geom::nearest_right_angle(a, b, c);
     // (i, j, k) keeps the counter-clockwise order: i and j follow k.
     const Point2& pk = *g[k];
     const Point2& pi = *g[(k + 1) % 3];

@@ -17,6 +17,7 @@
 
 #include "algo/detail/exact_duplicates.hpp"
 #include "dtm/core/error.hpp"
+#include "dtm/geom/constructions.hpp"
 
 namespace dtm::methods::detail {
 namespace {
@@ -125,35 +126,6 @@ Sites make_sites(std::span<const Point3> points, const char* method) {
     return s;
 }
 
-Point2 circumcentre(const Point2& a, const Point2& b, const Point2& c) noexcept {
-    // Relative to the vertex k with the angle nearest pi/2 (smallest |cos|), 000 §3.6.3:
-    // centre = (-J2/J4 + xk, J3/J4 + yk) with the other two vertices i, j.
-    const Point2* p[3] = {&a, &b, &c};
-    int k = 0;
-    double best = 2.0;
-    for (int m = 0; m < 3; ++m) {
-        const Point2& o = *p[m];
-        const Point2& u = *p[(m + 1) % 3];
-        const Point2& w = *p[(m + 2) % 3];
-        const double ux = u.x - o.x, uy = u.y - o.y, wx = w.x - o.x, wy = w.y - o.y;
-        const double norm = std::sqrt((ux * ux + uy * uy) * (wx * wx + wy * wy));
-        const double cosine = norm > 0.0 ? std::abs(ux * wx + uy * wy) / norm : 1.0;
-        if (cosine < best) {
-            best = cosine;
-            k = m;
-        }
-    }
-    const Point2& pk = *p[k];
-    const Point2& pi = *p[(k + 1) % 3];
-    const Point2& pj = *p[(k + 2) % 3];
-    const double xi = pi.x - pk.x, yi = pi.y - pk.y, xj = pj.x - pk.x, yj = pj.y - pk.y;
-    const double wi = 0.5 * (xi * xi + yi * yi), wj = 0.5 * (xj * xj + yj * yj);
-    const double j2 = yi * wj - wi * yj;
-    const double j3 = xi * wj - wi * xj;
-    const double j4 = xi * yj - yi * xj;
-    return {-j2 / j4 + pk.x, j3 / j4 + pk.y};
-}
-
 void finish_voronoi(VoronoiGraph&& graph,
                     const Sites& sites,
                     std::span<const Point3> input,
@@ -241,7 +213,7 @@ void finish_voronoi(VoronoiGraph&& graph,
         }
         if (finite && !placed[e.origin]) {
             placed[e.origin] = true;
-            positions[e.origin] = circumcentre(sites.xy[he[h].face], sites.xy[he[h ^ 1u].face],
+            positions[e.origin] = geom::circumcentre(sites.xy[he[h].face], sites.xy[he[h ^ 1u].face],
                                                sites.xy[he[he[h ^ 1u].next ^ 1u].face]);
         }
     }

@@ -32,10 +32,6 @@ struct Sites {
 /// @throws InputError fewer than two distinct points.
 [[nodiscard]] Sites make_sites(std::span<const Point3> points, const char* method);
 
-/// Circumcentre of a, b, c (not collinear), computed relative to the vertex whose angle is
-/// nearest a right angle (Sugihara and Iri's method 2, 000 §3.6.3 eq. 7-11).
-[[nodiscard]] Point2 circumcentre(const Point2& a, const Point2& b, const Point2& c) noexcept;
-
 /// A method's Voronoi diagram under construction: half-edges h and h ^ 1 are twins; origin is a
 /// vertex id below vertex_count or no_index (at infinity); free half-edges have face dead_face.
 /// Faces at or above sites.real are auxiliary and are dropped. Every live vertex has degree 3.
