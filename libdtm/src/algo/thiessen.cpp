@@ -70,7 +70,9 @@ Neighbours neighbours_of(std::span<const Point3> sites, const Tin& delaunay) {
 
 /// The site nearest to @p p, walking from @p start (a greedy walk over the Delaunay neighbours
 /// ends at a nearest site).
-std::uint32_t nearest_site(std::span<const Point3> sites, const Neighbours& nb, const Point3& p,
+std::uint32_t nearest_site(std::span<const Point3> sites,
+                           const Neighbours& nb,
+                           const Point3& p,
                            std::uint32_t start) {
     std::uint32_t g = start;
     for (bool moved = true; moved;) {
@@ -101,7 +103,8 @@ Tin clip_region_of_rings(std::span<const Polyline> boundaries, std::span<const P
 
 Tin clip_region_of_hull(const Tin& delaunay) {
     if (delaunay.triangles.empty()) {
-        throw InputError("the points are collinear: their convex hull has no area (give a boundary)");
+        throw InputError(
+            "the points are collinear: their convex hull has no area (give a boundary)");
     }
     // The boundary edges a -> b (counter-clockwise), chained into the hull cycle.
     std::vector<VertexIndex> next(delaunay.vertices.size(), no_vertex);
@@ -131,8 +134,10 @@ Tin clip_region_of_hull(const Tin& delaunay) {
     return triangulate(std::move(input)).tin;
 }
 
-ThiessenResult thiessen_cells(std::span<const Point3> sites, const Tin& delaunay,
-                              const Tin& region, const Progress& progress) {
+ThiessenResult thiessen_cells(std::span<const Point3> sites,
+                              const Tin& delaunay,
+                              const Tin& region,
+                              const Progress& progress) {
     ThiessenResult result;
     const std::size_t n = sites.size();
     result.cells.resize(n);
@@ -151,7 +156,8 @@ ThiessenResult thiessen_cells(std::span<const Point3> sites, const Tin& delaunay
     detail::Piece piece;
     std::uint32_t start = 0;
     for (std::uint32_t t = 0; t < region.triangles.size(); ++t) {
-        if ((t & 0xfffu) == 0) progress.report(0.4 * double(t) / double(region.triangles.size()), "clipping");
+        if ((t & 0xfffu) == 0)
+            progress.report(0.4 * double(t) / double(region.triangles.size()), "clipping");
         const Triangle& tri = region.triangles[t];
         const Point3& corner = region.vertices[tri.v[0]];
         start = nearest_site(sites, nb, corner, start);
@@ -159,7 +165,8 @@ ThiessenResult thiessen_cells(std::span<const Point3> sites, const Tin& delaunay
         stamp[start] = t;
         for (std::size_t i = 0; i < queue.size(); ++i) {  // every site tied with it
             for (const VertexIndex h : nb.of(queue[i])) {
-                if (stamp[h] != t && geom::compare_distances(corner, sites[h], corner, sites[start]) == 0) {
+                if (stamp[h] != t &&
+                    geom::compare_distances(corner, sites[h], corner, sites[start]) == 0) {
                     stamp[h] = t;
                     queue.push_back(h);
                 }
@@ -199,7 +206,8 @@ ThiessenResult thiessen_cells(std::span<const Point3> sites, const Tin& delaunay
                              region.triangles[pairs[i].second].v, pieces.back());
             }
             ThiessenCell& cell = result.cells[g];
-            detail::merge_pieces(static_cast<std::uint32_t>(g), pieces, clipper, region.vertices, cell);
+            detail::merge_pieces(static_cast<std::uint32_t>(g), pieces, clipper, region.vertices,
+                                 cell);
             for (const detail::Piece& p : pieces) {
                 for (const detail::PieceVertex& v : p) {
                     if (v.out.kind == detail::Support::bisector) cell.neighbours.push_back(v.out.a);

@@ -51,7 +51,9 @@ struct ThiessenResult {
 ///   set), or a Tin without triangles when the sites are collinear (or fewer than three).
 /// @param region any triangulation of the clip region (counter-clockwise, neighbour links set).
 /// @throws Cancelled.
-[[nodiscard]] ThiessenResult thiessen_cells(std::span<const Point3> sites, const Tin& delaunay,
-                                            const Tin& region, const Progress& progress = {});
+[[nodiscard]] ThiessenResult thiessen_cells(std::span<const Point3> sites,
+                                            const Tin& delaunay,
+                                            const Tin& region,
+                                            const Progress& progress = {});
 
 }  // namespace dtm

@@ -63,8 +63,10 @@ Sym CellClipper::crossing(const Support& s, std::uint32_t k) const {
     return Sym{Sym::bisectors, std::min(s.a, k), std::max(s.a, k), 0};
 }
 
-void CellClipper::clip(std::uint32_t g, std::span<const VertexIndex> neighbours,
-                       const std::array<VertexIndex, 3>& tri, Piece& out) const {
+void CellClipper::clip(std::uint32_t g,
+                       std::span<const VertexIndex> neighbours,
+                       const std::array<VertexIndex, 3>& tri,
+                       Piece& out) const {
     out.clear();
     for (int i = 0; i < 3; ++i) {
         out.push_back({Sym{Sym::input, tri[i], 0, 0},
@@ -111,7 +113,8 @@ void CellClipper::clip(std::uint32_t g, std::span<const VertexIndex> neighbours,
 
 Point2 CellClipper::position(std::uint32_t g, const Sym& v) const {
     switch (v.kind) {
-        case Sym::input: return region_[v.a].xy();
+        case Sym::input:
+            return region_[v.a].xy();
         case Sym::edge: {
             const Point3& p = sites_[std::min(g, v.c)];
             const Point3& q = sites_[std::max(g, v.c)];
@@ -156,8 +159,11 @@ double signed_area(const std::vector<Point2>& ring) {
 
 }  // namespace
 
-void merge_pieces(std::uint32_t g, const std::vector<Piece>& pieces, const CellClipper& clipper,
-                  std::span<const Point3> region_vertices, ThiessenCell& out) {
+void merge_pieces(std::uint32_t g,
+                  const std::vector<Piece>& pieces,
+                  const CellClipper& clipper,
+                  std::span<const Point3> region_vertices,
+                  ThiessenCell& out) {
     std::vector<Edge> edges;
     for (std::uint32_t p = 0; p < pieces.size(); ++p) {
         const Piece& piece = pieces[p];
@@ -174,7 +180,8 @@ void merge_pieces(std::uint32_t g, const std::vector<Piece>& pieces, const CellC
         const auto reverse = region_edges.find({edges[e].to, edges[e].from});
         if (reverse != region_edges.end() && !edges[reverse->second].used) {
             edges[e].used = edges[reverse->second].used = true;
-            parent[find_root(parent, edges[e].piece)] = find_root(parent, edges[reverse->second].piece);
+            parent[find_root(parent, edges[e].piece)] =
+                find_root(parent, edges[reverse->second].piece);
         } else {
             region_edges[{edges[e].from, edges[e].to}] = e;
         }
@@ -234,9 +241,9 @@ void merge_pieces(std::uint32_t g, const std::vector<Piece>& pieces, const CellC
                 if (p.x < q.x || (p.x == q.x && p.y < q.y)) m = i;
             }
             const std::size_t k = syms.size();
-            ring.outer = geom::orient2d(region_vertices[syms[(m + k - 1) % k].a],
-                                        region_vertices[syms[m].a],
-                                        region_vertices[syms[(m + 1) % k].a]) > 0;
+            ring.outer =
+                geom::orient2d(region_vertices[syms[(m + k - 1) % k].a], region_vertices[syms[m].a],
+                               region_vertices[syms[(m + 1) % k].a]) > 0;
         }
         rings.push_back(std::move(ring));
     }

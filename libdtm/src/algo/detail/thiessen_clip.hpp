@@ -46,8 +46,10 @@ public:
     /// The region of site @p g (the half-planes towards its Voronoi neighbours @p neighbours,
     /// in increasing order) intersected with the counter-clockwise triangle @p tri of region
     /// vertices. @p out is left empty when the intersection has no area.
-    void clip(std::uint32_t g, std::span<const VertexIndex> neighbours,
-              const std::array<VertexIndex, 3>& tri, Piece& out) const;
+    void clip(std::uint32_t g,
+              std::span<const VertexIndex> neighbours,
+              const std::array<VertexIndex, 3>& tri,
+              Piece& out) const;
 
     /// Coordinates of @p v in the cell of site @p g (the same for every cell sharing it).
     [[nodiscard]] Point2 position(std::uint32_t g, const Sym& v) const;
@@ -66,7 +68,10 @@ private:
 /// the two copies of each region edge between two pieces cancel, the remaining edges are linked
 /// into rings, grouped into polygons (rings with a bisector edge are outer rings; rings of region
 /// edges alone keep the region's orientation: outer or hole).
-void merge_pieces(std::uint32_t g, const std::vector<Piece>& pieces, const CellClipper& clipper,
-                  std::span<const Point3> region_vertices, ThiessenCell& out);
+void merge_pieces(std::uint32_t g,
+                  const std::vector<Piece>& pieces,
+                  const CellClipper& clipper,
+                  std::span<const Point3> region_vertices,
+                  ThiessenCell& out);
 
 }  // namespace dtm::detail
