@@ -8,7 +8,7 @@
 
 #include "command.hpp"
 #include "dtm/io/inputs.hpp"
-#include "dtm/io/voronoi_cells.hpp"
+#include "dtm/products/voronoi.hpp"
 #include "input_args.hpp"
 #include "terminal_progress.hpp"
 
@@ -18,7 +18,7 @@ namespace {
 struct VoronoiArgs {
     InputArgs input;
     std::string output;
-    io::VoronoiCellsOptions options;
+    products::VoronoiCellsOptions options;
     bool quiet = false;
 };
 
@@ -26,8 +26,8 @@ int run_voronoi(const VoronoiArgs& args) {
     const Progress progress = terminal_progress("voronoi", args.quiet);
     const io::LoadedInputs inputs =
         io::load_inputs(to_load_options(args.input), progress.sub(0.0, 0.2));
-    const io::VoronoiCellsReport r =
-        io::write_voronoi_cells(inputs, args.output, args.options, progress.sub(0.2, 1.0));
+    const products::VoronoiCellsReport r =
+        products::write_voronoi_cells(inputs, args.output, args.options, progress.sub(0.2, 1.0));
     std::cout << "voronoi: " << r.cells << " cells of " << r.points << " points";
     if (r.duplicates > 0) std::cout << " (" << r.duplicates << " duplicates share a cell)";
     if (r.empty_cells > 0) std::cout << ", " << r.empty_cells << " outside the region";

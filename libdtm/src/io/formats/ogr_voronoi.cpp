@@ -1,10 +1,8 @@
 // SPDX-License-Identifier: MIT
-// `dtm voronoi` (dtm/io/voronoi_cells.hpp): the distinct survey points, their Delaunay
-// triangulation (the production kernel), the clip region (the boundary rings minus the holes,
-// triangulated by the kernel, or the convex hull), the Thiessen polygons (algo/thiessen), and
-// one MultiPolygon feature per point through OGR (GeoPackage, shapefile, GeoJSON by extension),
-// written inside transactions of 50 000 features into a temporary sibling that replaces the
-// target only when everything is written.
+// Thiessen polygons through OGR (dtm/io/voronoi_writer.hpp): one MultiPolygon feature per point
+// (GeoPackage, shapefile, GeoJSON by extension) with id, index, z and area, written inside
+// transactions of 50 000 features into a temporary sibling that replaces the target only when
+// everything is written.
 #include <cpl_error.h>
 #include <gdal.h>
 #include <ogr_api.h>
@@ -14,15 +12,11 @@
 #include <array>
 #include <cctype>
 #include <mutex>
-#include <numeric>
 #include <string>
 
-#include "algo/detail/exact_duplicates.hpp"
-#include "dtm/algo/thiessen.hpp"
-#include "dtm/algo/triangulate.hpp"
 #include "dtm/core/error.hpp"
 #include "dtm/io/atomic_file.hpp"
-#include "dtm/io/voronoi_cells.hpp"
+#include "dtm/io/voronoi_writer.hpp"
 
 namespace dtm::io {
 namespace fs = std::filesystem;
@@ -51,29 +45,14 @@ const Format& format_for(const fs::path& target) {
     throw Error("voronoi: " + what + ": " + CPLGetLastErrorMsg());
 }
 
-/// The Delaunay triangulation of the distinct sites (vertex i = site i), or no triangles when
-/// they are collinear or fewer than three.
-Tin delaunay_of(const std::vector<Point3>& sites, unsigned threads, const Progress& progress) {
-    if (sites.size() >= 3) {
-        TriangulateOptions options;
-        options.threads = threads;
-        try {
-            return triangulate(TerrainInput{sites, {}, {}, {}, {}, {}}, options, progress).tin;
-        } catch (const InputError&) {
-            // collinear: the Voronoi regions are parallel strips; no triangle
-        }
-    }
-    Tin t;
-    t.vertices = sites;
-    return t;
-}
+}  // namespace
 
-class Writer {
+struct VoronoiCellWriter::State {
 public:
-    Writer(const fs::path& target,
-           const std::string& crs_wkt,
-           const std::string& layer_name,
-           bool string_ids)
+    State(const fs::path& target,
+          const std::string& crs_wkt,
+          const std::string& layer_name,
+          bool string_ids)
         : out_(target) {
         const Format& format = format_for(target);
         static std::once_flag once;
@@ -99,9 +78,9 @@ public:
         z_ = field("z", OFTReal);
         area_ = field("area", OFTReal);
     }
-    Writer(const Writer&) = delete;
-    Writer& operator=(const Writer&) = delete;
-    ~Writer() {
+    State(const State&) = delete;
+    State& operator=(const State&) = delete;
+    ~State() {
         if (ds_ != nullptr) GDALClose(ds_);
         if (srs_ != nullptr) OSRDestroySpatialReference(srs_);
     }
@@ -154,7 +133,6 @@ public:
         out_.commit();
     }
 
-private:
     AtomicOutput out_;
     GDALDatasetH ds_ = nullptr;
     OGRSpatialReferenceH srs_ = nullptr;
@@ -172,65 +150,28 @@ private:
     }
 };
 
-}  // namespace
-
-std::vector<std::string> voronoi_extensions() {
+std::vector<std::string> VoronoiCellWriter::extensions() {
     std::vector<std::string> out;
     for (const Format& f : formats) out.emplace_back(f.extension);
     return out;
 }
 
-VoronoiCellsReport write_voronoi_cells(const LoadedInputs& inputs,
-                                       const fs::path& output,
-                                       const VoronoiCellsOptions& options,
-                                       const Progress& progress) {
-    (void)format_for(output);  // an unknown extension fails before any work
-    const TerrainInput& terrain = inputs.terrain;
-    if (!terrain.breaklines.empty() || !terrain.soft_breaklines.empty()) {
-        throw UsageError(
-            "voronoi: breaklines make no Thiessen polygons (give points, and a boundary or holes)");
-    }
-    const std::vector<Point3>& points = inputs.tin ? inputs.tin->vertices : terrain.points;
-    if (points.empty()) throw InputError("voronoi: the inputs hold no point");
-    VoronoiCellsReport report;
-    report.points = points.size();
-    report.boundary = !terrain.boundaries.empty();
-    // Distinct sites in input order; a duplicate's cell is its first point's.
-    const std::vector<VertexIndex> first = dtm::detail::first_occurrences(points);
-    std::vector<Point3> sites;
-    std::vector<std::size_t> site_input;
-    for (std::size_t i = 0; i < points.size(); ++i) {
-        if (first[i] != i) continue;
-        sites.push_back(points[i]);
-        site_input.push_back(i);
-    }
-    report.duplicates = points.size() - sites.size();
-    progress.report(0.0, "triangulating");
-    const Tin delaunay = delaunay_of(sites, options.threads, progress.sub(0.0, 0.3));
-    const Tin region = report.boundary ? clip_region_of_rings(terrain.boundaries, terrain.holes)
-                                       : clip_region_of_hull(delaunay);
-    const ThiessenResult cells = thiessen_cells(sites, delaunay, region, progress.sub(0.3, 0.85));
-    report.region_area = cells.region_area;
-    report.empty_cells = cells.empty_cells;
+VoronoiCellWriter::VoronoiCellWriter(const fs::path& target, const VoronoiWriterOptions& options)
+    : state_(std::make_unique<State>(target, options.crs_wkt, options.layer, options.string_ids)) {}
 
-    const std::vector<std::string>& ids = inputs.labels.ids;
-    const bool string_ids =
-        std::any_of(ids.begin(), ids.end(), [](const std::string& s) { return !s.empty(); });
-    Writer writer(output, inputs.crs_wkt, options.layer, string_ids);
-    for (std::size_t s = 0; s < sites.size(); ++s) {
-        if ((s & 0xffffu) == 0)
-            progress.report(0.85 + 0.15 * double(s) / double(sites.size()), "writing");
-        const ThiessenCell& cell = cells.cells[s];
-        if (cell.polygons.empty()) continue;
-        const std::size_t i = site_input[s];
-        const std::string id = i < ids.size() && !ids[i].empty() ? ids[i] : std::to_string(i);
-        writer.add(cell, id, i, sites[s].z);
-        ++report.cells;
-        report.cells_area += cell.area;
-    }
-    writer.commit();
-    progress.report(1.0, "written");
-    return report;
+VoronoiCellWriter::~VoronoiCellWriter() = default;
+
+void VoronoiCellWriter::add(const ThiessenCell& cell,
+                            const std::string& id,
+                            std::size_t index,
+                            double z) {
+    state_->add(cell, id, index, z);
 }
+
+void VoronoiCellWriter::commit() { state_->commit(); }
+
+std::size_t VoronoiCellWriter::feature_count() const noexcept { return state_->features_; }
+
+void VoronoiCellWriter::check_extension(const fs::path& target) { (void)format_for(target); }
 
 }  // namespace dtm::io
