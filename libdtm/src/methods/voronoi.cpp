@@ -35,7 +35,7 @@ public:
 private:
     const VoronoiDiagram& d_;
     std::span<const Point3> g_;
-    std::vector<VertexIndex> first_;
+    dtm::detail::BigArray<VertexIndex> first_;
     CheckReport report_;
     std::vector<std::uint32_t> prev_;
 

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: MIT
-// The JSON report of products::build(), written with a small streaming JSON builder.
-// Numbers use the shortest text that reads back to the same double; NaN and infinities, which
-// JSON cannot hold, become null.
+// The JSON report of products::build(), written with io::JsonWriter (block layout, 2-space
+// indentation; NaN and infinities become null).
 #include "dtm/products/report.hpp"
 
 #include <ogr_spatialref.h>
@@ -14,106 +13,15 @@
 #include <numeric>
 
 #include "dtm/core/error.hpp"
+#include "dtm/io/json_writer.hpp"
 
 namespace dtm::products {
 namespace {
 
-class Json {
-public:
-    void open(char bracket, std::string_view key = {}) {
-        prefix(key);
-        out_ += bracket;
-        first_ = true;
-        ++depth_;
-    }
-    void close(char bracket) {
-        --depth_;
-        if (!first_) {
-            newline();
-        }
-        out_ += bracket;
-        first_ = false;
-    }
-    void value(std::string_view key, double v) {
-        prefix(key);
-        if (!std::isfinite(v)) {
-            out_ += "null";
-            return;
-        }
-        std::array<char, 32> buffer{};
-        const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), v);
-        out_.append(buffer.data(), result.ptr);
-    }
-    void value(std::string_view key, std::size_t v) {
-        prefix(key);
-        out_ += std::to_string(v);
-    }
-    void value(std::string_view key, std::string_view v) {
-        prefix(key);
-        quote(v);
-    }
-    void value(std::string_view key, const char* v) { value(key, std::string_view(v)); }
-    void value(std::string_view key, const std::string& v) { value(key, std::string_view(v)); }
-    [[nodiscard]] std::string str() const { return out_ + "\n"; }
-
-private:
-    void newline() {
-        out_ += '\n';
-        out_.append(static_cast<std::size_t>(depth_) * 2, ' ');
-    }
-    void prefix(std::string_view key) {
-        if (depth_ > 0) {
-            if (!first_) {
-                out_ += ',';
-            }
-            newline();
-        }
-        first_ = false;
-        if (!key.empty()) {
-            quote(key);
-            out_ += ": ";
-        }
-    }
-    void quote(std::string_view text) {
-        out_ += '"';
-        for (const char c : text) {
-            switch (c) {
-                case '"':
-                    out_ += "\\\"";
-                    break;
-                case '\\':
-                    out_ += "\\\\";
-                    break;
-                case '\n':
-                    out_ += "\\n";
-                    break;
-                case '\r':
-                    out_ += "\\r";
-                    break;
-                case '\t':
-                    out_ += "\\t";
-                    break;
-                default:
-                    if (static_cast<unsigned char>(c) < 0x20) {
-                        char escaped[8];
-                        std::snprintf(escaped, sizeof escaped, "\\u%04x", static_cast<unsigned>(c));
-                        out_ += escaped;
-                    } else {
-                        out_ += c;
-                    }
-            }
-        }
-        out_ += '"';
-    }
-    std::string out_;
-    int depth_ = 0;
-    bool first_ = true;
-};
-
-void write_inputs(Json& json, const BuildReport& report) {
-    json.open('[', "inputs");
+void write_inputs(io::JsonWriter& json, const BuildReport& report) {
+    json.begin_array("inputs");
     for (const io::InputSummary& in : report.inputs) {
-        json.open('{');
+        json.begin_object();
         json.value("path", in.path.generic_string());
         json.value("format", in.format);
         json.value("crs", in.crs);
@@ -124,17 +32,17 @@ void write_inputs(Json& json, const BuildReport& report) {
         json.value("holes", in.holes);
         json.value("duplicates", in.duplicates);
         json.value("skipped_lines", in.skipped_lines);
-        json.open('[', "warnings");
+        json.begin_array("warnings");
         for (const std::string& warning : in.warnings) {
             json.value({}, warning);
         }
-        json.close(']');
-        json.close('}');
+        json.end();
+        json.end();
     }
-    json.close(']');
+    json.end();
 }
 
-void write_crs(Json& json, const std::string& wkt) {
+void write_crs(io::JsonWriter& json, const std::string& wkt) {
     std::string name;
     std::string authority;
     if (!wkt.empty()) {
@@ -151,113 +59,113 @@ void write_crs(Json& json, const std::string& wkt) {
             }
         }
     }
-    json.open('{', "crs");
+    json.begin_object("crs");
     json.value("name", name);
     json.value("authority", authority);
     json.value("wkt", wkt);
-    json.close('}');
+    json.end();
 }
 
-void write_fate(Json& json, std::string_view key, const PointFate& fate) {
-    json.open('{', key);
+void write_fate(io::JsonWriter& json, std::string_view key, const PointFate& fate) {
+    json.begin_object(key);
     json.value("read", fate.total);
     json.value("used", fate.used);
     json.value("merged_duplicates", fate.merged);
     json.value("outside_boundary_or_in_hole", fate.removed);
-    json.close('}');
+    json.end();
 }
 
-void write_points(Json& json, const BuildReport& report) {
+void write_points(io::JsonWriter& json, const BuildReport& report) {
     const InputAccounting& a = report.accounting;
-    json.open('{', "points");
+    json.begin_object("points");
     write_fate(json, "survey_points", a.survey_points);
     write_fate(json, "line_vertices", a.line_vertices);
     json.value("skipped_bad_lines", report.skipped_lines);
     json.value("total_accounted",
                a.survey_points.total + a.line_vertices.total + report.skipped_lines);
-    json.close('}');
+    json.end();
 }
 
-void write_tin(Json& json, const BuildReport& report) {
-    json.open('{', "tin");
+void write_tin(io::JsonWriter& json, const BuildReport& report) {
+    json.begin_object("tin");
     json.value("vertices", report.surface.vertex_count);
     json.value("triangles", report.surface.triangle_count);
     json.value("constrained_edges", report.surface.constraint_count);
     json.value("breakline_intersections", report.triangulation.intersections);
     json.value("removed_triangles", report.triangulation.removed_triangles);
-    json.close('}');
-    json.open('{', "conflicts");
+    json.end();
+    json.begin_object("conflicts");
     json.value("count", report.conflicts.size());
-    json.open('[', "items");
+    json.begin_array("items");
     for (std::size_t i = 0; i < report.conflicts.size() && i < report_conflict_limit; ++i) {
         const ConstraintConflict& c = report.conflicts[i];
-        json.open('{');
+        json.begin_object();
         json.value("x", c.at.x);
         json.value("y", c.at.y);
         json.value("z_first", c.z_first);
         json.value("z_second", c.z_second);
         json.value("difference", std::fabs(c.z_first - c.z_second));
-        json.close('}');
+        json.end();
     }
-    json.close(']');
-    json.close('}');
+    json.end();
+    json.end();
 }
 
-void write_surface(Json& json, const BuildReport& report) {
+void write_surface(io::JsonWriter& json, const BuildReport& report) {
     const SurfaceStats& s = report.surface;
-    json.open('{', "extent");
+    json.begin_object("extent");
     json.value("xmin", s.extent.xmin);
     json.value("ymin", s.extent.ymin);
     json.value("xmax", s.extent.xmax);
     json.value("ymax", s.extent.ymax);
-    json.close('}');
-    json.open('{', "z_range");
+    json.end();
+    json.begin_object("z_range");
     json.value("min", s.z_min);
     json.value("max", s.z_max);
-    json.close('}');
-    json.open('{', "area");
+    json.end();
+    json.begin_object("area");
     json.value("planimetric", s.planimetric_area);
     json.value("surface_3d", s.surface_area);
     json.value("ratio", s.planimetric_area > 0.0 ? s.surface_area / s.planimetric_area : 0.0);
-    json.close('}');
+    json.end();
 }
 
-void write_products(Json& json, const BuildReport& report) {
-    json.open('{', "dem");
+void write_products(io::JsonWriter& json, const BuildReport& report) {
+    json.begin_object("dem");
     json.value("cell", report.dem.cell);
     json.value("cell_rule", report.cell_rule);
     json.value("cols", report.dem.cols);
     json.value("rows", report.dem.rows);
     json.value("xmin", report.dem.xmin);
     json.value("ymax", report.dem.ymax);
-    json.close('}');
-    json.open('{', "contours");
+    json.end();
+    json.begin_object("contours");
     json.value("interval", report.contour_interval);
     json.value("index_every", report.index_every);
     json.value("interval_rule", report.interval_rule);
     json.value("levels", report.contour_levels);
     json.value("lines", report.contour_lines);
-    json.close('}');
-    json.open('{', "timings_seconds");
+    json.end();
+    json.begin_object("timings_seconds");
     double total = 0.0;
     for (const StageTime& t : report.timings) {
         json.value(t.stage, t.seconds);
         total += t.seconds;
     }
     json.value("total", total);
-    json.close('}');
-    json.open('[', "outputs");
+    json.end();
+    json.begin_array("outputs");
     for (const std::string& file : report.outputs) {
         json.value({}, file);
     }
-    json.close(']');
+    json.end();
 }
 
 }  // namespace
 
 std::string report_json(const BuildReport& report) {
-    Json json;
-    json.open('{');
+    io::JsonWriter json;
+    json.begin_object();
     json.value("dtm_version", DTM_VERSION);
     write_inputs(json, report);
     write_crs(json, report.crs_wkt);
@@ -265,7 +173,7 @@ std::string report_json(const BuildReport& report) {
     write_tin(json, report);
     write_surface(json, report);
     write_products(json, report);
-    json.close('}');
+    json.end();
     return json.str();
 }
 

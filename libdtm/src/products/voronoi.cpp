@@ -52,7 +52,7 @@ VoronoiCellsReport write_voronoi_cells(const io::LoadedInputs& inputs,
     report.points = points.size();
     report.boundary = !terrain.boundaries.empty();
     // Distinct sites in input order; a duplicate's cell is its first point's.
-    const std::vector<VertexIndex> first = dtm::detail::first_occurrences(points);
+    const auto first = dtm::detail::first_occurrences(points);
     std::vector<Point3> sites;
     std::vector<std::size_t> site_input;
     for (std::size_t i = 0; i < points.size(); ++i) {

@@ -110,7 +110,8 @@ private:
 
 Sites make_sites(std::span<const Point3> points, const char* method) {
     Sites s;
-    s.first = dtm::detail::first_occurrences(points);
+    const auto first = dtm::detail::first_occurrences(points);
+    s.first.assign(first.begin(), first.end());
     for (std::size_t i = 0; i < points.size(); ++i) {
         if (s.first[i] == i) {
             s.xy.push_back(points[i].xy());
