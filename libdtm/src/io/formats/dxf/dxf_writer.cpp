@@ -57,7 +57,7 @@ DxfWriter::DxfWriter(const std::filesystem::path& path, std::span<const DxfLayer
 void DxfWriter::code(int group, std::string_view value) {
     char text[16];
     const char* end = std::to_chars(text, text + sizeof text, group).ptr;
-    buffer_.append(text, end);
+    buffer_.append(text, static_cast<std::size_t>(end - text));
     buffer_ += '\n';
     buffer_.append(value);
     buffer_ += '\n';
