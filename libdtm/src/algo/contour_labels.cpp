@@ -235,8 +235,13 @@ private:
             {index, lines_[index].level, path.point_at(target), reason_of(best)});
     }
 
+    /// The box that takes part in overlap tests.
+    [[nodiscard]] LabelBox footprint(const LabelBox& box) const {
+        return o_.axis_aligned_clearance ? LabelBox::of(box.bounds()) : box;
+    }
+
     void accept(const ContourLabel& label, ContourLabelResult& out) {
-        placed_.insert(label.box);
+        placed_.insert(footprint(label.box));
         out.labels.push_back(label);
     }
 
@@ -272,13 +277,17 @@ private:
         label.cut_end = path.closed ? path.wrap(s1 + gap) : std::min(s1 + gap, path.length());
         const LabelBox padded = label.box.grown(o_.padding_mm * mm_);
         if (o_.frame && !inside(padded, *o_.frame)) return Stage::outside;
-        if (placed_.overlaps_any(padded)) return Stage::crowded;
+        if (placed_.overlaps_any(footprint(label.box).grown(o_.padding_mm * mm_))) {
+            return Stage::crowded;
+        }
         if (!segments_) return Stage::ok;
         const LabelBox clear = label.box.grown(o_.padding_mm * mm_ / 2.0);
         bool under = false;  // an unlabelled line passes under the label
         const bool crossed = segments_->any_crossing(clear, [&](std::uint32_t l, std::uint32_t i) {
             if (l == index && path.segment_in(i, s0 - gap, s1 + gap)) return false;
-            if (lines_[l].text != LabelLine::no_label) return true;  // out: stop looking
+            if (lines_[l].text != LabelLine::no_label || !lines_[l].passable) {
+                return true;  // out: stop looking
+            }
             under = true;
             return false;
         });

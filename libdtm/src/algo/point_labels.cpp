@@ -3,7 +3,8 @@
 // order (Imhof, "Positioning names on maps", The American Cartographer 2(2), 1975: right of the
 // point first, then the other corners and sides; Christensen, Marks, Shieber, ACM ToG 14(3),
 // 1995, for the candidate model). Every marker is an obstacle from the start, so a text never
-// hides another point; a position crossed by no line is preferred over one that is.
+// hides another point; a position crossed by no line is preferred, then one crossed only by
+// passable lines (contours) over one crossed by a line that must stay visible (breaklines).
 #include <algorithm>
 #include <optional>
 
@@ -57,22 +58,27 @@ PointLabelResult place_point_labels(std::span<const PointLabelRequest> requests,
                                    {c.x + e + w, c.y - e - h}, {c.x - d - w, c.y},
                                    {c.x - e - w, c.y + e + h}, {c.x - e - w, c.y - e - h},
                                    {c.x, c.y + d + h},         {c.x, c.y - d - h}};
-        std::optional<PointLabel> fallback;
+        // the first free position; else the first crossed only by passable lines (contours);
+        // else the first crossed by any line
         std::optional<PointLabel> chosen;
-        for (int k = 0; k < 8 && !chosen; ++k) {
+        int chosen_class = 3;
+        for (int k = 0; k < 8 && chosen_class > 0; ++k) {
             const LabelBox box{centres[k], {1.0, 0.0}, w, h};
             const LabelBox padded = box.grown(pad);
             if (options.frame && !inside(padded, *options.frame)) continue;
             if (placed.overlaps_any(padded)) continue;
-            const PointLabel label{i, box, k};
-            if (segments &&
-                segments->any_crossing(box, [](std::uint32_t, std::uint32_t) { return true; })) {
-                if (!fallback) fallback = label;
-                continue;
+            int crossing = 0;
+            if (segments) {
+                segments->any_crossing(box, [&](std::uint32_t line, std::uint32_t) {
+                    crossing = std::max(crossing, lines[line].passable ? 1 : 2);
+                    return crossing == 2;
+                });
             }
-            chosen = label;
+            if (crossing < chosen_class) {
+                chosen = PointLabel{i, box, k};
+                chosen_class = crossing;
+            }
         }
-        if (!chosen) chosen = fallback;
         if (!chosen) {
             out.failed.push_back(i);
             continue;

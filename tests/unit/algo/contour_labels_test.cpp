@@ -101,6 +101,18 @@ TEST(ContourLabels, ReadUphillSitOnTheirLineAndNeverOverlap) {
                 << r.labels[i].text << " and " << r.labels[j].text;
         }
     }
+    // With axis-aligned clearance even the labels' bounding boxes keep apart.
+    o.axis_aligned_clearance = true;
+    const ContourLabelResult aa = place_contour_labels(l.lines, l.texts, {}, o);
+    ASSERT_GT(aa.labels.size(), 10U);
+    for (std::size_t i = 0; i < aa.labels.size(); ++i) {
+        const Box2 a = aa.labels[i].box.bounds();
+        for (std::size_t j = i + 1; j < aa.labels.size(); ++j) {
+            const Box2 b = aa.labels[j].box.bounds();
+            EXPECT_TRUE(a.xmax <= b.xmin || b.xmax <= a.xmin || a.ymax <= b.ymin ||
+                        b.ymax <= a.ymin);
+        }
+    }
     std::size_t with_text = 0;
     for (const LabelLine& line : l.lines) with_text += line.text != LabelLine::no_label;
     EXPECT_EQ(r.lines_labelled, with_text);
@@ -217,6 +229,12 @@ TEST(ContourLabels, CurvedShortAndCrossedLines) {
     ContourLabelOptions strict;
     strict.allow_crossing_unlabelled = false;
     EXPECT_TRUE(place_contour_labels(crossed, two, {}, strict).labels.empty());
+    // Lines that may never be covered (breaklines): no fallback either.
+    for (std::size_t i = 1; i < crossed.size(); ++i) crossed[i].passable = false;
+    const ContourLabelResult hard = place_contour_labels(crossed, two, {}, {});
+    EXPECT_TRUE(hard.labels.empty());
+    ASSERT_EQ(hard.failures.size(), 1U);
+    EXPECT_EQ(hard.failures[0].reason, LabelFailureReason::crossed);
 }
 
 TEST(ContourLabels, RejectsBadOptions) {

@@ -37,6 +37,10 @@ struct LabelLine {
     double level = 0.0;
     /// Index into the texts; no_label: the line is only an obstacle.
     std::size_t text = no_label;
+    /// A line without a text that a label may cover when nothing better is near (the caller
+    /// interrupts it under the label, see allow_crossing_unlabelled). false: labels never cover
+    /// it (breaklines, boundaries).
+    bool passable = true;
     static constexpr std::size_t no_label = static_cast<std::size_t>(-1);
 };
 
@@ -58,6 +62,9 @@ struct ContourLabelOptions {
     /// (the practice of steep slopes). false: such positions fail as `crossed`.
     bool allow_crossing_unlabelled = true;
     std::optional<Box2> frame;  ///< labels lie wholly inside (CRS units)
+    /// Keep the axis-aligned bounds of rotated labels apart too (not just the rotated boxes):
+    /// tools that report text boxes axis-aligned (pdftotext -bbox) then see no overlap either.
+    bool axis_aligned_clearance = false;
 };
 
 /// A placed label. Positions and sizes in CRS units; page units are these / units_per_mm.

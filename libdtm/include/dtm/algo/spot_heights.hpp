@@ -93,7 +93,8 @@ struct PointLabelResult {
 
 /// Places each request's text beside its marker, in request order, at the first of eight
 /// positions whose box (grown by padding) overlaps no marker, no placed text and no obstacle and
-/// stays inside the frame; among such positions one that no line of @p lines crosses is preferred.
+/// stays inside the frame; among such positions one that no line of @p lines crosses is preferred,
+/// then one crossed only by passable lines (LabelLine::passable).
 /// @throws UsageError for a non-positive units_per_mm
 [[nodiscard]] PointLabelResult place_point_labels(std::span<const PointLabelRequest> requests,
                                                   std::span<const LabelLine> lines,
