@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // dtm build INPUTS... -o OUTDIR: the main job. Reads every input, triangulates, and writes the
 // whole product set into OUTDIR:
-//   tin.ply  tin.2dm  surface.vtp  dem.tif  hillshade.tif  contours.gpkg  dtm.qgs  report.json
+//   tin.ply  tin.2dm  surface.vtp  dem.tif  hillshade.tif  contours.gpkg  map.pdf  dtm.qgs
+//   report.json
 // Everything is written into a temporary sibling folder first (".OUTDIR.tmp-<pid>"); only when
 // every product is complete are the files moved into OUTDIR, so a failed or cancelled run leaves
 // no partial file and never replaces a good product from an earlier run.
@@ -13,6 +14,8 @@
 //               cells;
 //   --interval  the z range divided by 20, rounded down the same way (about 20 contour levels);
 //               every 5th level is an index contour.
+//   --map-scale map.pdf is an A3 sheet centred on the site at the largest usual survey scale
+//               (1:100 ... 1:100 000) at which the site with a 10 % margin fits it.
 #include <unistd.h>
 
 #include <chrono>
@@ -20,6 +23,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <system_error>
 #include <utility>
@@ -36,6 +40,7 @@
 #include "dtm/io/formats/report.hpp"
 #include "dtm/io/grid_writer.hpp"
 #include "dtm/io/inputs.hpp"
+#include "dtm/io/map/map.hpp"
 #include "dtm/io/tin_file.hpp"
 #include "input_args.hpp"
 #include "terminal_progress.hpp"
@@ -52,6 +57,7 @@ struct BuildArgs {
     double cell = 0.0;
     double interval = 0.0;
     std::size_t index_every = 5;
+    double map_scale = 0.0;
     TriangulateOptions tin;
     bool quiet = false;
 };
@@ -169,6 +175,7 @@ struct BuildState {
     io::BuildReport report;
     std::vector<std::string> files;  ///< written into the staging folder, in order
     std::size_t survey_points = 0;   ///< survey points given to the triangulator
+    std::optional<io::QgisLayout> map_layout;  ///< map.pdf's sheet, for the QGIS project
 };
 
 void triangulate_inputs(const BuildArgs& args, BuildState& state, const Progress& progress) {
@@ -248,6 +255,60 @@ void write_contours(const BuildArgs& args,
     state.files.emplace_back("contours.gpkg");
 }
 
+/// The scale of map.pdf (an A3 sheet centred on the site): given, or the largest usual one at
+/// which the site with a margin fits A3.
+double map_scale(const BuildArgs& args, const BuildState& state) {
+    if (args.map_scale > 0.0) return args.map_scale;
+    const Box2& e = state.surface.extent;
+    const double margin = 0.1 * std::max(e.xmax - e.xmin, e.ymax - e.ymin);
+    const double s = io::map::largest_fitting_scale(e.xmax - e.xmin + 2.0 * margin,
+                                                    e.ymax - e.ymin + 2.0 * margin, 1.0, 297.0,
+                                                    420.0);
+    return s > 0.0 ? s : 100000.0;
+}
+
+void write_map_sheet(const BuildArgs& args,
+                     BuildState& state,
+                     const Staging& staging,
+                     const Progress& progress) {
+    io::map::MapOptions options;
+    options.scale = map_scale(args, state);
+    options.interval = state.report.contour_interval;
+    options.index_every = state.report.index_every;
+    options.crs_wkt = state.inputs.crs_wkt;
+    options.paper = io::draw::paper_named("A3");
+    for (const io::InputSummary& in : state.inputs.summaries) {
+        options.sources.push_back(in.path.filename().string());
+    }
+    const io::map::MapReport map =
+        io::map::write_map(state.result.tin, options, staging / "map.pdf", progress);
+    state.report.map_scale = options.scale;
+    state.report.map_labels = map.labels.size();
+    state.report.map_label_failures = map.label_failures.size();
+    state.report.map_spot_heights = map.spots_drawn;
+    state.files.emplace_back("map.pdf");
+    // the same sheet as a QGIS print layout
+    const io::map::PageFrame& page = map.layout.pages.front();
+    const io::map::PageFurniture& f = map.furniture.front();
+    io::QgisLayout layout;
+    layout.width_mm = page.width_mm;
+    layout.height_mm = page.height_mm;
+    layout.extent = page.extent;
+    layout.scale = page.scale;
+    layout.grid_interval = f.grid_step;
+    layout.sjtsk = map.sjtsk;
+    layout.title = f.block.title;
+    layout.fields = f.block.fields;
+    const auto box = [](const io::draw::Rect& r) {
+        return std::array<double, 4>{r.x, r.y, r.width, r.height};
+    };
+    layout.title_box = box(f.title);
+    layout.legend_box = box(f.legend);
+    layout.scale_bar_box = box(f.scale_bar);
+    layout.north_box = box(f.north);
+    state.map_layout = layout;
+}
+
 void write_project(const BuildState& state, const Staging& staging) {
     io::QgisProject project;
     project.title = "dtm build";
@@ -265,6 +326,7 @@ void write_project(const BuildState& state, const Staging& staging) {
         state.report.contour_interval *
         static_cast<double>(std::max<std::size_t>(state.report.index_every, 1));
     project.mesh = "tin.2dm";
+    project.layout = state.map_layout;
     io::write_qgis_project(project, staging / "dtm.qgs");
 }
 
@@ -316,8 +378,10 @@ int run_build(const BuildArgs& args) {
     clock.lap("write_tin");
     state.report.dem = write_dem(args, state, staging, progress.sub(0.6, 0.8));
     clock.lap("dem");
-    write_contours(args, state, staging, progress.sub(0.8, 0.95));
+    write_contours(args, state, staging, progress.sub(0.8, 0.9));
     clock.lap("contours");
+    write_map_sheet(args, state, staging, progress.sub(0.9, 0.97));
+    clock.lap("map");
     write_project(state, staging);
     state.files.emplace_back("dtm.qgs");
     clock.lap("project");
@@ -346,8 +410,8 @@ int run_build(const BuildArgs& args) {
 
 Command build_command() {
     return {"build",
-            "The main job: TIN, DEM, hillshade, contours, VTK surface, 2DM mesh, QGIS project "
-            "and report into one folder",
+            "The main job: TIN, DEM, hillshade, contours, contour map sheet (PDF), VTK surface, "
+            "2DM mesh, QGIS project and report into one folder",
             [](CLI::App& app) {
                 auto args = std::make_shared<BuildArgs>();
                 add_input_options(app, args->input);
@@ -363,6 +427,10 @@ Command build_command() {
                     ->check(CLI::PositiveNumber);
                 app.add_option("--index-every", args->index_every,
                                "Every N-th contour level is an index contour (default 5)");
+                app.add_option("--map-scale", args->map_scale,
+                               "Scale 1:N of map.pdf (default: the largest usual scale at which "
+                               "the site fits A3)")
+                    ->check(CLI::PositiveNumber);
                 add_tin_options(app, args->tin);
                 app.add_flag("-q,--quiet", args->quiet, "No progress bar");
                 return [args]() { return run_build(*args); };

@@ -11,8 +11,9 @@
 //      strictly higher (lower) than every other vertex within the spacing radius, a saddle must
 //      show at least two higher and two lower sectors (eight 45-degree sectors, mean height
 //      difference) within it. Survey noise makes many link-level extremes that fail this test.
-//      Within half the radius of the TIN border the disc is partly empty and nothing is called
-//      critical.
+//      Near the TIN border (within about half the radius) the disc is partly empty and nothing
+//      is called critical. Searches visit the nearest grid cells first, so a noise extreme is
+//      refuted early; saddles are tried at a quarter of the radius before the whole disc.
 //   3. Greedy thinning in priority order (summits highest first, pits lowest first, saddles by
 //      relief, then regular vertices nearest to the centres of a spacing-sized grid, a second
 //      pass on the half-shifted grid), keeping every pair at least the spacing apart: a
@@ -51,27 +52,61 @@ public:
             i = j;
         }
     }
-    /// Calls f(v) for every vertex within @p radius of @p c (other than itself); stops when f
-    /// returns true and then returns true.
+    /// Calls f(v) for every vertex within @p radius of @p c, cells nearest to @p c first (so
+    /// that a search for a counter-example ends early); stops when f returns true and then
+    /// returns true. With @p stride > 1 only every stride-th vertex of a cell is visited.
     template <class F>
-    bool any_within(Point2 c, double radius, F&& f) const {
+    bool any_within(Point2 c, double radius, F&& f, std::size_t stride = 1) const {
+        const double r2 = radius * radius;
+        const std::int64_t ci = grid_.index(c.x);
+        const std::int64_t cj = grid_.index(c.y);
+        const auto rings = static_cast<std::int64_t>(std::ceil(radius / cell_)) + 1;
+        for (std::int64_t k = 0; k <= rings; ++k) {
+            for (std::int64_t i = ci - k; i <= ci + k; ++i) {
+                const bool edge = i == ci - k || i == ci + k;
+                for (std::int64_t j = cj - k; j <= cj + k; j += edge ? 1 : 2 * k) {
+                    const auto it = cells_.find(detail::CellGrid::key(i, j));
+                    if (it != cells_.end()) {
+                        for (std::size_t s = it->second.first; s < it->second.second; s += stride) {
+                            const Point3& p = tin_.vertices[members_[s]];
+                            const double dx = p.x - c.x;
+                            const double dy = p.y - c.y;
+                            if (dx * dx + dy * dy <= r2 && f(members_[s])) return true;
+                        }
+                    }
+                    if (k == 0) break;
+                }
+            }
+        }
+        return false;
+    }
+    /// Number of vertices in the cells within @p radius of @p c (at least the disc's).
+    [[nodiscard]] std::size_t count_near(Point2 c, double radius) const {
+        std::size_t n = 0;
         Box2 box;
         box.add(c.x - radius, c.y - radius);
         box.add(c.x + radius, c.y + radius);
-        bool hit = false;
-        const double r2 = radius * radius;
         grid_.for_cells(box, [&](std::uint64_t key) {
-            if (hit) return;
             const auto it = cells_.find(key);
-            if (it == cells_.end()) return;
-            for (std::size_t s = it->second.first; s < it->second.second && !hit; ++s) {
-                const Point3& p = tin_.vertices[members_[s]];
-                const double dx = p.x - c.x;
-                const double dy = p.y - c.y;
-                if (dx * dx + dy * dy <= r2 && f(members_[s])) hit = true;
-            }
+            if (it != cells_.end()) n += it->second.second - it->second.first;
         });
-        return hit;
+        return n;
+    }
+    /// True when the cell of @p c or one of its eight neighbours holds a vertex with f(v).
+    template <class F>
+    [[nodiscard]] bool near_cells_hold(Point2 c, F&& f) const {
+        const std::int64_t ci = grid_.index(c.x);
+        const std::int64_t cj = grid_.index(c.y);
+        for (std::int64_t i = ci - 1; i <= ci + 1; ++i) {
+            for (std::int64_t j = cj - 1; j <= cj + 1; ++j) {
+                const auto it = cells_.find(detail::CellGrid::key(i, j));
+                if (it == cells_.end()) continue;
+                for (std::size_t s = it->second.first; s < it->second.second; ++s) {
+                    if (f(members_[s])) return true;
+                }
+            }
+        }
+        return false;
     }
     [[nodiscard]] double cell() const noexcept { return cell_; }
 
@@ -143,27 +178,38 @@ double saddle_relief(const Tin& tin, const VertexGrid& grid, VertexIndex v, doub
     std::array<double, sectors> sum{};
     std::array<int, sectors> count{};
     const Point3& c = tin.vertices[v];
-    grid.any_within(c.xy(), radius, [&](VertexIndex u) {
-        if (u == v) return false;
-        const Point3& p = tin.vertices[u];
-        const double a = std::atan2(p.y - c.y, p.x - c.x) + 3.14159265358979323846;
-        const int s =
-            std::min(sectors - 1, static_cast<int>(a / (2.0 * 3.14159265358979323846) * sectors));
-        sum[static_cast<std::size_t>(s)] += p.z - c.z;
-        ++count[static_cast<std::size_t>(s)];
-        return false;
-    });
-    std::vector<double> means;
+    // the sector means need a sample, not every vertex of a large disc
+    const std::size_t stride = std::max<std::size_t>(1, grid.count_near(c.xy(), radius) / 2048);
+    grid.any_within(
+        c.xy(), radius,
+        [&](VertexIndex u) {
+            if (u == v) return false;
+            const Point3& p = tin.vertices[u];
+            const double dx = p.x - c.x;
+            const double dy = p.y - c.y;
+            // octant 0..7 counter-clockwise from east, by comparisons only
+            int s = 0;
+            if (dy >= 0.0) {
+                s = dx >= 0.0 ? (dx >= dy ? 0 : 1) : (-dx <= dy ? 2 : 3);
+            } else {
+                s = dx < 0.0 ? (-dx >= -dy ? 4 : 5) : (dx <= -dy ? 6 : 7);
+            }
+            sum[static_cast<std::size_t>(s)] += p.z - c.z;
+            ++count[static_cast<std::size_t>(s)];
+            return false;
+        },
+        stride);
+    std::array<double, sectors> means{};
+    std::size_t m = 0;
     for (int s = 0; s < sectors; ++s) {
-        if (count[static_cast<std::size_t>(s)] > 0) {
-            means.push_back(sum[static_cast<std::size_t>(s)] / count[static_cast<std::size_t>(s)]);
-        }
+        const auto k = static_cast<std::size_t>(s);
+        if (count[k] > 0) means[m++] = sum[k] / count[k];
     }
     int flips = 0;
     double relief = 0.0;
-    for (std::size_t i = 0; i < means.size(); ++i) {
+    for (std::size_t i = 0; i < m; ++i) {
         const double a = means[i];
-        const double b = means[(i + 1) % means.size()];
+        const double b = means[(i + 1) % m];
         if ((a > 0.0) != (b > 0.0)) ++flips;
         relief += std::abs(a);
     }
@@ -184,12 +230,14 @@ std::vector<Candidate> critical_candidates(const Tin& tin,
         const SpotKind kind = link_kind(t, v);
         if (kind == SpotKind::regular) continue;
         const Point3& p = tin.vertices[v];
-        // Near the TIN border the disc is partly empty: no extreme can be told there.
-        if (grid.any_within(p.xy(), radius / 2.0,
-                            [&](VertexIndex u) { return t.border[u] != 0; })) {
+        // Near the TIN border the disc is partly empty: no extreme can be told there (the
+        // grid's cells are half the radius: a border vertex in a neighbouring cell is near).
+        if (grid.near_cells_hold(p.xy(), [&](VertexIndex u) { return t.border[u] != 0; })) {
             continue;
         }
         if (kind == SpotKind::saddle) {
+            // a cheap test at a quarter of the radius first: most survey noise fails it
+            if (saddle_relief(tin, grid, v, radius / 4.0) == 0.0) continue;
             const double relief = saddle_relief(tin, grid, v, radius);
             if (relief > 0.0) out.push_back({v, kind, relief});
             continue;

@@ -6,12 +6,14 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "dtm/algo/constraint_lines.hpp"
 #include "dtm/algo/spot_heights.hpp"
 #include "dtm/core/contour.hpp"
+#include "dtm/core/grid.hpp"
 #include "dtm/core/progress.hpp"
 #include "dtm/core/tin.hpp"
 #include "dtm/io/draw/canvas.hpp"
@@ -57,6 +59,7 @@ struct MapData {
     std::vector<ConstraintLine> constraints;
     std::vector<SpotHeight> spots;
     Box2 surface;
+    std::shared_ptr<const Grid> mask;  ///< see surface_mask
     double interval = 1.0;
     std::size_t index_every = 5;
     int spot_decimals = 2;
@@ -71,6 +74,7 @@ struct MapData {
 
 /// What one page placed.
 struct PageResult {
+    PageFurniture furniture;
     std::vector<LabelRecord> labels;
     std::vector<FailureRecord> failures;
     std::size_t lines_too_short = 0;
@@ -151,8 +155,11 @@ void draw_grid(draw::Canvas& canvas,
                const PageFrame& page,
                const std::vector<GridLabel>& labels);
 
-/// Coverage mask of the surface over @p page (cells of about 2 mm).
-[[nodiscard]] CoverageFn surface_coverage(const Tin& tin, const PageFrame& page);
+/// Where the surface is: the TIN rasterized over its extent in about 800 x 800 cells (NoData
+/// outside), computed once and shared by every page.
+[[nodiscard]] std::shared_ptr<const Grid> surface_mask(const Tin& tin, const Box2& surface);
+/// Fraction of a page rectangle the surface covers, from data.mask.
+[[nodiscard]] CoverageFn surface_coverage(const MapData& data, const PageFrame& page);
 
 /// A hillshade of the surface over the page (Horn's gradient, sun from the north-west at 45
 /// degrees, as gdaldem), as RGBA: black with an alpha growing with the shade; transparent

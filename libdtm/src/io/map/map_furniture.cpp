@@ -226,7 +226,7 @@ void draw_furniture(draw::Canvas& canvas,
                     const PageFrame& page,
                     const Furniture& f,
                     const draw::TitleBlock& block) {
-    const draw::Color white = draw::Color::rgb(0xffffff, 0.85);
+    const draw::Color white = draw::Color::rgb(0xffffff);
     const draw::Rect top{f.north.x, f.north.y, f.scale_bar.right() - f.north.x,
                          std::max(f.north.height, f.scale_bar.height)};
     canvas.rectangle({top.x - 1.0, top.y - 1.0}, top.width + 2.0, top.height + 2.0, &white,

@@ -59,7 +59,7 @@ struct PagePlan {
 PagePlan plan_page(const MapData& data, const PageFrame& page, const std::string& sheet_text) {
     PagePlan plan;
     plan.block = title_block(data, page, sheet_text);
-    plan.furniture = plan_furniture(data, page, plan.block, surface_coverage(*data.tin, page));
+    plan.furniture = plan_furniture(data, page, plan.block, surface_coverage(data, page));
     plan.grid = grid_labels(data, page, plan.furniture);
     for (const draw::Rect& r : plan.furniture.panels()) {
         plan.obstacles.push_back(
@@ -253,7 +253,11 @@ PageResult draw_page(draw::Canvas& canvas,
     const draw::Stroke frame = draw::Stroke::solid(data.style.ink, 0.7);
     canvas.rectangle({0.0, 0.0}, page.width_mm, page.height_mm, nullptr, &frame);
     progress.report(1.0, "drawing");
-    return records(page, placed);
+    PageResult result = records(page, placed);
+    const Furniture& f = plan.furniture;
+    result.furniture = {page.name, f.title,    f.legend,       f.scale_bar,
+                        f.north,   plan.block, grid_step(page)};
+    return result;
 }
 
 void draw_index_page(draw::Canvas& canvas,
@@ -262,7 +266,7 @@ void draw_index_page(draw::Canvas& canvas,
                      const PageFrame& index) {
     const draw::TitleBlock block =
         title_block(data, index, "index of " + std::to_string(layout.pages.size()) + " sheets");
-    const Furniture f = plan_furniture(data, index, block, surface_coverage(*data.tin, index));
+    const Furniture f = plan_furniture(data, index, block, surface_coverage(data, index));
     const draw::Stroke contour{data.style.contour, 0.18, {}, true};
     for (const Contour& c : data.contours) {
         if (c.level.index) canvas.polyline(to_page(index, c.line, 0.2), contour);

@@ -27,23 +27,30 @@ GridSpec page_grid(const PageFrame& page, int columns, int rows) {
 
 }  // namespace
 
-CoverageFn surface_coverage(const Tin& tin, const PageFrame& page) {
-    const double cell_mm = 2.0;
-    const int cols = std::max(1, static_cast<int>(std::ceil(page.width_mm / cell_mm)));
-    const double cell = page.width_mm / cols;
-    const int rows = std::max(1, static_cast<int>(std::ceil(page.height_mm / cell)));
-    auto grid = std::make_shared<Grid>(rasterize(tin, page_grid(page, cols, rows)));
-    return [grid, cell, cols, rows](const draw::Rect& r) {
-        const int c0 = std::clamp(static_cast<int>(std::floor(r.x / cell)), 0, cols);
-        const int c1 = std::clamp(static_cast<int>(std::ceil(r.right() / cell)), 0, cols);
-        const int r0 = std::clamp(static_cast<int>(std::floor(r.y / cell)), 0, rows);
-        const int r1 = std::clamp(static_cast<int>(std::ceil(r.bottom() / cell)), 0, rows);
+std::shared_ptr<const Grid> surface_mask(const Tin& tin, const Box2& surface) {
+    const double longest = std::max(surface.xmax - surface.xmin, surface.ymax - surface.ymin);
+    const double cell = std::max(longest / 800.0, 1e-9);
+    return std::make_shared<Grid>(rasterize(tin, snapped_grid_spec(surface, cell)));
+}
+
+CoverageFn surface_coverage(const MapData& data, const PageFrame& page) {
+    std::shared_ptr<const Grid> mask = data.mask;
+    return [mask, page](const draw::Rect& r) {
+        const GridSpec& g = mask->spec;
+        const Box2 b = page.ground_box(r);
+        const double step = std::max(g.cell, std::min(b.xmax - b.xmin, b.ymax - b.ymin) / 64.0);
         std::size_t inside = 0;
         std::size_t total = 0;
-        for (int i = r0; i < r1; ++i) {
-            for (int j = c0; j < c1; ++j) {
+        for (double y = b.ymin + step / 2.0; y < b.ymax; y += step) {
+            for (double x = b.xmin + step / 2.0; x < b.xmax; x += step) {
                 ++total;
-                if (!grid->is_nodata(static_cast<std::size_t>(i), static_cast<std::size_t>(j))) {
+                const double c = std::floor((x - g.xmin) / g.cell);
+                const double rr = std::floor((g.ymax - y) / g.cell);
+                if (c < 0 || rr < 0 || c >= static_cast<double>(g.cols) ||
+                    rr >= static_cast<double>(g.rows)) {
+                    continue;
+                }
+                if (!mask->is_nodata(static_cast<std::size_t>(rr), static_cast<std::size_t>(c))) {
                     ++inside;
                 }
             }

@@ -134,7 +134,7 @@ Box2 automatic_extent(const MapData& data, const LayoutRequest& base) {
             layout = layout_map(r);
             const PageFrame& p = layout.pages.front();
             const detail::Furniture f = detail::plan_furniture(
-                data, p, detail::title_block(data, p, {}), detail::surface_coverage(*data.tin, p));
+                data, p, detail::title_block(data, p, {}), detail::surface_coverage(data, p));
             if (f.cover < 0.02) return c;
         } catch (const UsageError&) {
             // larger than A0 or too small for the furniture: try the next
@@ -176,6 +176,7 @@ MapData prepare(const Tin& tin,
     co.index_every = options.index_every;
     data.contours = contour(tin, co, progress);
     data.constraints = constraint_lines(tin);
+    data.mask = detail::surface_mask(tin, data.surface);
     data.spot_decimals = spot_decimals(options);
     return data;
 }
@@ -192,6 +193,7 @@ void select_spots(MapData& data, const MapLayout& layout, const Progress& progre
 }
 
 void add_page(MapReport& report, const detail::PageResult& r) {
+    report.furniture.push_back(r.furniture);
     report.labels.insert(report.labels.end(), r.labels.begin(), r.labels.end());
     report.label_failures.insert(report.label_failures.end(), r.failures.begin(), r.failures.end());
     report.lines_too_short += r.lines_too_short;
@@ -263,6 +265,7 @@ MapReport write_map(const Tin& tin,
     report.contour_lines = data.contours.size();
     for (const Contour& c : data.contours) report.index_lines += c.level.index ? 1 : 0;
     report.spots_selected = data.spots.size();
+    report.sjtsk = data.sjtsk;
     for (const SpotHeight& s : data.spots) {
         report.summits += s.kind == SpotKind::summit;
         report.pits += s.kind == SpotKind::pit;

@@ -68,6 +68,18 @@ struct FailureRecord {
     LabelFailureReason reason = LabelFailureReason::curved;
 };
 
+/// Where one page's furniture went (page mm) and what its title block says; with the grid
+/// spacing, so that other tools (the QGIS print layout) can rebuild the same sheet.
+struct PageFurniture {
+    std::string page;
+    draw::Rect title;
+    draw::Rect legend;
+    draw::Rect scale_bar;
+    draw::Rect north;
+    draw::TitleBlock block;
+    double grid_step = 0.0;  ///< grid crosses every this many CRS units
+};
+
 struct MapReport {
     std::filesystem::path output;
     MapLayout layout;
@@ -76,6 +88,8 @@ struct MapReport {
     std::size_t index_every = 0;
     std::size_t contour_lines = 0;
     std::size_t index_lines = 0;
+    std::vector<PageFurniture> furniture;  ///< per map sheet
+    bool sjtsk = false;                    ///< the CRS is S-JTSK (grid labels as Y, X)
     std::vector<LabelRecord> labels;
     std::vector<FailureRecord> label_failures;
     std::size_t lines_too_short = 0;  ///< index contour pieces too short for a label
