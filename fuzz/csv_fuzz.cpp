@@ -13,7 +13,7 @@
 
 #include "dtm/core/error.hpp"
 #include "dtm/io/formats/csv.hpp"
-#include "io/formats/csv_detail.hpp"
+#include "io/formats/csv/csv_detail.hpp"
 
 namespace {
 

@@ -99,9 +99,7 @@ Command info_command()
                 add_input_options(app, *args);
                 app.add_flag("--json", *json, "One JSON object {\"inputs\": [...]}");
                 return [args, json]() -> int {
-                    io::LoadOptions options = to_load_options(*args);
-                    options.resolve_heights = false;
-                    const io::LoadedInputs loaded = io::load_inputs(options);
+                    const io::LoadedInputs loaded = io::load_inputs(to_load_options(*args));
                     if (*json) {
                         print_json(std::cout, loaded);
                     } else {

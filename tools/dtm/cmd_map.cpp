@@ -3,8 +3,9 @@
 //         [--orientation auto|portrait|landscape] [--extent XMIN,YMIN,XMAX,YMAX] [--sheets]
 //         [--title T] [--interval I] [--index-every K] [--hillshade] [--spot-heights N|all|none]
 //         [--report map.json]
-// The surveyor's contour map at scale (parse -> options -> library -> report). Every label
-// position that found no room is counted on stdout and listed in the --report JSON.
+// The surveyor's contour map at scale: products::map() behind its options (parse -> options ->
+// library -> report). Every label position that found no room is counted on stdout and listed
+// in the --report JSON.
 #include <cstdio>
 #include <fstream>
 #include <map>
@@ -14,10 +15,9 @@
 #include <vector>
 
 #include "command.hpp"
-#include "dtm/algo/triangulate.hpp"
 #include "dtm/core/error.hpp"
-#include "dtm/io/inputs.hpp"
 #include "dtm/io/map/map.hpp"
+#include "dtm/products/map.hpp"
 #include "input_args.hpp"
 #include "terminal_progress.hpp"
 #include "tin_args.hpp"
@@ -63,11 +63,6 @@ void parse_spots(const std::string& text, io::map::MapOptions& map) {
     map.spot_count = static_cast<std::size_t>(n);
 }
 
-std::string file_name(const std::string& path) {
-    const std::size_t slash = path.find_last_of('/');
-    return slash == std::string::npos ? path : path.substr(slash + 1);
-}
-
 void print_summary(const io::map::MapReport& r) {
     const io::map::PageFrame& p = r.layout.pages.front();
     std::printf("map: %zu sheet%s of %.1f x %.1f mm at 1:%g%s -> %s%s\n", r.layout.pages.size(),
@@ -109,25 +104,15 @@ int run_map(MapArgs args) {
     }
     parse_spots(args.spots, args.map);
     const Progress progress = terminal_progress("map", args.quiet);
-    io::LoadedInputs inputs = io::load_inputs(to_load_options(args.input), progress.sub(0.0, 0.2));
-    const Tin tin =
-        inputs.tin ? std::move(*inputs.tin)
-                   : triangulate(std::move(inputs.terrain), args.tin, progress.sub(0.2, 0.5)).tin;
-    args.map.crs_wkt = inputs.crs_wkt;
-    for (const std::string& in : args.input.inputs) args.map.sources.push_back(file_name(in));
-    for (const auto* list : {&args.input.breaklines, &args.input.soft_breaklines,
-                             &args.input.boundaries, &args.input.holes}) {
-        for (const std::string& in : *list) args.map.sources.push_back(file_name(in));
-    }
     const io::map::MapReport report =
-        io::map::write_map(tin, args.map, args.output, progress.sub(0.5, 1.0));
+        products::map(to_load_options(args.input), args.output, {args.tin, args.map}, progress);
     if (!args.report.empty()) {
         std::ofstream out(args.report, std::ios::binary);
         out << io::map::map_report_json(report);
         if (!out) throw Error("map: cannot write the report " + args.report);
     }
     if (!args.quiet) print_summary(report);
-    if (inputs.crs_wkt.empty()) {
+    if (!report.georeferenced && report.output.extension() == ".pdf") {
         std::fprintf(stderr,
                      "dtm map: warning: the inputs carry no CRS (give --crs): the map is not "
                      "georeferenced and its grid labels are plain coordinates\n");

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // `dtm tin`: read points and breaklines, build the constrained Delaunay TIN, write it by extension.
-// Thin: parse -> options -> io::load_inputs -> dtm::triangulate -> io::write_tin -> report.
+// Thin: parse -> options -> io::load_inputs -> products::surface -> io::write_tin -> report.
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -12,6 +12,7 @@
 #include "dtm/core/error.hpp"
 #include "dtm/io/atomic_file.hpp"
 #include "dtm/io/tin_file.hpp"
+#include "dtm/products/surface.hpp"
 #include "input_args.hpp"
 #include "json_text.hpp"
 #include "terminal_progress.hpp"
@@ -81,16 +82,13 @@ int run_tin(const TinArgs& a)
     io::LoadedInputs loaded = io::load_inputs(to_load_options(a.input), progress.sub(0, 0.2));
     const double read_s = since(start);
 
-    TriangulateResult result;
-    if (loaded.tin) {
-        result.tin = *loaded.tin;
-    } else {
-        // Without --check the input is not needed afterwards: let the triangulation consume it.
-        result = a.check ? triangulate(loaded.terrain, a.triangulate, progress.sub(0.2, 0.9))
-                         : triangulate(std::move(loaded.terrain), a.triangulate,
-                                       progress.sub(0.2, 0.9));
-    }
-    if (a.check) check_tin(result, loaded.tin ? TerrainInput{} : loaded.terrain);
+    // --check compares the TIN with the input, so it keeps a copy; otherwise the triangulation
+    // consumes the input.
+    const TerrainInput kept = a.check && !loaded.tin ? loaded.terrain : TerrainInput{};
+    const products::Surface surface =
+        products::surface(loaded, a.triangulate, progress.sub(0.2, 0.9));
+    const TriangulateResult& result = surface.result;
+    if (a.check) check_tin(result, kept);
 
     const auto write_start = std::chrono::steady_clock::now();
     io::TinWriteOptions write_options;

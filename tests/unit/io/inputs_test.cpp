@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: MIT
-// load_inputs: roles, CRS resolution (S-JTSK, lat/lon -> UTM, --target-crs), heights of 2-D
-// lines and rings, PLY TINs, summaries, and the real hurdville survey.
+// load_inputs: roles, CRS resolution (S-JTSK, lat/lon -> UTM, the target CRS), 2-D lines left
+// without heights, PLY TINs, summaries, and the real hurdville survey.
 #include "dtm/io/inputs.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include "dtm/algo/line_heights.hpp"
 #include "dtm/core/error.hpp"
 #include "dtm/io/formats/crs.hpp"
 #include "dtm/io/tin_file.hpp"
@@ -128,49 +129,19 @@ TEST(LoadInputs, LabelsStayParallelToThePointsWhicheverInputHasThem)
     }
 }
 
-TEST(LoadInputs, TwoDimensionalHardBreaklineTakesHeightsOfCoincidentPointsOrFails)
+TEST(LoadInputs, LeavesMissingHeightsToTheTriangulator)
 {
     dtm::test::ScratchDir dir;
     dtm::test::write_file(dir / "p.csv", "0.5 0 1\n10.5 0 2\n10.5 10 3\n");
-    dtm::test::write_file(dir / "l.csv", "1,0.5,0\n1,10.5,0\n");
-    dtm::test::write_file(dir / "bad.csv", "1,0.5,0\n1,5.5,5\n");
-    auto loaded = dtm::io::load_inputs(
-        files({{dir / "p.csv", InputRole::points}, {dir / "l.csv", InputRole::breaklines}}));
-    ASSERT_EQ(loaded.terrain.breaklines.size(), 1u);
-    EXPECT_EQ(loaded.terrain.breaklines[0].points[1].z, 2.0);
-    try {
-        (void)dtm::io::load_inputs(
-            files({{dir / "p.csv", InputRole::points}, {dir / "bad.csv", InputRole::breaklines}}));
-        FAIL();
-    } catch (const dtm::InputError& e) {
-        EXPECT_NE(std::string(e.what()).find("bad.csv:1"), std::string::npos) << e.what();
-        EXPECT_NE(std::string(e.what()).find("--soft-breaklines"), std::string::npos);
-    }
-}
-
-TEST(LoadInputs, TwoDimensionalBoundaryTakesTheSurfaceHeight)
-{
-    dtm::test::ScratchDir dir;
-    // plane z = x + 2y over a square; the boundary is inside it, without heights
-    dtm::test::write_file(dir / "p.csv", "0 0 0\n100 0 100\n100 100 300\n0 100 200\n50 50 150\n");
-    dtm::test::write_file(dir / "b.csv", "1,10.5,10\n1,90.5,10\n1,90.5,90\n1,10.5,90\n");
-    const auto loaded = dtm::io::load_inputs(
-        files({{dir / "p.csv", InputRole::points}, {dir / "b.csv", InputRole::boundary}}));
-    ASSERT_EQ(loaded.terrain.boundaries.size(), 1u);
-    for (const auto& p : loaded.terrain.boundaries[0].points) {
-        EXPECT_NEAR(p.z, p.x + 2 * p.y, 1e-9);
-    }
-}
-
-TEST(LoadInputs, InfoModeLeavesMissingHeightsAlone)
-{
-    dtm::test::ScratchDir dir;
     dtm::test::write_file(dir / "l.csv", "1,0.5,0\n1,5.5,5\n");
-    LoadOptions options = files({{dir / "l.csv", InputRole::breaklines}});
-    options.resolve_heights = false;
-    const auto loaded = dtm::io::load_inputs(options);
+    dtm::test::write_file(dir / "b.csv", "1,1.5,1\n1,9.5,1\n1,9.5,8\n");
+    const auto loaded = dtm::io::load_inputs(files({{dir / "p.csv", InputRole::points},
+                                                    {dir / "l.csv", InputRole::breaklines},
+                                                    {dir / "b.csv", InputRole::boundary}}));
     EXPECT_TRUE(std::isnan(loaded.terrain.breaklines.at(0).points[0].z));
-    EXPECT_EQ(loaded.summaries[0].breakline_vertices, 2u);
+    EXPECT_TRUE(std::isnan(loaded.terrain.boundaries.at(0).points[0].z));
+    EXPECT_EQ(loaded.summaries[1].breakline_vertices, 2u);
+    for (const auto& s : loaded.summaries) EXPECT_TRUE(s.warnings.empty());
 }
 
 TEST(LoadInputs, PlyTinInputSetsTinAndPoints)
@@ -232,7 +203,9 @@ TEST(LoadInputsRealData, HurdvilleSurveyWithBoundaryAndHoles)
     EXPECT_EQ(loaded.terrain.soft_breaklines.size(), 156u);
     ASSERT_EQ(loaded.terrain.boundaries.size(), 1u);
     EXPECT_EQ(loaded.terrain.hole_seeds.size(), 16u);
-    for (const auto& v : loaded.terrain.boundaries[0].points) {
+    dtm::TerrainInput terrain = loaded.terrain;  // the heights come with the triangulation
+    EXPECT_GT(dtm::resolve_line_heights(terrain).from_surface, 0u);
+    for (const auto& v : terrain.boundaries[0].points) {
         EXPECT_GE(v.z, 206.0);
         EXPECT_LE(v.z, 240.5);
     }

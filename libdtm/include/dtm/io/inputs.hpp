@@ -2,7 +2,7 @@
 /// @file
 /// @brief Loading every input a subcommand names (points, breaklines, boundaries, holes, TINs) into
 /// one TerrainInput in one planar CRS, with a summary of what each reader found.
-/// The readers themselves sit behind the registry in src/io/registry.cpp.
+/// The readers themselves sit behind the registry in src/io/reader.cpp.
 #pragma once
 
 #include <array>
@@ -38,10 +38,6 @@ struct LoadOptions {
     std::string layer;    ///< --layer: OGR layer name; empty = every layer
     std::string where;    ///< --where: OGR attribute filter (SQL WHERE clause)
     std::string z_field;  ///< --z-field: OGR attribute holding the height (points, contours)
-    /// Give polyline vertices without a height one (from a survey point at the same xy, or the
-    /// surface for boundary/hole rings) and reject hard breakline vertices left without.
-    /// false (dtm info): leave them NaN.
-    bool resolve_heights = true;
     HpglOptions hpgl;  ///< options of the HPGL plan reader
 };
 

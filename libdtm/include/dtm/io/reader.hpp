@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 /// @file
 /// @brief The one small reader interface: each format is a function filling a ReadResult; the
-/// explicit list of formats is in src/io/registry.cpp (no static self-registration).
+/// explicit list of formats is in src/io/reader.cpp (no static self-registration).
 #pragma once
 
 #include <filesystem>

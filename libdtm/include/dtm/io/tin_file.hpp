@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 /// @file
 /// @brief Writing a Tin to a file chosen by extension (.ply here; other formats register in
-/// src/io/tin_writers.cpp), and reading a dtm PLY TIN back.
+/// src/io/tin_file.cpp), and reading a dtm PLY TIN back.
 #pragma once
 
 #include <filesystem>

@@ -6,7 +6,7 @@
 // never meet a constrained edge of another segment while they are inserted, so the only way two
 // of them interact is through the triangles they cross. Each is planned on the current mesh
 // without changing it (the walk along the segment: crossed edges and cavity chains, see
-// mesh_segment.cpp); every vertex whose ring a plan would change is reserved with the segment's
+// mesh_edit_segment.cpp); every vertex whose ring a plan would change is reserved with the segment's
 // priority (its input index, by an atomic minimum); a plan that holds all its reservations is
 // applied, concurrently with the other winners, whose vertex sets are disjoint from it; the rest
 // try again in the next round on the updated mesh. A plan whose vertices are disjoint from every

@@ -198,7 +198,7 @@ Furniture plan_furniture(const MapData& data,
         throw UsageError("map: the page (" + number(page.width_mm, 0) + " x " +
                          number(page.height_mm, 0) +
                          " mm) is too small for the title block and legend; use a larger extent, "
-                         "a larger scale or --paper");
+                         "a larger scale or `paper`");
     }
     Furniture f;
     if (best_arrangement == 0) {

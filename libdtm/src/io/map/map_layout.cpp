@@ -120,7 +120,7 @@ double largest_fitting_scale(
 
 MapLayout layout_map(const LayoutRequest& r) {
     if (!(r.scale > 0.0) || !std::isfinite(r.scale)) {
-        throw UsageError("map: the scale must be a positive number (1:500 is --scale 500)");
+        throw UsageError("map: the scale must be a positive number (1:500 is `scale` 500)");
     }
     if (!(r.unit_m > 0.0)) throw UsageError("map: the CRS has no usable linear unit");
     const Box2 area = r.extent ? *r.extent : r.data;
@@ -151,7 +151,7 @@ MapLayout layout_map(const LayoutRequest& r) {
                              " mm, larger than A0 (841 x 1189 mm): " +
                              scale_hint(area.xmax - area.xmin, area.ymax - area.ymin, r,
                                         a0.width_mm, a0.height_mm, "A0") +
-                             "; or split it with --sheets and --paper");
+                             "; or split it with `sheets` and `paper`");
         }
         layout.paper = "extent";
         layout.pages.push_back(frame_of(area, r));
@@ -171,7 +171,7 @@ MapLayout layout_map(const LayoutRequest& r) {
             (landscape ? " landscape (" : " portrait (") + mm_text(pw) + " x " + mm_text(ph) +
             " mm): " +
             scale_hint(area.xmax - area.xmin, area.ymax - area.ymin, r, pw, ph, paper.name) +
-            ", or use --sheets, a larger --paper or a smaller --extent");
+            ", or use `sheets`, a larger `paper` or a smaller `extent`");
     }
     const Point2 c{(area.xmin + area.xmax) / 2.0, (area.ymin + area.ymax) / 2.0};
     PageFrame p = frame_of(centred(c, pw / mm, ph / mm), r);

@@ -63,7 +63,7 @@ void describe_crs(MapData& data, Point2 centre, double& unit_m) {
     if (srs.IsGeographic()) {
         throw UsageError(
             "map: the surface is in geographic coordinates (degrees); a map at scale needs a "
-            "projected CRS (give --target-crs, e.g. EPSG:5514 or a UTM zone)");
+            "projected CRS (give `target_crs`, e.g. EPSG:5514 or a UTM zone)");
     }
     if (srs.IsProjected() || srs.IsLocal()) unit_m = srs.GetLinearUnits();
     if (!(unit_m > 0.0)) unit_m = 1.0;

@@ -107,7 +107,7 @@ TEST(MapLayout, ImpossibleRequestsAreClearErrors) {
         (void)layout_map(r);
         FAIL() << "expected a UsageError";
     } catch (const UsageError& e) {
-        EXPECT_NE(std::string(e.what()).find("--sheets"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("`sheets`"), std::string::npos) << e.what();
     }
     EXPECT_DOUBLE_EQ(largest_fitting_scale(300, 200, 1.0, 297, 210), 2000.0);
 }
