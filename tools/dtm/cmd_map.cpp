@@ -16,6 +16,7 @@
 
 #include "command.hpp"
 #include "dtm/core/error.hpp"
+#include "dtm/io/atomic_file.hpp"
 #include "dtm/io/map/map.hpp"
 #include "dtm/products/map.hpp"
 #include "input_args.hpp"
@@ -107,9 +108,13 @@ int run_map(MapArgs args) {
     const io::map::MapReport report =
         products::map(to_load_options(args.input), args.output, {args.tin, args.map}, progress);
     if (!args.report.empty()) {
-        std::ofstream out(args.report, std::ios::binary);
-        out << io::map::map_report_json(report);
-        if (!out) throw Error("map: cannot write the report " + args.report);
+        io::AtomicOutput out(args.report);
+        {
+            std::ofstream f(out.temp_path(), std::ios::binary);
+            f << io::map::map_report_json(report);
+            if (!f) throw Error("map: cannot write the report " + args.report);
+        }
+        out.commit();
     }
     if (!args.quiet) print_summary(report);
     if (!report.georeferenced && report.output.extension() == ".pdf") {

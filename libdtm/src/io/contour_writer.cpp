@@ -15,6 +15,7 @@
 #include <mutex>
 
 #include "dtm/core/error.hpp"
+#include "dtm/io/extension.hpp"
 #include "dtm/io/atomic_file.hpp"
 #include "dtm/io/contour_writer.hpp"
 
@@ -33,10 +34,7 @@ constexpr std::array<Format, 5> formats{{{"gpkg", "GPKG"},
                                          {"json", "GeoJSON"}}};
 
 const Format& format_for(const fs::path& target) {
-    std::string ext = target.extension().string();
-    ext.erase(0, std::min<std::size_t>(1, ext.size()));
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    const std::string ext = lower_extension(target);
     for (const Format& f : formats) {
         if (ext == f.extension) {
             return f;

@@ -20,6 +20,7 @@
 #include <sstream>
 
 #include "dtm/core/error.hpp"
+#include "dtm/io/extension.hpp"
 #include "dtm/io/atomic_file.hpp"
 #include "dtm/io/grid_writer.hpp"
 
@@ -33,16 +34,6 @@ void register_gdal() {
         GDALAllRegister();
         CPLSetConfigOption("GDAL_PAM_ENABLED", "NO");  // no .aux.xml side files
     });
-}
-
-std::string lower_extension(const fs::path& path) {
-    std::string ext = path.extension().string();
-    if (!ext.empty()) {
-        ext.erase(0, 1);
-    }
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return ext;
 }
 
 bool declares_extension(GDALDriverH driver, const std::string& ext) {
@@ -85,7 +76,8 @@ std::string raster_driver_for(const fs::path& target) {
         }
     }
     throw UsageError("grid: no GDAL raster driver writes '." + ext + "' (" + target.string() +
-                     "); use .tif, .asc, or another extension from `gdalinfo --formats`");
+                     "); use .tif, .asc, or the extension of another GDAL raster driver that "
+                     "writes (gdalinfo lists them)");
 }
 
 [[noreturn]] void throw_gdal(const std::string& what) {
@@ -167,7 +159,7 @@ GridWriter::GridWriter(const fs::path& target,
                          std::to_string(spec.rows) + " is not writable");
     }
     if (options.cog && state_->driver != "GTiff") {
-        throw UsageError("grid: --cog needs a .tif target, not " + target.string());
+        throw OptionError("cog", "grid: `cog` needs a .tif target, not " + target.string());
     }
     if (state_->driver == "GTiff" && !options.cog) {
         state_->ds = create_geotiff(state_->out.temp_path(), spec, options, false);

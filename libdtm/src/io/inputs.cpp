@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
 // Loading every input of a subcommand into one TerrainInput in one planar CRS:
-//   1. each file goes to its reader (reader.cpp; .ply positional inputs are dtm TINs);
-//   2. its CRS is the one the file carries, else --crs; S-JTSK positive (Y, X) become
+//   1. each file goes to its reader (the table in reader.cpp); the first TIN a reader returns
+//      (a dtm .ply) is the surface, used as it is;
+//   2. its CRS is the one the file carries, else CrsOptions::default_crs; S-JTSK positive (Y, X) become
 //      Krovak East-North; the summary is taken here, in the input's own CRS;
-//   3. the output CRS is --target-crs, else the first input's CRS; a geographic output CRS is
+//   3. the output CRS is CrsOptions::target_crs, else the first input's CRS; a geographic output CRS is
 //      replaced by the UTM zone of the data (GeographicLib); every input is transformed into it;
 // Line vertices without a height keep NaN z: triangulate() gives them one
 // (algo/line_heights.hpp), and `dtm info` shows the lines as they are.
@@ -12,28 +13,28 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
-#include <unordered_map>
 
 #include "dtm/algo/duplicates.hpp"
 #include "dtm/core/error.hpp"
 #include "dtm/io/formats/crs.hpp"
 #include "dtm/io/reader.hpp"
-#include "dtm/io/tin_file.hpp"
 
 namespace dtm::io {
 namespace {
 
 struct Loaded {
     ReadResult result;
-    std::string crs_wkt;  ///< after --crs
+    std::string crs_wkt;  ///< after CrsOptions::default_crs
 };
 
-bool is_ply(const std::filesystem::path& path)
+/// The WKT of a CRS option; a definition GDAL does not know is an OptionError naming @p field.
+std::string option_crs(const std::string& definition, const char* field)
 {
-    std::string ext = path.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return ext == ".ply";
+    try {
+        return crs_to_wkt(definition);
+    } catch (const UsageError& e) {
+        throw OptionError(field, "`" + std::string(field) + "`: " + e.what());
+    }
 }
 
 void summarize(InputSummary& s, const TerrainInput& t)
@@ -71,24 +72,19 @@ Loaded read_one(const InputFile& file, const LoadOptions& options, const Progres
                 std::optional<Tin>& tin)
 {
     Loaded loaded;
-    if (file.role == InputRole::points && is_ply(file.path)) {
-        LoadedTin t = read_tin_ply(file.path);
-        loaded.result.terrain.points = t.tin.vertices;
-        loaded.result.crs_wkt = t.crs_wkt;
-        loaded.result.summary.path = file.path;
-        loaded.result.summary.format = "dtm PLY TIN";
+    loaded.result = find_reader(file.path).read(file, options.read, progress);
+    if (loaded.result.tin) {
         if (tin) {
             loaded.result.summary.warnings.push_back(
-                "only the first PLY TIN is used as a TIN; this one adds its vertices as points");
+                "only the first TIN input is used as a TIN; this one adds its vertices as points");
         } else {
-            tin = std::move(t.tin);
+            tin = std::move(loaded.result.tin);
         }
-    } else {
-        loaded.result = find_reader(file.path).read(file, options, progress);
+        loaded.result.tin.reset();
     }
     loaded.crs_wkt = loaded.result.crs_wkt;
-    if (loaded.crs_wkt.empty() && !options.crs.empty()) {
-        loaded.crs_wkt = crs_to_wkt(options.crs, "--crs");
+    if (loaded.crs_wkt.empty() && !options.crs.default_crs.empty()) {
+        loaded.crs_wkt = option_crs(options.crs.default_crs, "default_crs");
     }
     InputSummary& s = loaded.result.summary;
     s.path = file.path;
@@ -114,10 +110,11 @@ struct Target {
 Target choose_target(const LoadOptions& options, const std::vector<Loaded>& loaded)
 {
     Target target;
-    if (!options.target_crs.empty()) {
-        target.wkt = crs_to_wkt(options.target_crs, "--target-crs");
+    if (!options.crs.target_crs.empty()) {
+        target.wkt = option_crs(options.crs.target_crs, "target_crs");
         if (crs_is_geographic(target.wkt)) {
-            throw UsageError("--target-crs: expected a projected CRS (metres), found the "
+            throw OptionError("target_crs",
+                              "`target_crs`: expected a projected CRS (metres), found the "
                              "geographic " + crs_label(target.wkt) +
                              "; triangulating degrees is wrong");
         }
@@ -132,7 +129,7 @@ Target choose_target(const LoadOptions& options, const std::vector<Loaded>& load
         const auto& b = l.result.summary.bbox;
         UtmZone zone = utm_zone_for((b[0] + b[2]) / 2.0, (b[1] + b[3]) / 2.0);
         target.utm = zone;
-        target.wkt = crs_to_wkt("EPSG:" + std::to_string(zone.epsg()), "UTM zone");
+        target.wkt = crs_to_wkt("EPSG:" + std::to_string(zone.epsg()));
         return target;
     }
     return target;
@@ -151,14 +148,14 @@ void to_target(Loaded& l, const Target& target)
     if (l.crs_wkt.empty() || target.wkt.empty()) {
         if (!target.wkt.empty()) {
             l.result.summary.warnings.push_back(
-                "no CRS in the file and no --crs: taken to be in the output CRS");
+                "no CRS in the file and no `default_crs`: taken to be in the output CRS");
         }
         return;
     }
     if (crs_equivalent(l.crs_wkt, target.wkt)) return;
     if (target.utm && crs_is_geographic(l.crs_wkt)) {
         if (!wgs84_like(l.crs_wkt)) {
-            transform_terrain(l.result.terrain, l.crs_wkt, crs_to_wkt("EPSG:4326", "WGS84"), name);
+            transform_terrain(l.result.terrain, l.crs_wkt, crs_to_wkt("EPSG:4326"), name);
         }
         project_to_utm(l.result.terrain, *target.utm, name);
         return;

@@ -5,13 +5,14 @@
 // path it is given.
 #include <algorithm>
 #include <array>
-#include <cctype>
 #include <string>
 
 #include "dtm/core/error.hpp"
 #include "dtm/io/atomic_file.hpp"
+#include "dtm/io/extension.hpp"
 #include "dtm/io/formats/mesh_2dm.hpp"
 #include "dtm/io/formats/ogr_tin.hpp"
+#include "dtm/io/formats/ply.hpp"
 #include "dtm/io/formats/vtk_surface.hpp"
 #include "dtm/io/tin_file.hpp"
 
@@ -34,14 +35,6 @@ constexpr std::array tin_writer_table{
     TinWriterInfo{"gpkg", "GeoPackage: one PolygonZ feature per triangle", &write_ogr_tin},
     TinWriterInfo{"shp", "ESRI Shapefile: one PolygonZ feature per triangle", &write_ogr_tin},
 };
-
-std::string lower_extension(const std::filesystem::path& path) {
-    std::string extension = path.extension().string();
-    if (!extension.empty()) extension.erase(0, 1);
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return extension;
-}
 
 }  // namespace
 

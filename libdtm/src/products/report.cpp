@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// The JSON report of products::build(), written with the small streaming JSON builder of
-// io/json_builder.hpp (no dependency).
+// The JSON report of products::build(), written with io::JsonWriter (block layout, 2-space
+// indentation; NaN and infinities become null).
 #include "dtm/products/report.hpp"
 
 #include <ogr_spatialref.h>
@@ -13,17 +13,15 @@
 #include <numeric>
 
 #include "dtm/core/error.hpp"
-#include "io/json_builder.hpp"
+#include "dtm/io/json_writer.hpp"
 
 namespace dtm::products {
 namespace {
 
-using io::Json;
-
-void write_inputs(Json& json, const BuildReport& report) {
-    json.open('[', "inputs");
+void write_inputs(io::JsonWriter& json, const BuildReport& report) {
+    json.begin_array("inputs");
     for (const io::InputSummary& in : report.inputs) {
-        json.open('{');
+        json.begin_object();
         json.value("path", in.path.generic_string());
         json.value("format", in.format);
         json.value("crs", in.crs);
@@ -34,17 +32,17 @@ void write_inputs(Json& json, const BuildReport& report) {
         json.value("holes", in.holes);
         json.value("duplicates", in.duplicates);
         json.value("skipped_lines", in.skipped_lines);
-        json.open('[', "warnings");
+        json.begin_array("warnings");
         for (const std::string& warning : in.warnings) {
             json.value({}, warning);
         }
-        json.close(']');
-        json.close('}');
+        json.end();
+        json.end();
     }
-    json.close(']');
+    json.end();
 }
 
-void write_crs(Json& json, const std::string& wkt) {
+void write_crs(io::JsonWriter& json, const std::string& wkt) {
     std::string name;
     std::string authority;
     if (!wkt.empty()) {
@@ -61,121 +59,121 @@ void write_crs(Json& json, const std::string& wkt) {
             }
         }
     }
-    json.open('{', "crs");
+    json.begin_object("crs");
     json.value("name", name);
     json.value("authority", authority);
     json.value("wkt", wkt);
-    json.close('}');
+    json.end();
 }
 
-void write_fate(Json& json, std::string_view key, const PointFate& fate) {
-    json.open('{', key);
+void write_fate(io::JsonWriter& json, std::string_view key, const PointFate& fate) {
+    json.begin_object(key);
     json.value("read", fate.total);
     json.value("used", fate.used);
     json.value("merged_duplicates", fate.merged);
     json.value("outside_boundary_or_in_hole", fate.removed);
-    json.close('}');
+    json.end();
 }
 
-void write_points(Json& json, const BuildReport& report) {
+void write_points(io::JsonWriter& json, const BuildReport& report) {
     const InputAccounting& a = report.accounting;
-    json.open('{', "points");
+    json.begin_object("points");
     write_fate(json, "survey_points", a.survey_points);
     write_fate(json, "line_vertices", a.line_vertices);
     json.value("skipped_bad_lines", report.skipped_lines);
     json.value("total_accounted",
                a.survey_points.total + a.line_vertices.total + report.skipped_lines);
-    json.close('}');
+    json.end();
 }
 
-void write_tin(Json& json, const BuildReport& report) {
-    json.open('{', "tin");
+void write_tin(io::JsonWriter& json, const BuildReport& report) {
+    json.begin_object("tin");
     json.value("vertices", report.surface.vertex_count);
     json.value("triangles", report.surface.triangle_count);
     json.value("constrained_edges", report.surface.constraint_count);
     json.value("breakline_intersections", report.triangulation.intersections);
     json.value("removed_triangles", report.triangulation.removed_triangles);
-    json.close('}');
-    json.open('{', "conflicts");
+    json.end();
+    json.begin_object("conflicts");
     json.value("count", report.conflicts.size());
-    json.open('[', "items");
+    json.begin_array("items");
     for (std::size_t i = 0; i < report.conflicts.size() && i < report_conflict_limit; ++i) {
         const ConstraintConflict& c = report.conflicts[i];
-        json.open('{');
+        json.begin_object();
         json.value("x", c.at.x);
         json.value("y", c.at.y);
         json.value("z_first", c.z_first);
         json.value("z_second", c.z_second);
         json.value("difference", std::fabs(c.z_first - c.z_second));
-        json.close('}');
+        json.end();
     }
-    json.close(']');
-    json.close('}');
+    json.end();
+    json.end();
 }
 
-void write_surface(Json& json, const BuildReport& report) {
+void write_surface(io::JsonWriter& json, const BuildReport& report) {
     const SurfaceStats& s = report.surface;
-    json.open('{', "extent");
+    json.begin_object("extent");
     json.value("xmin", s.extent.xmin);
     json.value("ymin", s.extent.ymin);
     json.value("xmax", s.extent.xmax);
     json.value("ymax", s.extent.ymax);
-    json.close('}');
-    json.open('{', "z_range");
+    json.end();
+    json.begin_object("z_range");
     json.value("min", s.z_min);
     json.value("max", s.z_max);
-    json.close('}');
-    json.open('{', "area");
+    json.end();
+    json.begin_object("area");
     json.value("planimetric", s.planimetric_area);
     json.value("surface_3d", s.surface_area);
     json.value("ratio", s.planimetric_area > 0.0 ? s.surface_area / s.planimetric_area : 0.0);
-    json.close('}');
+    json.end();
 }
 
-void write_products(Json& json, const BuildReport& report) {
-    json.open('{', "dem");
+void write_products(io::JsonWriter& json, const BuildReport& report) {
+    json.begin_object("dem");
     json.value("cell", report.dem.cell);
     json.value("cell_rule", report.cell_rule);
     json.value("cols", report.dem.cols);
     json.value("rows", report.dem.rows);
     json.value("xmin", report.dem.xmin);
     json.value("ymax", report.dem.ymax);
-    json.close('}');
-    json.open('{', "contours");
+    json.end();
+    json.begin_object("contours");
     json.value("interval", report.contour_interval);
     json.value("index_every", report.index_every);
     json.value("interval_rule", report.interval_rule);
     json.value("levels", report.contour_levels);
     json.value("lines", report.contour_lines);
-    json.close('}');
+    json.end();
     if (report.map_scale > 0.0) {
-        json.open('{', "map");
+        json.begin_object("map");
         json.value("scale", report.map_scale);
         json.value("labels_placed", report.map_labels);
         json.value("label_positions_without_room", report.map_label_failures);
         json.value("spot_heights", report.map_spot_heights);
-        json.close('}');
+        json.end();
     }
-    json.open('{', "timings_seconds");
+    json.begin_object("timings_seconds");
     double total = 0.0;
     for (const StageTime& t : report.timings) {
         json.value(t.stage, t.seconds);
         total += t.seconds;
     }
     json.value("total", total);
-    json.close('}');
-    json.open('[', "outputs");
+    json.end();
+    json.begin_array("outputs");
     for (const std::string& file : report.outputs) {
         json.value({}, file);
     }
-    json.close(']');
+    json.end();
 }
 
 }  // namespace
 
 std::string report_json(const BuildReport& report) {
-    Json json;
-    json.open('{');
+    io::JsonWriter json;
+    json.begin_object();
     json.value("dtm_version", DTM_VERSION);
     write_inputs(json, report);
     write_crs(json, report.crs_wkt);
@@ -183,7 +181,7 @@ std::string report_json(const BuildReport& report) {
     write_tin(json, report);
     write_surface(json, report);
     write_products(json, report);
-    json.close('}');
+    json.end();
     return json.str();
 }
 

@@ -10,6 +10,7 @@
 #include "dtm/algo/line_heights.hpp"
 #include "dtm/core/error.hpp"
 #include "dtm/io/formats/crs.hpp"
+#include "dtm/io/formats/ply.hpp"
 #include "dtm/io/tin_file.hpp"
 #include "support/test_support.hpp"
 
@@ -30,7 +31,7 @@ TEST(LoadInputs, CzechListWithCrs5514BecomesKrovakEastNorthWhateverTheColumnOrde
     for (const char* name : {"readers/czech_list.csv", "readers/czech_list_xy.csv",
                              "readers/czech_list_noheader.txt"}) {
         LoadOptions options = files({{dtm::test::data_path(name), InputRole::points}});
-        options.crs = "EPSG:5514";
+        options.crs.default_crs = "EPSG:5514";
         const auto loaded = dtm::io::load_inputs(options);
         ASSERT_GE(loaded.terrain.points.size(), 3u) << name;
         EXPECT_EQ(loaded.terrain.points[0], (dtm::Point3{-745123.45, -1045123.12, 312.45}))
@@ -46,7 +47,7 @@ TEST(LoadInputs, TextFileTakesItsCrsFromASidecarPrj)
     dtm::test::ScratchDir dir;
     dtm::test::write_file(dir / "list.txt",
                           dtm::test::read_file(dtm::test::data_path("readers/czech_list_noheader.txt")));
-    dtm::test::write_file(dir / "list.prj", dtm::io::crs_to_wkt("EPSG:5514", "test"));
+    dtm::test::write_file(dir / "list.prj", dtm::io::crs_to_wkt("EPSG:5514"));
     const auto loaded = dtm::io::load_inputs(files({{dir / "list.txt", InputRole::points}}));
     EXPECT_EQ(loaded.summaries.at(0).crs, "EPSG:5514");
     EXPECT_EQ(loaded.terrain.points.at(0), (dtm::Point3{-745123.45, -1045123.12, 312.45}));
@@ -78,18 +79,41 @@ TEST(LoadInputs, TargetCrsTransformsEveryInput)
 {
     LoadOptions options = files({{dtm::test::data_path("readers/gnss_latlon.csv"),
                                   InputRole::points}});
-    options.target_crs = "EPSG:32634";
+    options.crs.target_crs = "EPSG:32634";
     const auto loaded = dtm::io::load_inputs(options);
     EXPECT_EQ(dtm::io::crs_label(loaded.crs_wkt), "EPSG:32634");
     EXPECT_LT(loaded.terrain.points[0].x, 166000.0 + 50000.0);  // far west of zone 34
+}
+
+/// load_inputs(@p options) throws an OptionError naming @p field, its message starting with
+/// @p start.
+void expect_option_error(const LoadOptions& options, const std::string& field,
+                         const std::string& start)
+{
+    try {
+        (void)dtm::io::load_inputs(options);
+        ADD_FAILURE() << "no exception";
+    } catch (const dtm::OptionError& e) {
+        EXPECT_EQ(e.field(), field);
+        EXPECT_EQ(std::string(e.what()).rfind(start, 0), 0u) << e.what();
+    }
 }
 
 TEST(LoadInputs, GeographicTargetCrsIsRefused)
 {
     LoadOptions options = files({{dtm::test::data_path("readers/gnss_latlon.csv"),
                                   InputRole::points}});
-    options.target_crs = "EPSG:4326";
-    EXPECT_THROW((void)dtm::io::load_inputs(options), dtm::UsageError);
+    options.crs.target_crs = "EPSG:4326";
+    expect_option_error(options, "target_crs", "`target_crs`: expected a projected CRS");
+}
+
+TEST(LoadInputs, UnknownCrsIsAnOptionErrorNamingTheField)
+{
+    dtm::test::ScratchDir dir;
+    dtm::test::write_file(dir / "p.xyz", "1 2 3\n4 5 6\n7 9 10\n");
+    LoadOptions options = files({{dir / "p.xyz", InputRole::points}});
+    options.crs.default_crs = "EPSG:999999999";
+    expect_option_error(options, "default_crs", "`default_crs`: expected a CRS");
 }
 
 TEST(LoadInputs, InputsInAnotherCrsGoIntoTheFirstOnes)
@@ -98,7 +122,7 @@ TEST(LoadInputs, InputsInAnotherCrsGoIntoTheFirstOnes)
     dtm::test::write_file(dir / "a.csv", "x,y,z\n458600,5548500,1\n458700,5548600,2\n");
     dtm::test::write_file(dir / "b.csv", "lat,lon,h\n50.0875,14.4214,3\n");
     LoadOptions options = files({{dir / "a.csv", InputRole::points}});
-    options.crs = "EPSG:32633";
+    options.crs.default_crs = "EPSG:32633";
     options.files.push_back({dir / "b.csv", InputRole::points});
     const auto loaded = dtm::io::load_inputs(options);
     ASSERT_EQ(loaded.terrain.points.size(), 3u);
@@ -178,7 +202,7 @@ TEST(LoadInputs, SummaryCountsDuplicatesBboxAndSkippedLines)
     dtm::test::ScratchDir dir;
     dtm::test::write_file(dir / "p.csv", "x,y,z\n1,2,3\n1,2,4\n5,6,7\nbad,1,2\n");
     LoadOptions options = files({{dir / "p.csv", InputRole::points}});
-    options.skip_bad_lines = true;
+    options.read.skip_bad_lines = true;
     const auto loaded = dtm::io::load_inputs(options);
     const auto& s = loaded.summaries.at(0);
     EXPECT_EQ(s.points, 3u);

@@ -211,6 +211,16 @@ void insert_segments(MeshEditor& editor, const GhostMesh& mesh,
     // (that is what the reservations guarantee) without their bookkeeping.
     if (tbb::this_task_arena::max_concurrency() == 1) {
         for (std::size_t k = 0; k < pending.size(); ++k) {
+            // The walks start at scattered vertices of the block: their first reads are
+            // requested a few segments ahead.
+            if (k + 8 < pending.size()) {
+                const InputSegment& ahead = segments[pending[k + 8]];
+                editor.prefetch(ahead.a, ahead.b, false);
+            }
+            if (k + 3 < pending.size()) {
+                const InputSegment& ahead = segments[pending[k + 3]];
+                editor.prefetch(ahead.a, ahead.b, true);
+            }
             const InputSegment& s = segments[pending[k]];
             editor.insert_segment(s.a, s.b, s.bits);
             if ((k & 4095u) == 0) {

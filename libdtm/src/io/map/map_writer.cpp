@@ -15,6 +15,7 @@
 #include "dtm/algo/rasterize.hpp"
 #include "dtm/core/error.hpp"
 #include "dtm/io/atomic_file.hpp"
+#include "dtm/io/extension.hpp"
 #include "dtm/io/formats/crs.hpp"
 #include "dtm/io/map/map.hpp"
 #include "dtm/io/map/pdf_georef.hpp"
@@ -41,13 +42,6 @@ std::string today() {
     char buf[16];
     std::strftime(buf, sizeof buf, "%Y-%m-%d", &tm);
     return buf;
-}
-
-std::string lower_extension(const std::filesystem::path& p) {
-    std::string e = p.extension().string();
-    std::transform(e.begin(), e.end(), e.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return e;
 }
 
 /// Metres per CRS unit, the CRS's display name, and the direction of true north at @p centre.
@@ -235,7 +229,7 @@ MapReport write_map(const Tin& tin,
                     const Progress& progress) {
     const auto start = std::chrono::steady_clock::now();
     const std::string ext = lower_extension(output);
-    if (ext != ".pdf" && ext != ".svg" && ext != ".png") {
+    if (ext != "pdf" && ext != "svg" && ext != "png") {
         throw UsageError("map: cannot write '" + output.string() +
                          "': the extension must be .pdf, .svg or .png");
     }
@@ -255,7 +249,7 @@ MapReport write_map(const Tin& tin,
     MapReport report;
     report.output = output;
     report.layout = layout_map(request);
-    if (ext != ".pdf" && report.layout.pages.size() > 1) {
+    if (ext != "pdf" && report.layout.pages.size() > 1) {
         throw UsageError("map: " + std::to_string(report.layout.pages.size()) +
                          " sheets need a PDF (SVG and PNG hold one page)");
     }
@@ -299,7 +293,7 @@ MapReport write_map(const Tin& tin,
         progress.report(0.95, "writing");
         canvas.finish();
     }
-    if (ext == ".pdf" && !options.crs_wkt.empty()) {
+    if (ext == "pdf" && !options.crs_wkt.empty()) {
         georeference_pdf(out.temp_path(), frames, options.crs_wkt);
         report.georeferenced = true;
     }

@@ -22,12 +22,12 @@ TEST(Crs, EsriPrjTextIsIdentifiedAsEpsg5514)
 
 TEST(Crs, UserDefinitionsAndBadOnes)
 {
-    const std::string wkt = dtm::io::crs_to_wkt("EPSG:32633", "--crs");
+    const std::string wkt = dtm::io::crs_to_wkt("EPSG:32633");
     EXPECT_EQ(dtm::io::crs_label(wkt), "EPSG:32633");
-    EXPECT_TRUE(dtm::io::crs_is_geographic(dtm::io::crs_to_wkt("EPSG:4326", "--crs")));
-    EXPECT_THROW((void)dtm::io::crs_to_wkt("EPSG:999999999", "--crs"), dtm::UsageError);
-    EXPECT_TRUE(dtm::io::crs_equivalent(wkt, dtm::io::crs_to_wkt("EPSG:32633", "x")));
-    EXPECT_FALSE(dtm::io::crs_equivalent(wkt, dtm::io::crs_to_wkt("EPSG:32634", "x")));
+    EXPECT_TRUE(dtm::io::crs_is_geographic(dtm::io::crs_to_wkt("EPSG:4326")));
+    EXPECT_THROW((void)dtm::io::crs_to_wkt("EPSG:999999999"), dtm::UsageError);
+    EXPECT_TRUE(dtm::io::crs_equivalent(wkt, dtm::io::crs_to_wkt("EPSG:32633")));
+    EXPECT_FALSE(dtm::io::crs_equivalent(wkt, dtm::io::crs_to_wkt("EPSG:32634")));
 }
 
 TEST(Crs, SjtskPositiveYXBecomeEastNorthInEitherColumnOrder)
@@ -85,8 +85,8 @@ TEST(Crs, GdalTransformAgreesWithGeographicLib)
     dtm::TerrainInput a;
     a.points = {{14.4214, 50.0875, 1.0}};
     dtm::TerrainInput b = a;
-    dtm::io::transform_terrain(a, dtm::io::crs_to_wkt("EPSG:4326", "x"),
-                               dtm::io::crs_to_wkt("EPSG:32633", "x"), "test");
+    dtm::io::transform_terrain(a, dtm::io::crs_to_wkt("EPSG:4326"),
+                               dtm::io::crs_to_wkt("EPSG:32633"), "test");
     dtm::io::project_to_utm(b, {33, true}, "test");
     EXPECT_NEAR(a.points[0].x, b.points[0].x, 1e-3);
     EXPECT_NEAR(a.points[0].y, b.points[0].y, 1e-3);

@@ -16,7 +16,7 @@ namespace {
 
 using dtm::io::InputFile;
 using dtm::io::InputRole;
-using dtm::io::LoadOptions;
+using dtm::io::ReadOptions;
 using dtm::io::ReadResult;
 
 /// Writes a small vector file with GDAL from WKT geometries and one "elev" + "kind" attribute.
@@ -55,7 +55,7 @@ void write_vector(const std::filesystem::path& path, const char* driver_name,
     GDALClose(ds);
 }
 
-ReadResult read(const std::filesystem::path& path, InputRole role, LoadOptions options = {})
+ReadResult read(const std::filesystem::path& path, InputRole role, ReadOptions options = {})
 {
     return dtm::io::read_ogr(InputFile{path, role}, options);
 }
@@ -128,7 +128,7 @@ TEST(OgrReader, ZFieldGivesEveryVertexOfAContourItsHeight)
                  {{"LINESTRING (0 0,10 0,10 10)", 250.0, "contour"},
                   {"LINESTRING (0 5,5 5)", 255.0, "contour"}},
                  4326);
-    LoadOptions options;
+    ReadOptions options;
     options.z_field = "elev";
     const ReadResult r = read(dir / "c.geojson", InputRole::breaklines, options);
     ASSERT_EQ(r.terrain.breaklines.size(), 2u);
@@ -141,7 +141,7 @@ TEST(OgrReader, TwoDimensionalPointsNeedAZField)
     dtm::test::ScratchDir dir;
     write_vector(dir / "p.gpkg", "GPKG", {{"POINT (1 2)", 7.5, "pt"}});
     EXPECT_THROW((void)read(dir / "p.gpkg", InputRole::points), dtm::InputError);
-    LoadOptions options;
+    ReadOptions options;
     options.z_field = "elev";
     const ReadResult r = read(dir / "p.gpkg", InputRole::points, options);
     ASSERT_EQ(r.terrain.points.size(), 1u);
@@ -152,7 +152,7 @@ TEST(OgrReader, MissingZFieldNamesTheAvailableFields)
 {
     dtm::test::ScratchDir dir;
     write_vector(dir / "p.gpkg", "GPKG", {{"POINT Z (1 2 3)", 7.5, "pt"}});
-    LoadOptions options;
+    ReadOptions options;
     options.z_field = "height";
     try {
         (void)read(dir / "p.gpkg", InputRole::points, options);
@@ -168,7 +168,7 @@ TEST(OgrReader, WhereFiltersFeaturesAndBadFilterIsAnError)
     write_vector(dir / "w.gpkg", "GPKG",
                  {{"LINESTRING Z (0 0 1,10 0 2)", 0, "edge"},
                   {"LINESTRING Z (0 5 1,10 5 2)", 0, "fence"}});
-    LoadOptions options;
+    ReadOptions options;
     options.where = "kind = 'edge'";
     EXPECT_EQ(read(dir / "w.gpkg", InputRole::breaklines, options).terrain.breaklines.size(), 1u);
     options.where = "no_such_column = 3";
@@ -179,7 +179,7 @@ TEST(OgrReader, LayerChoiceAndUnknownLayerListsLayers)
 {
     dtm::test::ScratchDir dir;
     write_vector(dir / "l.gpkg", "GPKG", {{"POINT Z (1 2 3)", 0, "pt"}}, 5514, "spot_heights");
-    LoadOptions options;
+    ReadOptions options;
     options.layer = "spot_heights";
     EXPECT_EQ(read(dir / "l.gpkg", InputRole::points, options).terrain.points.size(), 1u);
     options.layer = "nope";

@@ -36,7 +36,7 @@ const Tin& site() {
 MapOptions options() {
     MapOptions o;
     o.scale = 500;
-    o.crs_wkt = io::crs_to_wkt("EPSG:5514", "test");
+    o.crs_wkt = io::crs_to_wkt("EPSG:5514");
     o.interval = 1.0;
     o.label_spacing_mm = 80.0;
     o.date = "2026-01-01";
@@ -211,7 +211,7 @@ TEST(MapWriter, BadRequestsAreClearErrorsAndLeaveNoFile) {
     o.scale = 500;
     EXPECT_THROW((void)write_map(site(), o, dir / "map.tif"), UsageError);
     EXPECT_THROW((void)write_map(Tin{}, o, dir / "empty.pdf"), InputError);
-    o.crs_wkt = io::crs_to_wkt("EPSG:4326", "test");
+    o.crs_wkt = io::crs_to_wkt("EPSG:4326");
     EXPECT_THROW((void)write_map(site(), o, dir / "geo.pdf"), UsageError);
 }
 

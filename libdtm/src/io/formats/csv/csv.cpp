@@ -9,7 +9,7 @@
 // A large block of point rows is parsed in parallel: it is cut into chunks at line ends, each
 // chunk starts with its line number (newlines counted per chunk, then summed), is parsed on its
 // own and the chunks' points, labels, skipped lines and warnings are joined in file order. Without
-// --skip-bad-lines the error reported is the first in file order, as in the sequential pass.
+// skip_bad_lines the error reported is the first in file order, as in the sequential pass.
 // Room for the points is reserved from the points per byte so far and the size of the input, so
 // that the point array grows about once instead of doubling; the room never used is never touched
 // and so costs no resident memory.
@@ -31,7 +31,6 @@
 
 #include "csv_detail.hpp"
 #include "dtm/core/error.hpp"
-#include "dtm/io/formats/ogr.hpp"
 
 namespace dtm::io {
 namespace {
@@ -78,7 +77,7 @@ public:
     /// Called with the offset in the text reached, every 2^16 lines.
     using Report = std::function<void(std::size_t offset)>;
 
-    RowParser(const Columns& columns, const InputFile& file, const LoadOptions& options)
+    RowParser(const Columns& columns, const InputFile& file, const ReadOptions& options)
         : c_(columns), file_(file), options_(options)
     {
     }
@@ -108,7 +107,7 @@ private:
 
     const Columns& c_;
     const InputFile& file_;
-    const LoadOptions& options_;
+    const ReadOptions& options_;
     std::vector<Cell> cells_;
     ReadResult result_;
     Polyline current_;
@@ -322,7 +321,7 @@ std::vector<std::size_t> chunk_lines(std::string_view block, const std::vector<s
 class CsvReader {
 public:
     CsvReader(csv::Blocks& blocks, std::string_view head, std::size_t size, const InputFile& file,
-              const LoadOptions& options, const Progress& progress, const csv::Cuts& cuts)
+              const ReadOptions& options, const Progress& progress, const csv::Cuts& cuts)
         : blocks_(blocks), file_(file), options_(options), progress_(progress), cuts_(cuts),
           size_(size),
           columns_(csv::detect_layout(head, file.path.string(), options.columns,
@@ -349,7 +348,7 @@ private:
 
     csv::Blocks& blocks_;
     const InputFile& file_;
-    const LoadOptions& options_;
+    const ReadOptions& options_;
     const Progress& progress_;
     csv::Cuts cuts_;
     std::size_t size_;  ///< bytes of the input, 0 if unknown
@@ -366,7 +365,7 @@ ReadResult CsvReader::run(std::string_view head)
     if (!columns_.polyline && columns_.z < 0) {
         throw InputError(file_.path, layout.header_line, 0,
                          "expected a z column for points (z, elev, elevation, height, h, alt; "
-                         "or --columns)");
+                         "or `columns`)");
     }
     std::size_t line = parse_block(head, layout.data_offset, layout.data_line);
     for (std::string_view block = blocks_.next(); !block.empty(); block = blocks_.next()) {
@@ -456,7 +455,7 @@ std::string_view first_block(csv::Blocks& blocks)
 }
 
 ReadResult parse_blocks(csv::Blocks& blocks, std::string_view head, std::size_t size,
-                        const InputFile& file, const LoadOptions& options,
+                        const InputFile& file, const ReadOptions& options,
                         const Progress& progress, const csv::Cuts& cuts)
 {
     CsvReader reader(blocks, head, size, file, options, progress, cuts);
@@ -487,20 +486,20 @@ bool csv_has_geometry_column(std::string_view text)
     return false;
 }
 
-ReadResult read_csv(const InputFile& file, const LoadOptions& options, const Progress& progress)
+ReadResult read_csv(const InputFile& file, const ReadOptions& options, const Progress& progress)
 {
     return csv::read_csv(file, options, progress, csv::Cuts{});
 }
 
 ReadResult parse_csv_text(std::string_view text, const InputFile& file,
-                          const LoadOptions& options, const Progress& progress)
+                          const ReadOptions& options, const Progress& progress)
 {
     return csv::parse_csv_text(text, file, options, progress, csv::Cuts{});
 }
 
 namespace csv {
 
-ReadResult read_csv(const InputFile& file, const LoadOptions& options, const Progress& progress,
+ReadResult read_csv(const InputFile& file, const ReadOptions& options, const Progress& progress,
                     const Cuts& cuts)
 {
     std::ifstream in(file.path, std::ios::binary);
@@ -515,11 +514,6 @@ ReadResult read_csv(const InputFile& file, const LoadOptions& options, const Pro
         },
         cuts.block_bytes, known);
     const std::string_view head = first_block(blocks);
-    if (csv_has_geometry_column(head)) {
-        ReadResult r = read_ogr(file, options, progress);
-        r.summary.format = "text (OGR, geometry column)";
-        return r;
-    }
     ReadResult result = parse_blocks(blocks, head, known, file, options, progress, cuts);
     // A sidecar .prj (as next to a shapefile) gives the CRS of a text file.
     std::filesystem::path prj = file.path;
@@ -533,7 +527,7 @@ ReadResult read_csv(const InputFile& file, const LoadOptions& options, const Pro
 }
 
 ReadResult parse_csv_text(std::string_view text, const InputFile& file,
-                          const LoadOptions& options, const Progress& progress, const Cuts& cuts)
+                          const ReadOptions& options, const Progress& progress, const Cuts& cuts)
 {
     std::size_t at = 0;
     Blocks blocks(

@@ -13,7 +13,6 @@
 #include <vector>
 
 #include "dtm/core/progress.hpp"
-#include "dtm/io/inputs.hpp"
 #include "dtm/io/reader.hpp"
 
 namespace dtm::io::csv {
@@ -26,10 +25,10 @@ struct Cuts {
 };
 
 /// read_csv() and parse_csv_text() with the given cuts.
-[[nodiscard]] ReadResult read_csv(const InputFile& file, const LoadOptions& options,
+[[nodiscard]] ReadResult read_csv(const InputFile& file, const ReadOptions& options,
                                   const Progress& progress, const Cuts& cuts);
 [[nodiscard]] ReadResult parse_csv_text(std::string_view text, const InputFile& file,
-                                        const LoadOptions& options, const Progress& progress,
+                                        const ReadOptions& options, const Progress& progress,
                                         const Cuts& cuts);
 
 /// Reads an input in blocks that end at a line end (or at the end of the input), reusing one
@@ -119,7 +118,7 @@ struct Layout {
     std::size_t data_line = 0;       ///< line number before the first data line
 };
 
-/// Role named by a header or --columns word ("east", "elevation", "shapeid", ...); skip if none.
+/// Role named by a header or ReadOptions::columns word ("east", "elevation", "shapeid", ...); skip if none.
 /// @p polyline: "id" groups polyline vertices instead of naming points.
 [[nodiscard]] Field field_from_name(std::string_view name, bool polyline);
 
@@ -127,8 +126,8 @@ struct Layout {
 /// starts with @p text gives the same layout.
 [[nodiscard]] bool holds_layout_sample(std::string_view text);
 
-/// Detects the layout of @p text. @p columns is LoadOptions::columns (may be empty).
-/// @throws InputError (located at @p file) for an empty file, an unknown --columns word or a
+/// Detects the layout of @p text. @p columns is ReadOptions::columns (may be empty).
+/// @throws InputError (located at @p file) for an empty file, an unknown ReadOptions::columns word or a
 ///         header without the needed columns.
 [[nodiscard]] Layout detect_layout(std::string_view text, const std::string& file,
                                    const std::string& columns, bool polyline);

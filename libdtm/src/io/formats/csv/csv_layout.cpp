@@ -7,7 +7,7 @@
 //   - a first line holding one integer, followed by lines with several fields, is a point count;
 //   - the first line is a header if it has a field that is not a number and either a field
 //     names a known column or the next line has fewer non-numbers;
-//   - columns are mapped by header name, or by --columns, or guessed: "x y [z]"; for points,
+//   - columns are mapped by header name, or by ReadOptions::columns, or guessed: "x y [z]"; for points,
 //     "id x y z [code]" when the first of 4+ columns holds integers and the next two do not;
 //     for polylines, "line_id x y [z]" when the first of 3+ columns does (pputils layout).
 #include <algorithm>
@@ -251,7 +251,7 @@ std::vector<Field> fields_from_columns(const std::string& columns, const std::st
         Field f = field_from_name(word, polyline);
         if (f == Field::skip && !(word.empty() || word == "-" || word == "skip" || word == "_")) {
             fail(file, 0, 0,
-                 "--columns: expected a column name (x, y, z, east, north, elev, lat, lon, id, "
+                 "`columns`: expected a column name (x, y, z, east, north, elev, lat, lon, id, "
                  "code, shapeid or - to skip), found '" + std::string(word) + "'");
         }
         fields.push_back(f);
@@ -359,7 +359,7 @@ Layout detect_layout(std::string_view text, const std::string& file, const std::
     const bool geographic = column_of(layout, Field::lat) >= 0 && column_of(layout, Field::lon) >= 0;
     if (!planar && !geographic) {
         fail(file, layout.header_line > 0 ? layout.header_line : sample[0].number, 0,
-             "expected x and y columns (x/y, east/north, e/n or lat/lon; or --columns), found " +
+             "expected x and y columns (x/y, east/north, e/n or lat/lon; or `columns`), found " +
                  std::to_string(rows.empty() ? 0 : rows[0].size()) + " unnamed columns");
     }
     return layout;

@@ -19,37 +19,6 @@
 namespace dtm::io {
 namespace {
 
-constexpr std::array<std::pair<std::string_view, PenRole>, 8> role_names{{
-    {"points", PenRole::points},
-    {"breakline", PenRole::breakline},
-    {"soft-breakline", PenRole::soft_breakline},
-    {"soft_breakline", PenRole::soft_breakline},
-    {"soft", PenRole::soft_breakline},
-    {"boundary", PenRole::boundary},
-    {"hole", PenRole::hole},
-    {"ignore", PenRole::ignore},
-}};
-
-std::string_view trim(std::string_view s)
-{
-    while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-    while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
-    return s;
-}
-
-int parse_pen(std::string_view text, std::string_view option)
-{
-    text = trim(text);
-    int pen = 0;
-    bool ok = !text.empty() && text.size() <= 6;
-    for (const char c : text) {
-        ok = ok && c >= '0' && c <= '9';
-        if (ok) pen = pen * 10 + (c - '0');
-    }
-    if (!ok) throw UsageError(std::string(option) + ": '" + std::string(text) + "' is not a pen number");
-    return pen;
-}
-
 std::string read_bytes(const std::filesystem::path& path)
 {
     std::ifstream in(path, std::ios::binary);
@@ -143,48 +112,12 @@ std::string_view pen_role_name(PenRole role) noexcept
     return "ignore";
 }
 
-std::map<int, PenRole> parse_pen_roles(std::string_view text)
-{
-    std::map<int, PenRole> roles;
-    while (!text.empty()) {
-        const auto comma = text.find(',');
-        const std::string_view item = trim(text.substr(0, comma));
-        text = comma == std::string_view::npos ? std::string_view{} : text.substr(comma + 1);
-        if (item.empty()) continue;
-        const auto equals = item.find('=');
-        if (equals == std::string_view::npos) {
-            throw UsageError("--hpgl-pens: '" + std::string(item) + "' is not PEN=ROLE (for example 2=breakline)");
-        }
-        const int pen = parse_pen(item.substr(0, equals), "--hpgl-pens");
-        const std::string_view name = trim(item.substr(equals + 1));
-        const auto found = std::find_if(role_names.begin(), role_names.end(),
-                                        [&](const auto& entry) { return entry.first == name; });
-        if (found == role_names.end()) {
-            throw UsageError("--hpgl-pens: unknown role '" + std::string(name) +
-                             "' (expected points, breakline, soft-breakline, boundary, hole or ignore)");
-        }
-        roles[pen] = found->second;
-    }
-    return roles;
-}
-
-std::vector<int> parse_pen_list(std::string_view text)
-{
-    std::vector<int> pens;
-    while (!text.empty()) {
-        const auto comma = text.find(',');
-        const std::string_view item = trim(text.substr(0, comma));
-        text = comma == std::string_view::npos ? std::string_view{} : text.substr(comma + 1);
-        if (!item.empty()) pens.push_back(parse_pen(item, "--hpgl-height-pens"));
-    }
-    return pens;
-}
-
-ReadResult read_hpgl(const InputFile& file, const LoadOptions& options, const Progress& progress)
+ReadResult read_hpgl(const InputFile& file, const ReadOptions& options, const Progress& progress)
 {
     const HpglOptions& hpgl_options = options.hpgl;
     if (!(hpgl_options.marker_radius_mm >= 0.0) || !std::isfinite(hpgl_options.marker_radius_mm)) {
-        throw UsageError("--hpgl-marker-radius must be a non-negative number of millimetres");
+        throw OptionError("hpgl.marker_radius_mm",
+                          "`hpgl.marker_radius_mm` must be a non-negative number of millimetres");
     }
     hpgl::Georeference geo = hpgl::make_georeference(hpgl_options);
     progress.report(0.0, "reading HPGL");

@@ -143,7 +143,8 @@ Georeference make_georeference(const HpglOptions& options)
 {
     Georeference g;
     if (options.scale != 0.0 && !options.control_file.empty()) {
-        throw UsageError("--hpgl-scale and --hpgl-control are alternatives: give one");
+        throw OptionError("hpgl.scale",
+                          "`hpgl.scale` and `hpgl.control_file` are alternatives: give one");
     }
     if (!options.control_file.empty()) {
         const auto points = read_control_points(options.control_file);
@@ -163,7 +164,9 @@ Georeference make_georeference(const HpglOptions& options)
         return g;
     }
     if (options.scale != 0.0) {
-        if (!(options.scale > 0.0) || !std::isfinite(options.scale)) throw UsageError("--hpgl-scale must be positive");
+        if (!(options.scale > 0.0) || !std::isfinite(options.scale)) {
+            throw OptionError("hpgl.scale", "`hpgl.scale` must be positive");
+        }
         const double r = options.rotation_deg * std::numbers::pi / 180.0;
         const double quarter = options.rotation_deg / 90.0;
         double c = std::cos(r), s = std::sin(r);
@@ -178,7 +181,7 @@ Georeference make_georeference(const HpglOptions& options)
     }
     const double mm = 1.0 / units_per_mm;
     g.transform = {0.0, mm, 0.0, 0.0, 0.0, mm};
-    g.notes.push_back("not georeferenced (no --hpgl-scale or --hpgl-control): coordinates are plotter "
+    g.notes.push_back("not georeferenced (no `hpgl.scale` or `hpgl.control_file`): coordinates are plotter "
                       "millimetres on paper");
     return g;
 }

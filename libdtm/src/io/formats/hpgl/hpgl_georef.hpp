@@ -45,7 +45,7 @@ struct Georeference {
 
 /// The transform options.hpgl asks for. Without georeferencing: plotter millimetres
 /// (x = px / 40, y = py / 40), with a note saying so.
-/// @throws UsageError when both --hpgl-scale and --hpgl-control are given; InputError.
+/// @throws OptionError when both scale and control_file are given; InputError.
 [[nodiscard]] Georeference make_georeference(const HpglOptions& options);
 
 }  // namespace dtm::io::hpgl

@@ -5,7 +5,7 @@
 // The symbol is one of: a character plotted by SM (symbol mode), a small CI circle, a small
 // cross (two short perpendicular strokes crossing near their middles, or three or more short
 // arms drawn out from the centre), a pen-down dot, or any vertex drawn with a "points" pen. A label is a height when its whole text is a decimal number ("312.45",
-// "312,45"); integer labels (parcel numbers) only on --hpgl-height-pens. Every height label is
+// "312,45"); integer labels (parcel numbers) only on HpglOptions::height_pens. Every height label is
 // matched to the nearest free marker within the marker radius (pairs taken in increasing
 // distance, so a marker serves one label); when most labels sit at one offset from their marker
 // (a plan's house style), a second pass ranks the pairs by the distance from where that offset

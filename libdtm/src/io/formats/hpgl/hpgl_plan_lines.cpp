@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Lines of an HP-GL height plan by pen role, with heights from the spot heights.
 //
-// Each polyline drawn with a pen named in --hpgl-pens becomes a breakline, soft breakline,
+// Each polyline drawn with a pen named in HpglOptions::pens becomes a breakline, soft breakline,
 // boundary or hole; lines on other pens are ignored and counted. A polyline whose last vertex is
 // its first is a closed ring (the repeated vertex is dropped and closed is set); boundaries and
 // holes are closed when they are not, with a warning. A vertex within the marker radius of a
@@ -156,7 +156,7 @@ void assign_line_roles(const Plot& plot, const HpglOptions& options, double radi
         std::string pens;
         for (const auto& [pen, count] : ignored_by_pen) pens += " " + std::to_string(pen) + ":" + std::to_string(count);
         plan.warnings.push_back(std::to_string(plan.ignored_lines) +
-                                " lines on pens without a role ignored (pen:lines" + pens + "); see --hpgl-pens");
+                                " lines on pens without a role ignored (pen:lines" + pens + "); see `hpgl.pens`");
     }
 }
 

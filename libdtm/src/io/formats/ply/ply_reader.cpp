@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "dtm/core/error.hpp"
-#include "dtm/io/tin_file.hpp"
+#include "dtm/io/formats/ply.hpp"
 
 namespace dtm::io {
 namespace {
@@ -409,6 +409,24 @@ LoadedTin read_tin_ply(const fs::path& path) {
         throw InputError(path, 0, 0, e.what());
     }
     return {std::move(reader.tin), header.crs_wkt};
+}
+
+ReadResult read_ply(const InputFile& file, const ReadOptions&, const Progress& progress)
+{
+    if (file.role != InputRole::points) {
+        throw InputError(file.path, 0, 0,
+                         "a dtm PLY TIN is a survey input (the surface itself), not a line or "
+                         "ring input");
+    }
+    progress.report(0.0, "reading the TIN");
+    LoadedTin loaded = read_tin_ply(file.path);
+    ReadResult result;
+    result.terrain.points = loaded.tin.vertices;
+    result.crs_wkt = std::move(loaded.crs_wkt);
+    result.summary.path = file.path;
+    result.summary.format = "dtm PLY TIN";
+    result.tin = std::move(loaded.tin);
+    return result;
 }
 
 }  // namespace dtm::io

@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "dtm/core/error.hpp"
-#include "dtm/io/tin_file.hpp"
+#include "dtm/io/formats/ply.hpp"
 
 namespace dtm::io {
 namespace {

@@ -19,23 +19,23 @@ namespace {
 
 using dtm::io::InputFile;
 using dtm::io::InputRole;
-using dtm::io::LoadOptions;
+using dtm::io::ReadOptions;
 using dtm::io::ReadResult;
 using dtm::io::csv::Cuts;
 
 ReadResult read(const std::filesystem::path& path, InputRole role = InputRole::points,
-                LoadOptions options = {})
+                ReadOptions options = {})
 {
     return dtm::io::read_csv(InputFile{path, role}, options);
 }
 
 ReadResult parse(std::string_view text, InputRole role = InputRole::points,
-                 LoadOptions options = {})
+                 ReadOptions options = {})
 {
     return dtm::io::parse_csv_text(text, InputFile{"mem.csv", role}, options);
 }
 
-std::string error_of(std::string_view text, LoadOptions options = {})
+std::string error_of(std::string_view text, ReadOptions options = {})
 {
     try {
         (void)parse(text, InputRole::points, options);
@@ -107,7 +107,7 @@ TEST(CsvReader, PointCountMismatchIsAWarning)
 
 TEST(CsvReader, ColumnsOptionOverridesTheOrder)
 {
-    LoadOptions options;
+    ReadOptions options;
     options.columns = "id,y,x,z,code";
     const ReadResult r = parse("A;1,5;2,5;3,5;k\nB;4;5;6;\n", InputRole::points, options);
     ASSERT_EQ(r.terrain.points.size(), 2u);
@@ -146,7 +146,7 @@ TEST(CsvReader, InfinityAndNanAreNotNumbers)
 
 TEST(CsvReader, SkipBadLinesCountsThemAndKeepsTheRest)
 {
-    LoadOptions options;
+    ReadOptions options;
     options.skip_bad_lines = true;
     const ReadResult r = read(dtm::test::data_path("readers/malformed.csv"), InputRole::points,
                               options);
@@ -187,7 +187,7 @@ TEST(CsvReader, PointsWithoutZColumnAreRejected)
 
 TEST(CsvReader, UnknownColumnsWordIsRejected)
 {
-    LoadOptions options;
+    ReadOptions options;
     options.columns = "x,y,depth";
     EXPECT_NE(error_of("1 2 3\n", options).find("'depth'"), std::string::npos);
 }
@@ -223,7 +223,7 @@ std::string large_point_list(const std::vector<std::size_t>& bad_lines)
 /// Cuts small enough for the 12 MB list to span about 50 blocks of 16 chunks each.
 constexpr Cuts small_cuts{std::size_t{256} << 10, std::size_t{16} << 10};
 
-ReadResult parse_with_threads(std::string_view text, int threads, LoadOptions options,
+ReadResult parse_with_threads(std::string_view text, int threads, ReadOptions options,
                               Cuts cuts = {}, InputRole role = InputRole::points)
 {
     tbb::task_arena arena(threads);
@@ -276,7 +276,7 @@ void expect_same(const ReadResult& a, const ReadResult& b)
 
 TEST(CsvReader, LargeFileParsedInParallelEqualsTheSequentialPass)
 {
-    LoadOptions skip;
+    ReadOptions skip;
     skip.skip_bad_lines = true;
     const std::string text = large_point_list({5, 90001, 180002, 250003});
     const ReadResult one = parse_with_threads(text, 1, skip);
@@ -296,7 +296,7 @@ TEST(CsvReader, LargeFileParsedInParallelEqualsTheSequentialPass)
 
 TEST(CsvReader, LargeFileReadInBlocksKeepsTheFirstTwentyWarningsInFileOrder)
 {
-    LoadOptions skip;
+    ReadOptions skip;
     skip.skip_bad_lines = true;
     std::vector<std::size_t> bad;
     for (std::size_t line = 7; line < 250000; line += 8000) bad.push_back(line);
@@ -371,7 +371,7 @@ std::string tricky_list(const std::string& head, bool bom)
 
 TEST(CsvReader, BlocksAndChunksCutAnywhereGiveTheOnePassResult)
 {
-    LoadOptions skip;
+    ReadOptions skip;
     skip.skip_bad_lines = true;
     // A header; no header after a BOM (data from byte 3); a point-count line.
     for (const std::string& text : {tricky_list("# survey\r\nid x y z code\r\n", true),
@@ -420,7 +420,7 @@ TEST(CsvReader, FileReadInBlocksEqualsTheTextInMemory)
     const std::string text = tricky_list("# survey\r\nid x y z code\r\n", true);
     dtm::test::ScratchDir dir;
     dtm::test::write_file(dir / "tricky.xyz", text);
-    LoadOptions skip;
+    ReadOptions skip;
     skip.skip_bad_lines = true;
     const InputFile file{dir / "tricky.xyz", InputRole::points};
     const ReadResult whole = dtm::io::read_csv(file, skip);

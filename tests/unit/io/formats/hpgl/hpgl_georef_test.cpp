@@ -136,18 +136,5 @@ TEST(HpglGeoref, ScaleAndControlTogetherAreAUsageError)
     EXPECT_THROW((void)make_georeference(o), dtm::UsageError);
 }
 
-TEST(HpglOptions, PenRolesAndListsParseAndRejectNonsense)
-{
-    const auto roles = dtm::io::parse_pen_roles("2=breakline, 3=boundary,4=hole,1=ignore,5=soft-breakline,6=points");
-    EXPECT_EQ(roles.size(), 6u);
-    EXPECT_EQ(roles.at(2), dtm::io::PenRole::breakline);
-    EXPECT_EQ(roles.at(5), dtm::io::PenRole::soft_breakline);
-    EXPECT_EQ(roles.at(6), dtm::io::PenRole::points);
-    EXPECT_THROW((void)dtm::io::parse_pen_roles("2=ridge"), dtm::UsageError);
-    EXPECT_THROW((void)dtm::io::parse_pen_roles("two=breakline"), dtm::UsageError);
-    EXPECT_THROW((void)dtm::io::parse_pen_roles("2"), dtm::UsageError);
-    EXPECT_EQ(dtm::io::parse_pen_list("5, 6"), (std::vector<int>{5, 6}));
-    EXPECT_THROW((void)dtm::io::parse_pen_list("5;6"), dtm::UsageError);
-}
 
 }  // namespace

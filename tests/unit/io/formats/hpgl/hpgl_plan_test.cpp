@@ -49,7 +49,8 @@ protected:
         plan_ = dtm::test::make_hpgl_plan(o);
         const auto path = scratch_ / "plan.plt";
         dtm::test::write_file(path, GetParam().encoding == Encoding::plain ? plan_.plain_hpgl : plan_.pcl_hpgl2);
-        options_.hpgl.pens = dtm::io::parse_pen_roles("2=breakline,3=boundary,4=hole,1=ignore");
+        options_.hpgl.pens = {{2, PenRole::breakline}, {3, PenRole::boundary}, {4, PenRole::hole},
+                              {1, PenRole::ignore}};
         switch (GetParam().georef) {
         case Georef::scale:
         case Georef::scale_rotated:
@@ -72,7 +73,7 @@ protected:
 
     dtm::test::ScratchDir scratch_;
     dtm::test::HpglPlan plan_;
-    dtm::io::LoadOptions options_;
+    dtm::io::ReadOptions options_;
     dtm::io::ReadResult result_;
 };
 
@@ -162,7 +163,7 @@ TEST(HpglPlanReader, IntegerLabelsOnHeightPensAreHeights)
     dtm::test::ScratchDir scratch;
     const auto plan = dtm::test::make_hpgl_plan();
     dtm::test::write_file(scratch / "plan.plt", plan.plain_hpgl);
-    dtm::io::LoadOptions options;
+    dtm::io::ReadOptions options;
     options.hpgl.height_pens = {1};
     const auto result = dtm::io::read_hpgl({scratch / "plan.plt", dtm::io::InputRole::points}, options);
     // The parcel numbers are integers on pen 1: now heights too, at their own label positions.

@@ -51,7 +51,7 @@ TEST_P(HpglSharedData, ReaderReturnsNoTerrainWithoutPenRolesButSaysWhy)
     const auto result = dtm::io::read_hpgl({path, dtm::io::InputRole::points}, {});
     EXPECT_TRUE(result.terrain.breaklines.empty());
     const auto& w = result.summary.warnings;
-    EXPECT_TRUE(std::any_of(w.begin(), w.end(), [](const std::string& s) { return s.find("--hpgl-pens") != s.npos; }));
+    EXPECT_TRUE(std::any_of(w.begin(), w.end(), [](const std::string& s) { return s.find("`hpgl.pens`") != s.npos; }));
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -122,9 +122,9 @@ TEST(HpglSharedData, MangledAutocadPlotIsReadWithWarningsWhenSkippingBadData)
 {
     const std::string file = "hpgl-autocad-hpgl2/test-Model.PLT";
     if (!dtm::test::shared_data_available(file)) GTEST_SKIP();
-    dtm::io::LoadOptions options;
+    dtm::io::ReadOptions options;
     options.skip_bad_lines = true;
-    options.hpgl.pens = dtm::io::parse_pen_roles("1=soft-breakline");
+    options.hpgl.pens = {{1, dtm::io::PenRole::soft_breakline}};
     const auto result = dtm::io::read_hpgl({dtm::test::shared_data_path(file), dtm::io::InputRole::points}, options);
     EXPECT_GT(result.summary.skipped_lines, 0u);
     const auto& w = result.summary.warnings;

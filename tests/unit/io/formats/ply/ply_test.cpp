@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "dtm/core/error.hpp"
+#include "dtm/io/formats/ply.hpp"
 #include "dtm/io/tin_file.hpp"
 #include "support/test_support.hpp"
 
