@@ -310,7 +310,8 @@ def main():
         lin = rows.get("dtm linear")
         print(f"- {name}: dtm cubic / scipy CT = {cubic / ct:.4f}, dtm cubic / dtm linear = "
               f"{cubic / lin:.4f}")
-    print(f"\nload average {os.getloadavg()[0]:.1f} on {os.cpu_count()} cores")
+    cpu = subprocess.run([os.path.join(HERE, "cpu_info.sh")], capture_output=True, text=True)
+    print(f"\n{cpu.stdout.strip() or f'load average {os.getloadavg()[0]:.1f}'}")
 
 
 if __name__ == "__main__":

@@ -89,4 +89,4 @@ for name in ("linear", "cubic", "natural"):
     e = a[ok] - truth[ok]
     print(f"{name:8s} RMSE against the terrain {math.sqrt(np.mean(e * e)):.4f} m, max {np.max(np.abs(e)):.4f} m")
 PY
-echo "load average: $(cut -d' ' -f1-3 /proc/loadavg) on $(nproc) cores"
+"$here/cpu_info.sh"

@@ -255,6 +255,11 @@ TEST(CliGrid, InterpolationPicksTheSurfaceAndCubicFollowsACurvedOneCloser) {
         rmse[m] = std::sqrt(sum / 1600.0);
     }
     EXPECT_LT(rmse[1], 0.2 * rmse[0]) << "linear " << rmse[0] << ", cubic " << rmse[1];
+    const auto lines = dtm::test::run_dtm({"contour", (dir / "bowl.csv").string(), "-o",
+                                           (dir / "c.geojson").string(), "--interval", "1",
+                                           "--interpolation", "cubic", "-q"});
+    EXPECT_EQ(lines.exit_code, 0) << lines.err;
+    EXPECT_TRUE(std::filesystem::exists(dir / "c.geojson"));
     const auto bad = dtm::test::run_dtm({"grid", (dir / "bowl.csv").string(), "-o",
                                          (dir / "x.tif").string(), "--cell", "1",
                                          "--interpolation", "spline"});

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // dtm contour INPUTS... -o OUT --interval I [--base B] [--levels L1,L2,...] [--index-every K]
-//             [--smooth N] [--surface linear|cubic|natural] [--subdivisions M]
+//             [--smooth N] [--interpolation linear|cubic|natural] [--subdivisions M]
 // Contour lines traced exactly on the TIN (parse -> options -> library -> report).
 #include <iostream>
 #include <memory>
@@ -80,7 +80,7 @@ Command contour_command() {
                 app.add_option("--smooth", args->contour.smooth,
                                "Corner-cutting passes that keep lines inside their triangles "
                                "and never crossing (default 0)");
-                add_interpolation_option(app, "--surface", args->contour.surface);
+                add_interpolation_option(app, "--interpolation", args->contour.surface);
                 app.add_option("--subdivisions", args->contour.subdivisions,
                                "cubic/natural: each triangle's three sub-triangles are cut into "
                                "M x M pieces on which the lines are traced (default 4)")

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// --interpolation / --surface: linear (the TIN's planes), cubic (Clough-Tocher C1, creased
+// --interpolation (grid, contour, build): linear (the TIN's planes), cubic (Clough-Tocher C1, creased
 // along hard breaklines), natural (Sibson natural neighbours).
 #include "interpolation_args.hpp"
 

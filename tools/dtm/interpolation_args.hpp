@@ -10,7 +10,7 @@
 
 namespace dtm::cli {
 
-/// Declares @p flag (--interpolation or --surface) taking linear, cubic or natural.
+/// Declares @p flag (--interpolation) taking linear, cubic or natural.
 void add_interpolation_option(CLI::App& app, const std::string& flag, Interpolation& method);
 
 }  // namespace dtm::cli
