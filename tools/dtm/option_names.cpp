@@ -11,7 +11,7 @@
 namespace dtm::cli {
 namespace {
 
-constexpr std::array<std::pair<std::string_view, std::string_view>, 35> flags{{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 37> flags{{
     // io::LoadOptions: the files of each role (TerrainInput's members)
     {"breaklines", "--breaklines"},
     {"soft_breaklines", "--soft-breaklines"},
@@ -26,6 +26,8 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 35> flags{{
     {"layer", "--layer"},
     {"where", "--where"},
     {"z_field", "--z-field"},
+    {"retriangulate", "--retriangulate"},
+    {"surface", "--surface"},
     {"hpgl.pens", "--hpgl-pens"},
     {"hpgl.height_pens", "--hpgl-height-pens"},
     {"hpgl.marker_radius_mm", "--hpgl-marker-radius"},
