@@ -22,6 +22,7 @@
 #include "dtm/io/formats/landxml.hpp"
 #include "dtm/io/formats/ogr.hpp"
 #include "dtm/io/formats/ply.hpp"
+#include "dtm/io/formats/raster_dem.hpp"
 
 namespace dtm::io {
 namespace {
@@ -36,9 +37,14 @@ constexpr std::array<std::string_view, 13> ogr_ext{"shp", "gpkg",   "geojson", "
                                                    "gml", "sqlite", "fgb",     "gpx",  "tab",
                                                    "mif", "vfk",    "gdb"};
 constexpr std::array<std::string_view, 1> xml_ext{"xml"};
-constexpr std::array<ReaderInfo, 8> reader_table{{
+constexpr std::array<std::string_view, 1> grid_asc_ext{"asc"};
+constexpr std::array<std::string_view, 8> raster_ext{"tif", "tiff", "vrt", "img",
+                                                     "dem", "bil",  "hgt", "nc"};
+constexpr std::array<ReaderInfo, 10> reader_table{{
     {"ply", "dtm PLY TIN (the surface itself: vertices, triangles, constrained edges, CRS)",
      ply_ext, nullptr, &read_ply},
+    {"ascii-grid", "ESRI ASCII grid DEM (.asc starting with ncols ...): cells as points",
+     grid_asc_ext, &is_ascii_grid, &read_raster_dem},
     {"csv-wkt", "Delimited text with a WKT or geometry column, read by OGR", csv_ext,
      &text_has_geometry_column, &read_ogr_text},
     {"csv", "Delimited text points or shapeid,x,y[,z] polylines", csv_ext, nullptr, &read_csv},
@@ -50,6 +56,8 @@ constexpr std::array<ReaderInfo, 8> reader_table{{
      &read_hpgl},
     {"dxf", "DXF: 3DFACEs as a TIN, else points and lines through OGR", dxf_ext, nullptr,
      &read_dxf},
+    {"raster", "Raster DEM read by GDAL (GeoTIFF, ...): cells as points, NoData skipped",
+     raster_ext, nullptr, &read_raster_dem},
     {"ogr", "Any OGR vector source: points, lines, polygons", ogr_ext, nullptr, &read_ogr},
 }};
 
