@@ -29,8 +29,21 @@ for tool in gdal_contour gdal_translate pdfinfo pdftotext gdalinfo; do
     command -v "$tool" >/dev/null || { echo "map_render: $tool not found" >&2; exit 2; }
 done
 
-now() { date +%s.%N; }
-elapsed() { echo "$2 - $1" | bc -l | awk '{printf "%.2f", $1}'; }
+# timed LABEL CMD...: runs CMD, prints wall and CPU (user + sys) seconds, sets wall_s and cpu_s.
+# On a shared machine the CPU time is the figure to compare (the wall time includes waiting for
+# the cores); on an idle machine wall <= CPU because dtm triangulates in parallel.
+timed() {
+    local label="$1"
+    shift
+    /usr/bin/time -f '%e %U %S' -o "$work/time.txt" "$@"
+    read -r wall user sys < "$work/time.txt"
+    wall_s="$wall"
+    cpu_s=$(echo "$user + $sys" | bc -l | awk '{printf "%.2f", $1}')
+    echo "   $label: wall $wall_s s, CPU $cpu_s s"
+}
+ratio() { echo "$1 / $2" | bc -l | awk '{printf "%.2f", $1}'; }
+
+"$here/cpu_info.sh"
 
 echo "== work directory: $work"
 echo "== generating $points points"
@@ -52,31 +65,26 @@ PY
 "$dtm" grid "$work/tin.ply" --cell 0.5 -o "$work/dem.tif" -q
 
 echo "== dtm map from the points (the whole job)"
-t0=$(now)
-"$dtm" map "$work/points.csv" --crs EPSG:5514 --scale 2000 --interval 2.5 \
-    -o "$work/map.pdf" --report "$work/map.json" -q
-t1=$(now)
-whole=$(elapsed "$t0" "$t1")
-echo "   dtm map points.csv: $whole s"
+timed "dtm map points.csv" "$dtm" map "$work/points.csv" --crs EPSG:5514 --scale 2000 \
+    --interval 2.5 -o "$work/map.pdf" --report "$work/map.json" -q
+whole_wall="$wall_s" whole_cpu="$cpu_s"
 
 echo "== dtm map from the TIN (the map's own share)"
-t0=$(now)
-"$dtm" map "$work/tin.ply" --crs EPSG:5514 --scale 2000 --interval 2.5 -o "$work/map_tin.pdf" -q
-t1=$(now)
-from_tin=$(elapsed "$t0" "$t1")
-echo "   dtm map tin.ply: $from_tin s"
+timed "dtm map tin.ply" "$dtm" map "$work/tin.ply" --crs EPSG:5514 --scale 2000 --interval 2.5 \
+    -o "$work/map_tin.pdf" -q
+tin_wall="$wall_s" tin_cpu="$cpu_s"
 
 echo "== reference: gdal_contour + gdal_translate -of PDF (from the DEM)"
 rm -f "$work/contours.gpkg" "$work/ref.pdf"
-t0=$(now)
-gdal_contour -q -i 2.5 -a elevation "$work/dem.tif" "$work/contours.gpkg"
-gdal_translate -q -of PDF "$work/dem.tif" "$work/ref.pdf" \
-    -co OGR_DATASOURCE="$work/contours.gpkg" -co OGR_DISPLAY_FIELD=elevation
-t1=$(now)
-reference=$(elapsed "$t0" "$t1")
-echo "   gdal_contour + gdal_translate: $reference s"
-echo "== ratio (reference / dtm map points.csv): $(echo "$reference / $whole" | bc -l | awk '{printf "%.2f", $1}')"
-echo "== ratio (reference / dtm map tin.ply):    $(echo "$reference / $from_tin" | bc -l | awk '{printf "%.2f", $1}')"
+timed "gdal_contour" gdal_contour -q -i 2.5 -a elevation "$work/dem.tif" "$work/contours.gpkg"
+ref_wall="$wall_s" ref_cpu="$cpu_s"
+# the PDF driver writes 8-bit rasters: the DEM scaled to grey, the contours as a vector layer
+timed "gdal_translate -of PDF" gdal_translate -q -of PDF -ot Byte -scale "$work/dem.tif" \
+    "$work/ref.pdf" -co OGR_DATASOURCE="$work/contours.gpkg" -co OGR_DISPLAY_FIELD=elevation
+ref_wall=$(echo "$ref_wall + $wall_s" | bc -l) ref_cpu=$(echo "$ref_cpu + $cpu_s" | bc -l)
+echo "   reference total: wall $ref_wall s, CPU $ref_cpu s"
+echo "== ratio reference / dtm map points.csv: wall $(ratio "$ref_wall" "$whole_wall"), CPU $(ratio "$ref_cpu" "$whole_cpu")"
+echo "== ratio reference / dtm map tin.ply:    wall $(ratio "$ref_wall" "$tin_wall"), CPU $(ratio "$ref_cpu" "$tin_cpu")"
 
 echo "== checks"
 python3 - "$work" <<'PY'

@@ -4,7 +4,9 @@
 // point first, then the other corners and sides; Christensen, Marks, Shieber, ACM ToG 14(3),
 // 1995, for the candidate model). Every marker is an obstacle from the start, so a text never
 // hides another point; a position crossed by no line is preferred, then one crossed only by
-// passable lines (contours) over one crossed by a line that must stay visible (breaklines).
+// passable lines (contours, drawn under the text's halo). A line that must stay visible
+// (breaklines, boundary, holes) is never under a text: without another position the point is
+// left out and counted in `failed`.
 #include <algorithm>
 #include <optional>
 
@@ -58,10 +60,9 @@ PointLabelResult place_point_labels(std::span<const PointLabelRequest> requests,
                                    {c.x + e + w, c.y - e - h}, {c.x - d - w, c.y},
                                    {c.x - e - w, c.y + e + h}, {c.x - e - w, c.y - e - h},
                                    {c.x, c.y + d + h},         {c.x, c.y - d - h}};
-        // the first free position; else the first crossed only by passable lines (contours);
-        // else the first crossed by any line
+        // the first free position; else the first crossed only by passable lines (contours)
         std::optional<PointLabel> chosen;
-        int chosen_class = 3;
+        int chosen_class = 2;
         for (int k = 0; k < 8 && chosen_class > 0; ++k) {
             const LabelBox box{centres[k], {1.0, 0.0}, w, h};
             const LabelBox padded = box.grown(pad);

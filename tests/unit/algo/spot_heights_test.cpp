@@ -167,6 +167,21 @@ TEST(PointLabels, NeverOverlapAndCountFailures) {
     const PointLabelResult moved = place_point_labels(one, lines, {}, {});
     ASSERT_EQ(moved.labels.size(), 1U);
     EXPECT_EQ(moved.labels[0].position, 3);  // left
+    // A contour through every position: the text still goes right (over the contour, with its
+    // halo); a breakline through every position: the spot height is left out and counted.
+    std::vector<Point3> ring{{8, 8, 0}, {16, 8, 0}, {16, 12, 0}, {8, 12, 0}, {8, 8, 0}};
+    std::vector<Point3> cross{{4, 10, 0}, {20, 10, 0}};
+    std::vector<Point3> upright{{10, 4, 0}, {10, 16, 0}};
+    std::vector<LabelLine> caged{{ring, true, 0.0, LabelLine::no_label},
+                                 {cross, false, 0.0, LabelLine::no_label},
+                                 {upright, false, 0.0, LabelLine::no_label}};
+    const PointLabelResult over_contours = place_point_labels(one, caged, {}, {});
+    ASSERT_EQ(over_contours.labels.size(), 1U);
+    EXPECT_EQ(over_contours.labels[0].position, 0);
+    for (LabelLine& l : caged) l.passable = false;
+    const PointLabelResult on_breaklines = place_point_labels(one, caged, {}, {});
+    EXPECT_TRUE(on_breaklines.labels.empty());
+    EXPECT_EQ(on_breaklines.failed, std::vector<std::size_t>{0});
 }
 
 }  // namespace

@@ -225,11 +225,26 @@ Rect draw_scale_bar(Canvas& canvas,
         canvas.rectangle({x, bar_y}, step * mm_per_unit, bar_h, i % 2 == 0 ? &black : &white,
                          &edge);
     }
-    for (int i = 0; i <= parts; ++i) {
-        const double x = at.x + static_cast<double>(i) * step * mm_per_unit;
+    // Labels under the segment ends, centred; one that would touch its left neighbour or the
+    // last label (with the unit) is left out, so short bars at small scales stay legible.
+    const auto label = [&](int i) {
         std::string text = number_text(step * i);
         if (i == parts) text += unit_m == 1.0 ? " m" : "";
-        canvas.text({x, bar_y + bar_h + 0.6}, text, tick);
+        return text;
+    };
+    const auto x_of = [&](int i) { return at.x + static_cast<double>(i) * step * mm_per_unit; };
+    const double gap = 0.8;
+    const double last_left = x_of(parts) - measure_text(label(parts), tick).width / 2.0;
+    double drawn_right = -1e300;
+    for (int i = 0; i <= parts; ++i) {
+        const std::string text = label(i);
+        const double half = measure_text(text, tick).width / 2.0;
+        if (i > 0 && i < parts &&
+            (x_of(i) - half < drawn_right + gap || x_of(i) + half > last_left - gap)) {
+            continue;
+        }
+        canvas.text({x_of(i), bar_y + bar_h + 0.6}, text, tick);
+        drawn_right = x_of(i) + half;
     }
     return area;
 }

@@ -26,6 +26,16 @@ std::string ground_text(double v) {
     return buf;
 }
 
+/// A coordinate as written in survey lists: fixed point, at most millimetres, no trailing zeros.
+std::string coordinate_text(double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.3f", v);
+    std::string t = buf;
+    while (t.back() == '0') t.pop_back();
+    if (t.back() == '.') t.pop_back();
+    return t;
+}
+
 bool fits(double w, double h, double max_w, double max_h) {
     const double tolerance = 1e-6;
     return (w <= max_w + tolerance && h <= max_h + tolerance) ||
@@ -133,8 +143,9 @@ MapLayout layout_map(const LayoutRequest& r) {
         (r.extent->xmax < r.data.xmin || r.extent->xmin > r.data.xmax ||
          r.extent->ymax < r.data.ymin || r.extent->ymin > r.data.ymax)) {
         throw UsageError("map: the extent does not overlap the surface (" +
-                         ground_text(r.data.xmin) + ", " + ground_text(r.data.ymin) + " .. " +
-                         ground_text(r.data.xmax) + ", " + ground_text(r.data.ymax) + ")");
+                         coordinate_text(r.data.xmin) + ", " + coordinate_text(r.data.ymin) +
+                         " .. " + coordinate_text(r.data.xmax) + ", " +
+                         coordinate_text(r.data.ymax) + ")");
     }
     const double mm = 1000.0 * r.unit_m / r.scale;
     const double aw = (area.xmax - area.xmin) * mm;

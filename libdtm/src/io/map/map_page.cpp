@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 // One map page: place the furniture, the grid labels, the spot heights (beside their markers)
 // and then the contour labels around them all, and draw in cartographic order: hillshade,
-// holes, contours (interrupted under their labels by a clip), breaklines and boundary, spot
-// heights, contour numbers, grid, furniture, neat line. Placement works in CRS units with the
-// page's scale; drawing converts to page millimetres.
+// holes, contours (interrupted under their labels and spot heights by a clip), breaklines and
+// boundary, spot heights, contour numbers, grid, furniture, neat line. Placement works in CRS units
+// with the page's scale; drawing converts to page millimetres.
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -158,6 +158,9 @@ void draw_lines(draw::Canvas& canvas, const MapData& data, const PageFrame& page
     std::vector<std::vector<Point2>> cuts;
     for (const ContourLabel& l : p.contour_labels.labels) {
         cuts.push_back(page_corners(page, l.box.grown(0.4 * page.units_per_mm())));
+    }
+    for (const PointLabel& l : p.spot_labels.labels) {  // contours stop short of spot heights
+        cuts.push_back(page_corners(page, l.box.grown(0.3 * page.units_per_mm())));
     }
     canvas.push_clip_excluding(cuts);
     const draw::Stroke basic{s.contour, s.contour_mm, {}, true};

@@ -114,10 +114,13 @@ Box2 automatic_extent(const MapData& data, const LayoutRequest& base) {
         g.ymin -= bottom_mm * mm;
         candidates.push_back(g);
     };
-    grown(z.column_w + inset - margin / mm, 0.0);
-    grown(0.0, z.row_h + inset - margin / mm);
-    grown(z.row_w + inset - margin / mm, 0.0);
-    grown(0.0, z.column_h + inset - margin / mm);
+    // the furniture goes beside or below the surface with a clear gap (its own margin and the
+    // spot heights and grid labels at the surface edge stay visible)
+    const double clear = inset + 6.0 - margin / mm;
+    grown(z.column_w + clear, 0.0);
+    grown(0.0, z.row_h + clear);
+    grown(z.row_w + clear, 0.0);
+    grown(0.0, z.column_h + clear);
     std::stable_sort(candidates.begin() + 1, candidates.end(), [](const Box2& a, const Box2& b) {
         return (a.xmax - a.xmin) * (a.ymax - a.ymin) < (b.xmax - b.xmin) * (b.ymax - b.ymin);
     });
