@@ -19,7 +19,7 @@
 #include "dtm/core/error.hpp"
 #include "dtm/io/formats/crs.hpp"
 #include "dtm/io/formats/landxml.hpp"
-#include "io/formats/xml/xml_sax.hpp"
+#include "io/formats/qgis/qgis_project_xml.hpp"  // qgis::escape: the one XML escaping
 
 namespace dtm::io {
 namespace {
@@ -111,9 +111,9 @@ void write_crs(Out& out, const std::string& wkt) {
     if (srs.importFromWkt(wkt.c_str()) == OGRERR_NONE && srs.GetName() != nullptr) {
         name = srs.GetName();
     }
-    out << "  <CoordinateSystem name=\"" << xml::escape(name) << "\"";
+    out << "  <CoordinateSystem name=\"" << qgis::escape(name) << "\"";
     if (label.starts_with("EPSG:")) out << " epsgCode=\"" << label.substr(5) << "\"";
-    out << " ogcWktCode=\"" << xml::escape(wkt) << "\"/>\n";
+    out << " ogcWktCode=\"" << qgis::escape(wkt) << "\"/>\n";
 }
 
 void write_chain(Out& out, const Tin& tin, const ConstraintChain& chain) {

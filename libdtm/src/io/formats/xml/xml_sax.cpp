@@ -135,30 +135,6 @@ void Parser::parse(Handler& handler, const Progress& progress) {
     }
 }
 
-std::string escape(std::string_view text) {
-    std::string out;
-    out.reserve(text.size());
-    for (const char ch : text) {
-        switch (ch) {
-            case '&':
-                out += "&amp;";
-                break;
-            case '<':
-                out += "&lt;";
-                break;
-            case '>':
-                out += "&gt;";
-                break;
-            case '"':
-                out += "&quot;";
-                break;
-            default:
-                out += ch;
-        }
-    }
-    return out;
-}
-
 std::string_view root_element(std::string_view bytes) noexcept {
     std::size_t at = 0;
     if (bytes.starts_with("\xEF\xBB\xBF")) at = 3;

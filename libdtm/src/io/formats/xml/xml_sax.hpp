@@ -57,9 +57,6 @@ private:
     void* parser_ = nullptr;  // XML_Parser while parse() runs
 };
 
-/// @p text with & < > " escaped, for attribute values and character data.
-[[nodiscard]] std::string escape(std::string_view text);
-
 /// The local name of the root element of a file that starts with @p bytes (skipping the XML
 /// declaration, comments, processing instructions and a DOCTYPE), or empty.
 [[nodiscard]] std::string_view root_element(std::string_view bytes) noexcept;
