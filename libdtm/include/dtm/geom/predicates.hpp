@@ -123,4 +123,21 @@ template <class A, class B, class C, class D>
     return incircle(a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y);
 }
 
+/// Sign of |ab|^2 - |cd|^2: +1 if a, b are farther apart than c, d, -1 if closer, 0 if equally
+/// far. Exact for every finite input (a floating-point filter, then big integers); the greedy
+/// triangulation and the shortest-diagonal criterion order edges by it.
+[[nodiscard]] int compare_distance(double ax,
+                                   double ay,
+                                   double bx,
+                                   double by,
+                                   double cx,
+                                   double cy,
+                                   double dx,
+                                   double dy) noexcept;
+
+template <class A, class B, class C, class D>
+[[nodiscard]] inline int compare_distance(const A& a, const B& b, const C& c, const D& d) noexcept {
+    return compare_distance(a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y);
+}
+
 }  // namespace dtm::geom
