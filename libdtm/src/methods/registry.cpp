@@ -6,15 +6,19 @@
 #include <array>
 
 #include "dc.hpp"
+#include "enumerate.hpp"
 
 namespace dtm::methods {
 namespace {
 
 const std::array kMethods{
-    MethodInfo{"dc", Family::delaunay, "000 §3.7; Guibas-Stolfi 1985",
-               "O(n log n) worst case",
-               "the production kernel: divide and conquer in parallel tiles, exact merges",
-               true, false, Output::triangulation, "", &run_dc},
+    MethodInfo{"enumerate", Family::enumeration, "000 §2.3 [HOSCH]",
+               "O(T n^2) for T triangulations (n <= 12)",
+               "every triangulation of up to 12 points and the optimum under each criterion", false,
+               true, Output::all_triangulations, "", &run_enumerate},
+    MethodInfo{"dc", Family::delaunay, "000 §3.7; Guibas-Stolfi 1985", "O(n log n) worst case",
+               "the production kernel: divide and conquer in parallel tiles, exact merges", true,
+               false, Output::triangulation, "", &run_dc},
 };
 
 }  // namespace
@@ -30,13 +34,20 @@ const MethodInfo* find_method(std::string_view name) {
 
 std::string_view family_name(Family family) {
     switch (family) {
-        case Family::delaunay: return "delaunay";
-        case Family::voronoi: return "voronoi";
-        case Family::optimal: return "optimal";
-        case Family::greedy: return "greedy";
-        case Family::constrained: return "constrained";
-        case Family::pseudo: return "pseudo";
-        case Family::enumeration: return "enumeration";
+        case Family::delaunay:
+            return "delaunay";
+        case Family::voronoi:
+            return "voronoi";
+        case Family::optimal:
+            return "optimal";
+        case Family::greedy:
+            return "greedy";
+        case Family::constrained:
+            return "constrained";
+        case Family::pseudo:
+            return "pseudo";
+        case Family::enumeration:
+            return "enumeration";
     }
     return "?";
 }
