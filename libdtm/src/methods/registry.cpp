@@ -7,6 +7,9 @@
 
 #include "dc.hpp"
 #include "enumerate.hpp"
+#include "greedy.hpp"
+#include "greedy_gilbert.hpp"
+#include "greedy_naive.hpp"
 
 namespace dtm::methods {
 namespace {
@@ -16,6 +19,18 @@ const std::array kMethods{
                "O(T n^2) for T triangulations (n <= 12)",
                "every triangulation of up to 12 points and the optimum under each criterion", false,
                true, Output::all_triangulations, "", &run_enumerate},
+    MethodInfo{"greedy-naive", Family::greedy, "000 §3.1a; 004 Alg. 1; Preparata-Shamos 1985",
+               "O(n^3)",
+               "greedy triangulation: all pairs by length, each tested against every edge", true,
+               true, Output::triangulation, "", &run_greedy_naive},
+    MethodInfo{"greedy-gilbert", Family::greedy, "000 §3.1b, §3.1.1; Gilbert 1979",
+               "O(n^2 log n) time, O(n^2) memory",
+               "greedy triangulation with one segment tree per point (at most 5000 points)", true,
+               true, Output::triangulation, "", &run_greedy_gilbert},
+    MethodInfo{"greedy", Family::greedy, "000 §3.1; Dickerson et al. 1997",
+               "O(n log n) observed on uniform points",
+               "greedy triangulation by length phases among still-open points (same edges)", true,
+               false, Output::triangulation, "", &run_greedy},
     MethodInfo{"dc", Family::delaunay, "000 §3.7; Guibas-Stolfi 1985", "O(n log n) worst case",
                "the production kernel: divide and conquer in parallel tiles, exact merges", true,
                false, Output::triangulation, "", &run_dc},

@@ -24,16 +24,24 @@ public:
         ++incircle_;
         return geom::incircle(a, b, c, d);
     }
+    /// Sign of |ab|^2 - |cd|^2 (geom::compare_distance); counted as extra["distance_calls"].
+    template <class A, class B, class C, class D>
+    [[nodiscard]] int distance(const A& a, const B& b, const C& c, const D& d) noexcept {
+        ++distance_;
+        return geom::compare_distance(a, b, c, d);
+    }
     [[nodiscard]] std::uint64_t orient_calls() const noexcept { return orient_; }
     [[nodiscard]] std::uint64_t incircle_calls() const noexcept { return incircle_; }
     void add_to(MethodCounters& counters) const noexcept {
         counters.orient_calls += orient_;
         counters.incircle_calls += incircle_;
+        if (distance_ > 0) counters.extra["distance_calls"] += distance_;
     }
 
 private:
     std::uint64_t orient_ = 0;
     std::uint64_t incircle_ = 0;
+    std::uint64_t distance_ = 0;
 };
 
 }  // namespace dtm::methods::detail

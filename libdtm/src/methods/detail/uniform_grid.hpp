@@ -32,13 +32,25 @@ public:
         cols_ = static_cast<int>(std::min(4096.0, std::floor(w / cell_) + 1));
         rows_ = static_cast<int>(std::min(4096.0, std::floor(h / cell_) + 1));
         cells_.assign(static_cast<std::size_t>(cols_) * static_cast<std::size_t>(rows_), {});
+        row_bottom_.resize(static_cast<std::size_t>(rows_) + 1);
+        for (int r = 0; r <= rows_; ++r) row_bottom_[static_cast<std::size_t>(r)] = y0_ + r * cell_;
     }
 
     [[nodiscard]] int cols() const noexcept { return cols_; }
     [[nodiscard]] int rows() const noexcept { return rows_; }
     [[nodiscard]] double cell_size() const noexcept { return cell_; }
     [[nodiscard]] int col(double x) const noexcept { return clamp((x - x0_) / cell_, cols_); }
-    [[nodiscard]] int row(double y) const noexcept { return clamp((y - y0_) / cell_, rows_); }
+    /// The row whose slab [bottom(r), bottom(r + 1)) holds y: consistent with the slab bounds the
+    /// segment walks use, so a point's row is never off by one against them.
+    [[nodiscard]] int row(double y) const noexcept {
+        int r = clamp((y - y0_) / cell_, rows_);
+        while (r > 0 && y < bottom(r)) --r;
+        while (r + 1 < rows_ && y >= bottom(r + 1)) ++r;
+        return r;
+    }
+    [[nodiscard]] double bottom(int r) const noexcept {
+        return row_bottom_[static_cast<std::size_t>(r)];
+    }
     [[nodiscard]] std::size_t index(int c, int r) const noexcept {
         return static_cast<std::size_t>(r) * static_cast<std::size_t>(cols_) +
                static_cast<std::size_t>(c);
@@ -60,12 +72,15 @@ public:
         return cells_[cell];
     }
 
-    /// Calls f(cell) for every cell the segment pq may touch (rows of its y range, each with the
-    /// x range of the segment in that row's slab, one cell of margin).
+    /// Calls f(cell) for every cell the segment pq may touch: the rows of its y range (exact:
+    /// row() agrees with the slab bounds), in each the x range of the segment within the row's
+    /// slab, widened by @p margin columns. Two segments that meet share a cell when one of them is
+    /// walked with margin 1 (the rounding of the interpolated x is far below a cell); so does a
+    /// point on a segment walked with margin 1.
     template <class P, class F>
-    void for_segment_cells(const P& p, const P& q, F&& f) const {
-        const int r0 = std::max(0, row(std::min(p.y, q.y)) - 1);
-        const int r1 = std::min(rows_ - 1, row(std::max(p.y, q.y)) + 1);
+    void for_segment_cells(const P& p, const P& q, F&& f, int margin = 1) const {
+        const int r0 = row(std::min(p.y, q.y));
+        const int r1 = row(std::max(p.y, q.y));
         const double dy = q.y - p.y;
         const double ylo = std::min(p.y, q.y);
         const double yhi = std::max(p.y, q.y);
@@ -74,15 +89,15 @@ public:
             double xb = std::max(p.x, q.x);
             if (dy != 0.0) {
                 // The part of the segment in this row's slab (clamped to the segment's y range).
-                const double ya = std::clamp(y0_ + r * cell_, ylo, yhi);
-                const double yb = std::clamp(y0_ + (r + 1) * cell_, ylo, yhi);
+                const double ya = std::clamp(bottom(r), ylo, yhi);
+                const double yb = std::clamp(bottom(r + 1), ylo, yhi);
                 const double xa1 = p.x + (q.x - p.x) * ((ya - p.y) / dy);
                 const double xb1 = p.x + (q.x - p.x) * ((yb - p.y) / dy);
                 xa = std::max(xa, std::min(xa1, xb1));
                 xb = std::min(xb, std::max(xa1, xb1));
             }
-            const int c0 = std::max(0, col(xa) - 1);
-            const int c1 = std::min(cols_ - 1, col(xb) + 1);
+            const int c0 = std::max(0, col(xa) - margin);
+            const int c1 = std::min(cols_ - 1, col(xb) + margin);
             for (int c = c0; c <= c1; ++c) f(index(c, r));
         }
     }
@@ -112,6 +127,7 @@ private:
     int cols_ = 1;
     int rows_ = 1;
     std::vector<std::vector<std::uint32_t>> cells_{1};
+    std::vector<double> row_bottom_{0.0, 1.0};
 };
 
 }  // namespace dtm::methods::detail
