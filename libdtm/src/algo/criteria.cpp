@@ -14,7 +14,7 @@
 // triangle or an edge always gets the same value whichever way it is handed in; the decisions that
 // can be exact are: maxmin-angle by the incircle predicate (Lawson's theorem: for a strictly
 // convex, non-cocircular quadrilateral the Delaunay diagonal is the max-min-angle one, a
-// cocircular one is a tie), shortest-diagonal by geom::compare_distance, and the data-dependent
+// cocircular one is a tie), shortest-diagonal by geom::compare_distances, and the data-dependent
 // sums by exact summation of the computed costs.
 #include "dtm/algo/criteria.hpp"
 
@@ -192,7 +192,7 @@ int compare_quad_diagonals(
         case CriterionKind::edge_cost_sum:
             return 0;
         case CriterionKind::edge_length:
-            return -geom::compare_distance(b, d, a, c);
+            return -geom::compare_distances(b, d, a, c);
         case CriterionKind::triangle_max_min:
         case CriterionKind::triangle_min_max:
             break;

@@ -8,7 +8,7 @@
 // edges. Exactness rests on three facts:
 //
 // 1. Length phases. The pairs are processed phase by phase: phase k holds the pairs with
-//    r_k < length <= r_{k+1} (r_{k+1} = 2 r_k; compared exactly with geom::compare_distance),
+//    r_k < length <= r_{k+1} (r_{k+1} = 2 r_k; compared exactly with geom::compare_distances),
 //    sorted by GreedyOrder inside the phase. Phases partition the order, so the concatenation
 //    is the full greedy order.
 // 2. Closed points. A point p is closed when the added edges around it, taken in angular order,
@@ -123,8 +123,8 @@ private:
         // Clear cases by a generous margin, the rest exactly.
         if (d2 > upper * upper * 1.0001) return false;
         if (lower > 0.0 && d2 < lower * lower * 0.9999) return false;
-        if (pred_.distance(p_[a], p_[b], o, Point2{upper, 0.0}) > 0) return false;
-        return lower == 0.0 || pred_.distance(p_[a], p_[b], o, Point2{lower, 0.0}) > 0;
+        if (pred_.compare_distances(p_[a], p_[b], o, Point2{upper, 0.0}) > 0) return false;
+        return lower == 0.0 || pred_.compare_distances(p_[a], p_[b], o, Point2{lower, 0.0}) > 0;
     }
 
     void run_phase(double lower, double upper) {

@@ -10,15 +10,29 @@
 #include "greedy.hpp"
 #include "greedy_gilbert.hpp"
 #include "greedy_naive.hpp"
+#include "lawson_flip.hpp"
+#include "randomized_dag.hpp"
 
 namespace dtm::methods {
 namespace {
 
 const std::array kMethods{
+    MethodInfo{"dc", Family::delaunay, "000 §3.7; Guibas-Stolfi 1985", "O(n log n) worst case",
+               "the production kernel: divide and conquer in parallel tiles, exact merges", true,
+               false, Output::triangulation, "", &run_dc},
     MethodInfo{"enumerate", Family::enumeration, "000 §2.3 [HOSCH]",
                "O(T n^2) for T triangulations (n <= 12)",
                "every triangulation of up to 12 points and the optimum under each criterion", false,
                true, Output::all_triangulations, "", &run_enumerate},
+    MethodInfo{"lawson-flip", Family::delaunay, "000 §2.4.1, §2.3; 004 Alg. 2; 003",
+               "O(n^2) flips (004), plus the initial triangulation",
+               "Lawson's local improvement: a sweep triangulation, then flips of illegal edges",
+               false, true, Output::triangulation, "initial=sweep order=stack|pass",
+               &run_lawson_flip},
+    MethodInfo{"randomized-dag", Family::delaunay, "003 Alg. 1-4; de Berg et al. ch. 9",
+               "O(n log n) expected time, O(n) expected memory",
+               "randomized incremental insertion, point location in the history DAG", false, false,
+               Output::triangulation, "super-triangle=symbolic|finite", &run_randomized_dag},
     MethodInfo{"greedy-naive", Family::greedy, "000 §3.1a; 004 Alg. 1; Preparata-Shamos 1985",
                "O(n^3)",
                "greedy triangulation: all pairs by length, each tested against every edge", true,
@@ -31,9 +45,6 @@ const std::array kMethods{
                "O(n log n) observed on uniform points",
                "greedy triangulation by length phases among still-open points (same edges)", true,
                false, Output::triangulation, "", &run_greedy},
-    MethodInfo{"dc", Family::delaunay, "000 §3.7; Guibas-Stolfi 1985", "O(n log n) worst case",
-               "the production kernel: divide and conquer in parallel tiles, exact merges", true,
-               false, Output::triangulation, "", &run_dc},
 };
 
 }  // namespace

@@ -27,7 +27,7 @@ public:
         : p_(points), pred_(pred) {}
     [[nodiscard]] bool operator()(const GreedyEdge& e, const GreedyEdge& f) const {
         if (e == f) return false;
-        const int c = pred_.distance(p_[e.first], p_[e.second], p_[f.first], p_[f.second]);
+        const int c = pred_.compare_distances(p_[e.first], p_[e.second], p_[f.first], p_[f.second]);
         return c != 0 ? c < 0 : e < f;
     }
 
