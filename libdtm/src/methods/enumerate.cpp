@@ -24,6 +24,7 @@
 #include "dtm/algo/criteria.hpp"
 #include "dtm/core/error.hpp"
 #include "methods/detail/counting_predicates.hpp"
+#include "methods/detail/method_support.hpp"
 #include "methods/detail/planar.hpp"
 #include "methods/detail/point_set.hpp"
 
@@ -186,24 +187,6 @@ private:
     std::uint64_t nodes_ = 0;
 };
 
-Tin make_tin(const std::vector<Point3>& points, std::vector<Triangle> triangles) {
-    Tin tin;
-    tin.vertices = points;
-    tin.triangles = std::move(triangles);
-    // Neighbours: the triangle holding the reverse of each directed edge.
-    const std::size_t n = points.size();
-    std::vector<std::pair<TriangleIndex, int>> by_edge(n * n, {no_triangle, 0});
-    for (TriangleIndex t = 0; t < tin.triangles.size(); ++t) {
-        const auto& v = tin.triangles[t].v;
-        for (int s = 0; s < 3; ++s) by_edge[v[(s + 1) % 3] * n + v[(s + 2) % 3]] = {t, s};
-    }
-    for (Triangle& tri : tin.triangles) {
-        for (int s = 0; s < 3; ++s)
-            tri.n[s] = by_edge[tri.v[(s + 2) % 3] * n + tri.v[(s + 1) % 3]].first;
-    }
-    return tin;
-}
-
 double total_length(const Tin& tin, std::vector<double>& lengths) {
     lengths = quality_vector(tin, Criterion::shortest_diagonal);
     return summarize_quality(lengths).sum;
@@ -240,10 +223,7 @@ std::string optimum_json(const std::vector<Tin>& all,
 MethodResult run_enumerate(const MethodInput& input,
                            const MethodOptions& options,
                            const Progress& progress) {
-    if (!options.params.empty()) {
-        throw UsageError("method enumerate takes no parameter (got '" +
-                         options.params.begin()->first + "')");
-    }
+    detail::ParamReader("enumerate", options).finish();
     if (!input.segments.empty()) throw UsageError("method enumerate takes no segments");
     detail::CountingPredicates pred;
     detail::PreparedInput prepared = detail::prepare_input(input, "enumerate", pred);
@@ -257,8 +237,10 @@ MethodResult run_enumerate(const MethodInput& input,
     }
     MethodResult result;
     result.counters.extra["duplicates"] = prepared.duplicates;
-    for (std::vector<Triangle>& t : Enumerator(points, pred, progress).run()) {
-        result.all.push_back(make_tin(points, std::move(t)));
+    for (const std::vector<Triangle>& found : Enumerator(points, pred, progress).run()) {
+        std::vector<detail::TriangleCorners> corners;
+        for (const Triangle& t : found) corners.push_back(t.v);
+        result.all.push_back(detail::tin_from_triangles(points, corners));
     }
     std::string json =
         "\"triangulations\": " + std::to_string(result.all.size()) + ", \"optima\": {";

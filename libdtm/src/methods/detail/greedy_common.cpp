@@ -8,6 +8,7 @@
 
 #include "dtm/algo/triangulate.hpp"
 #include "dtm/core/error.hpp"
+#include "methods/detail/method_support.hpp"
 
 namespace dtm::methods::detail {
 namespace {
@@ -35,10 +36,7 @@ std::string number(double v) {
 GreedySetup greedy_setup(const MethodInput& input,
                          const MethodOptions& options,
                          std::string_view method) {
-    if (!options.params.empty()) {
-        throw UsageError("method " + std::string(method) + " takes no parameter (got '" +
-                         options.params.begin()->first + "')");
-    }
+    ParamReader(method, options).finish();
     GreedySetup s;
     s.input = prepare_input(input, method, s.pred);
     if (all_collinear(s.input.points, s.pred)) {
