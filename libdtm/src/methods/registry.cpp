@@ -11,6 +11,7 @@
 #include "greedy_gilbert.hpp"
 #include "greedy_naive.hpp"
 #include "lawson_flip.hpp"
+#include "monotone.hpp"
 #include "randomized_dag.hpp"
 
 namespace dtm::methods {
@@ -45,6 +46,10 @@ const std::array kMethods{
                "O(n log n) observed on uniform points",
                "greedy triangulation by length phases among still-open points (same edges)", true,
                false, Output::triangulation, "", &run_greedy},
+    MethodInfo{"monotone", Family::constrained, "000 §3.2; Preparata-Shamos 1985", "O(n log n)",
+               "constrained triangulation: regularisation by two plane sweeps, y-monotone "
+               "polygons by the stack method",
+               true, false, Output::triangulation, "domain=hull|rectangle", &run_monotone},
 };
 
 }  // namespace
