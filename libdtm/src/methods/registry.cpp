@@ -12,6 +12,7 @@
 #include "greedy_naive.hpp"
 #include "lawson_flip.hpp"
 #include "monotone.hpp"
+#include "pseudo.hpp"
 #include "randomized_dag.hpp"
 
 namespace dtm::methods {
@@ -50,6 +51,14 @@ const std::array kMethods{
                "constrained triangulation: regularisation by two plane sweeps, y-monotone "
                "polygons by the stack method",
                true, false, Output::triangulation, "domain=hull|rectangle", &run_monotone},
+    MethodInfo{"pseudo", Family::pseudo, "001 (Hobza 2010, Trcka 2007)",
+               "O(n log n) observed (001 §4.1)",
+               "pseudo-triangulation by incremental insertion with the generalized flip", false,
+               false, Output::polygon_faces,
+               "swap=none|post|incremental flip=brute|fast criterion=random|min-length|"
+               "max-length|maxmin-angle|minmax-angle|maxmin-sum-angle|minmax-sum-angle|"
+               "maxmin-angle-hull|minmax-angle-hull",
+               &run_pseudo},
 };
 
 }  // namespace
