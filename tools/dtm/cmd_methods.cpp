@@ -2,16 +2,19 @@
 // `dtm methods`: the triangulation methods of the source literature, listed and run one by one.
 //   dtm methods list [--json]
 //   dtm methods run NAME INPUT -o OUT.ply [--stats] [--param KEY=VALUE]... [--seed S]
-// Thin: parse -> methods::registry / MethodFn -> io::write_tin -> print.
+// Thin: parse -> methods::registry / MethodFn -> io::write_tin (or, by the method's output,
+// io::write_polygon_faces / a folder of TINs) -> print.
 #include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "command.hpp"
 #include "dtm/core/error.hpp"
+#include "dtm/io/faces_file.hpp"
 #include "dtm/io/tin_file.hpp"
 #include "dtm/methods/registry.hpp"
 #include "input_args.hpp"
@@ -53,6 +56,7 @@ struct RunArgs {
     InputArgs input;
     std::string output;
     std::vector<std::string> params;
+    std::map<std::string, std::string> aliases;  ///< --swap X means --param swap=X
     std::uint64_t seed = 1;
     unsigned threads = 0;
     bool stats = false;
@@ -80,6 +84,9 @@ int run_method(const RunArgs& a) {
     methods::MethodOptions options;
     options.seed = a.seed;
     options.threads = a.threads;
+    for (const auto& [key, value] : a.aliases) {
+        if (!value.empty()) options.params[key] = value;
+    }
     for (const std::string& p : a.params) {
         const auto eq = p.find('=');
         if (eq == std::string::npos || eq == 0) {
@@ -109,9 +116,15 @@ int run_method(const RunArgs& a) {
         method->run(methods::MethodInput{points, segments}, options, progress.sub(0.1, 0.95));
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    io::TinWriteOptions write_options;
-    write_options.crs_wkt = loaded.crs_wkt;
-    io::write_tin(result.tin, a.output, write_options);
+    if (method->output == methods::Output::all_triangulations) {
+        io::write_tin_series(result.all, a.output, loaded.crs_wkt);
+    } else if (method->output == methods::Output::polygon_faces) {
+        io::write_polygon_faces(result.tin.vertices, result.faces, a.output, {loaded.crs_wkt, false});
+    } else {
+        io::TinWriteOptions write_options;
+        write_options.crs_wkt = loaded.crs_wkt;
+        io::write_tin(result.tin, a.output, write_options);
+    }
     progress.report(1.0, "done");
     if (a.stats) {
         std::cout << "{\"method\": " << json_string(a.name) << ", \"points\": " << points.size()
@@ -143,10 +156,16 @@ Command methods_command() {
                 CLI::App* one = app.add_subcommand("run", "Run one method on a point input");
                 one->add_option("name", args->name, "Method name (dtm methods list)")->required();
                 add_input_options(*one, args->input);
-                one->add_option("-o,--output", args->output, "Output TIN (format by extension)")
+                one->add_option("-o,--output", args->output,
+                        "Output TIN by extension; polygon faces (pseudo: .ply, .gpkg, .shp); a "
+                        "folder of t001.ply ... (enumerate)")
                     ->required();
                 one->add_option("--param", args->params,
                                 "Method parameter KEY=VALUE (repeatable; see dtm methods list)");
+                for (const char* key : {"swap", "flip", "criterion"}) {
+                    one->add_option(std::string("--") + key, args->aliases[key],
+                                    std::string("Same as --param ") + key + "=VALUE");
+                }
                 one->add_option("--seed", args->seed, "Seed of randomised methods (default 1)");
                 one->add_option("--threads", args->threads, "Threads of parallel methods");
                 one->add_flag("--stats", args->stats,
