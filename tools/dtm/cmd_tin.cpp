@@ -7,6 +7,8 @@
 #include <iostream>
 
 #include "command.hpp"
+#include "dtm/algo/criteria.hpp"
+#include "dtm/algo/optimize.hpp"
 #include "dtm/algo/triangulate.hpp"
 #include "dtm/algo/validate.hpp"
 #include "dtm/core/error.hpp"
@@ -36,6 +38,22 @@ double since(std::chrono::steady_clock::time_point t)
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 
+/// The optimisation's figures as a JSON object (criterion, flips, quality before and after).
+std::string optimize_json(const OptimizeStats& o)
+{
+    auto quality = [](const QualitySummary& q) {
+        return "{\"worst\": " + json_number(q.worst) + ", \"mean\": " + json_number(q.mean) +
+               ", \"sum\": " + json_number(q.sum) + "}";
+    };
+    return "{\"criterion\": " + json_string(criterion_name(o.criterion)) +
+           ", \"flips\": " + std::to_string(o.flips) +
+           ", \"improvable_before\": " + std::to_string(o.improvable_before) +
+           ", \"improvable_after\": " + std::to_string(o.improvable_after) +
+           ", \"converged\": " + (o.converged ? "true" : "false") +
+           ", \"quality_before\": " + quality(o.before) + ", \"quality_after\": " + quality(o.after) +
+           ", \"seconds\": " + json_number(o.seconds) + "}";
+}
+
 void write_report(const std::string& path, const TriangulateResult& r)
 {
     io::AtomicOutput out(path);
@@ -57,17 +75,30 @@ void write_report(const std::string& path, const TriangulateResult& r)
               << json_number(c.at.y) << ", \"z_first\": " << json_number(c.z_first)
               << ", \"z_second\": " << json_number(c.z_second) << "}";
         }
-        f << "\n  ]\n}\n";
+        f << "\n  ]";
+        if (r.stats.optimize.criterion != Criterion::delaunay) {
+            f << ",\n  \"optimize\": " << optimize_json(r.stats.optimize);
+        }
+        f << "\n}\n";
         if (!f) throw Error("cannot write the report " + path);
     }
     out.commit();
 }
 
-void check_tin(const TriangulateResult& result, const TerrainInput& input)
+void check_tin(const TriangulateResult& result, const TerrainInput& input, Criterion optimize)
 {
     const Tin& tin = result.tin;
     std::string problems;
-    for (const CheckReport& r : {verify_topology(tin), verify_constrained_delaunay(tin),
+    CheckReport optimal = optimize == Criterion::delaunay ? verify_constrained_delaunay(tin)
+                                                          : CheckReport{};
+    if (optimize != Criterion::delaunay) {
+        for (const auto& [a, b] : improvable_edges(tin, optimize, 5)) {
+            optimal.problems.push_back("edge " + std::to_string(a) + "-" + std::to_string(b) +
+                                       " is not locally optimal under " +
+                                       std::string(criterion_name(optimize)));
+        }
+    }
+    for (const CheckReport& r : {verify_topology(tin), optimal,
                                  verify_constraints(tin, input, result.input_to_vertex)}) {
         problems += r.text();
     }
@@ -90,7 +121,14 @@ int run_tin(const TinArgs& a)
                          : triangulate(std::move(loaded.terrain), a.triangulate,
                                        progress.sub(0.2, 0.9));
     }
-    if (a.check) check_tin(result, loaded.tin ? TerrainInput{} : loaded.terrain);
+    if (loaded.tin && a.triangulate.optimize != Criterion::delaunay) {
+        result.stats.optimize = optimize_tin(
+            result.tin, {.criterion = a.triangulate.optimize, .threads = a.triangulate.threads},
+            progress.sub(0.2, 0.9));
+    }
+    if (a.check) {
+        check_tin(result, loaded.tin ? TerrainInput{} : loaded.terrain, a.triangulate.optimize);
+    }
 
     const auto write_start = std::chrono::steady_clock::now();
     io::TinWriteOptions write_options;
@@ -120,7 +158,11 @@ int run_tin(const TinArgs& a)
                   << json_number(read_s) << ", \"triangulate\": " << json_number(s.seconds_triangulate)
                   << ", \"constrain\": " << json_number(s.seconds_constrain)
                   << ", \"write\": " << json_number(write_s) << ", \"total\": " << json_number(since(start))
-                  << "}}" << std::endl;
+                  << "}";
+        if (s.optimize.criterion != Criterion::delaunay) {
+            std::cout << ", \"optimize\": " << optimize_json(s.optimize);
+        }
+        std::cout << "}" << std::endl;
     }
     return 0;
 }

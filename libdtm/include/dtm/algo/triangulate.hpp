@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "dtm/algo/optimize.hpp"
 #include "dtm/core/point.hpp"
 #include "dtm/core/progress.hpp"
 #include "dtm/core/terrain.hpp"
@@ -32,6 +33,9 @@ struct TriangulateOptions {
     /// Number of tiles for the parallel divide and conquer (0: automatic). The result never
     /// depends on it.
     std::size_t tiles = 0;
+    /// After the constrained Delaunay TIN, Lawson flips under this criterion (optimize.hpp;
+    /// constrained edges never flip). delaunay (default): none.
+    Criterion optimize = Criterion::delaunay;
 };
 
 /// One merge of input points that share a position (or lie within snap_distance).
@@ -57,6 +61,8 @@ struct TriangulateStats {
     std::size_t removed_triangles = 0;  ///< outside the boundary, in holes, or trimmed
     double seconds_triangulate = 0.0;
     double seconds_constrain = 0.0;
+    /// What TriangulateOptions::optimize did (flips, quality before and after, seconds).
+    OptimizeStats optimize;
 };
 
 struct TriangulateResult {
@@ -72,7 +78,9 @@ struct TriangulateResult {
 /// Constrained Delaunay triangulation of @p input.
 /// @throws InputError fewer than 3 distinct points, all points collinear, an open boundary, ...
 /// @throws Cancelled when @p progress asks to stop.
-/// @post verify_topology, verify_constrained_delaunay and verify_constraints hold on the result.
+/// @post verify_topology and verify_constraints hold on the result; so does
+/// verify_constrained_delaunay when options.optimize is delaunay, and otherwise every
+/// unconstrained edge is locally optimal under the criterion (count_improvable_edges is 0).
 [[nodiscard]] TriangulateResult triangulate(const TerrainInput& input,
                                             const TriangulateOptions& options = {},
                                             const Progress& progress = {});
