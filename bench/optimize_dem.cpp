@@ -117,7 +117,7 @@ void print(const std::string& title, const std::vector<std::vector<Row>>& runs) 
     std::printf("\n(%zu cells compared in the first run)\n", runs[0][0].e.cells);
 }
 
-int sample(const std::string& dir, double cell) {
+int run_sample(const std::string& dir, double cell) {
     io::LoadOptions lo;
     lo.files = {{dir + "/points.csv", io::InputRole::points},
                 {dir + "/breaklines.shp", io::InputRole::breaklines},
@@ -239,7 +239,7 @@ int main(int argc, char** argv) {
     const std::vector<std::string> a(argv + 1, argv + argc);
     try {
         if (a.size() >= 2 && a[0] == "sample")
-            return sample(a[1], a.size() > 2 ? std::stod(a[2]) : 0.5);
+            return run_sample(a[1], a.size() > 2 ? std::stod(a[2]) : 0.5);
         if (a.size() == 4 && a[0] == "raster")
             return raster(a[1], std::stod(a[2]), std::stoi(a[3]));
         if (a.size() == 5 && a[0] == "table") {
