@@ -149,6 +149,13 @@ int main(int argc, char** argv) {
                         static_cast<double>(r.counters.peak_bytes) / per,
                         static_cast<double>(r.counters.flips) / per,
                         static_cast<double>(r.counters.walk_steps) / per);
+            if (std::getenv("METHODS_SCALING_EXTRA") != nullptr) {
+                for (const auto& [key, value] : r.counters.extra) {
+                    std::printf("    %s = %llu (%.2f per point)\n", key.c_str(),
+                                static_cast<unsigned long long>(value),
+                                static_cast<double>(value) / per);
+                }
+            }
             std::fflush(stdout);
         }
     }

@@ -8,6 +8,7 @@ packages=(
     libgdal-dev gdal-bin libgeographiclib-dev libvtk9-dev libtbb-dev
     libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev libcgal-dev
     clang libclang-rt-14-dev python3
+    libcairo2-dev fonts-dejavu-core poppler-utils
 )
 
 missing=()

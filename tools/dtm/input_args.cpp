@@ -24,9 +24,10 @@ void add_input_options(CLI::App& app, InputArgs& args)
           "Outer boundary: polygons (inner rings are holes) or closed lines; repeatable");
     files("--holes", args.holes,
           "Holes: polygons or closed lines, or points as hole seeds; repeatable");
-    io::LoadOptions& o = args.load;
-    app.add_option("--crs", o.crs, "CRS of inputs that carry none (EPSG:5514, WKT, PROJ)");
-    app.add_option("--target-crs", o.target_crs,
+    io::ReadOptions& o = args.read;
+    app.add_option("--crs", args.crs.default_crs,
+                   "CRS of inputs that carry none (EPSG:5514, WKT, PROJ)");
+    app.add_option("--target-crs", args.crs.target_crs,
                    "Transform every input into this CRS (default: the first input's CRS; "
                    "geographic inputs go to their UTM zone)");
     app.add_option("--columns", o.columns,
@@ -42,8 +43,9 @@ void add_input_options(CLI::App& app, InputArgs& args)
 
 io::LoadOptions to_load_options(const InputArgs& args)
 {
-    io::LoadOptions options = args.load;
-    options.files.clear();
+    io::LoadOptions options;
+    options.read = args.read;
+    options.crs = args.crs;
     const auto add = [&options](const std::vector<std::string>& paths, io::InputRole role) {
         for (const std::string& p : paths) options.files.push_back({p, role});
     };

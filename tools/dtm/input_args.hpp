@@ -19,13 +19,14 @@ struct InputArgs {
     std::vector<std::string> soft_breaklines;
     std::vector<std::string> boundaries;
     std::vector<std::string> holes;
-    io::LoadOptions load;  ///< everything else the readers take
+    io::ReadOptions read;  ///< what the readers take
+    io::CrsOptions crs;
 };
 
 /// Declares the positional INPUTS and the reader options on @p app.
 void add_input_options(CLI::App& app, InputArgs& args);
 
-/// The LoadOptions for io::load_inputs.
+/// The LoadOptions for io::load_inputs and products::build.
 [[nodiscard]] io::LoadOptions to_load_options(const InputArgs& args);
 
 }  // namespace dtm::cli

@@ -104,8 +104,7 @@ public:
         TriangleIndex count = 0;
         for (TriangleIndex t = 0; t < mesh_.tri.size(); ++t) {
             const auto& v = mesh_[t].v;
-            const bool real =
-                !st_.is_corner(v[0]) && !st_.is_corner(v[1]) && !st_.is_corner(v[2]);
+            const bool real = !st_.is_corner(v[0]) && !st_.is_corner(v[1]) && !st_.is_corner(v[2]);
             renumber[t] = real ? count++ : no_triangle;
         }
         for (TriangleIndex t = 0; t < mesh_.tri.size(); ++t) {

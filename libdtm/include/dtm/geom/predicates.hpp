@@ -84,9 +84,10 @@ inline constexpr double distance_underflow_guard = 0x1p-1000;
     const double det = detleft - detright;
     const double detsum = std::abs(detleft) + std::abs(detright);
     const double bound = detail::orient_bound_a * (detsum + detail::orient_underflow_guard);
-    // NaN/inf from overflow fail the test and go to the exact path.
+    // NaN/inf from overflow fail the test and go to the exact path. A det that passes is not 0
+    // (bound >= 0), so its sign is +1 or -1, which lets `orient2d(...) > 0` compile to det > 0.
     if (std::abs(det) > bound) [[likely]] {
-        return (det > 0.0) - (det < 0.0);
+        return det > 0.0 ? 1 : -1;
     }
     return detail::orient2d_adaptive(ax, ay, bx, by, cx, cy, detsum);
 }
@@ -129,7 +130,7 @@ inline constexpr double distance_underflow_guard = 0x1p-1000;
                              (std::abs(adxbdy) + std::abs(bdxady) + g) * (clift + g);
     const double bound = detail::incircle_bound_a * permanent;
     if (std::abs(det) > bound) [[likely]] {
-        return (det > 0.0) - (det < 0.0);
+        return det > 0.0 ? 1 : -1;  // not 0: see orient2d
     }
     return detail::incircle_adaptive(ax, ay, bx, by, cx, cy, dx, dy, permanent);
 }

@@ -68,7 +68,7 @@ PreparedPoints prepare_points(std::string_view method,
         throw InputError("method " + std::string(method) + ": too many points");
     }
     PreparedPoints out;
-    const std::vector<VertexIndex> first = dtm::detail::first_occurrences(input.points);
+    const auto first = dtm::detail::first_occurrences(input.points);
     out.vertices.reserve(input.points.size());
     for (std::size_t i = 0; i < input.points.size(); ++i) {
         if (first[i] == i) {
@@ -91,29 +91,27 @@ PreparedPoints prepare_points(std::string_view method,
                      " distinct points are collinear: there is no surface to triangulate");
 }
 
-Tin tin_from_triangles(std::vector<Point3> vertices, std::span<const TriangleCorners> triangles) {
-    Tin tin;
-    const std::size_t nv = vertices.size();
-    tin.vertices = std::move(vertices);
-    tin.triangles.resize(triangles.size());
+std::vector<Triangle> link_triangles(std::span<const TriangleCorners> triangles,
+                                     std::size_t vertex_count) {
+    std::vector<Triangle> out(triangles.size());
     // Directed edges bucketed by origin: start[v] .. start[v + 1].
-    std::vector<std::uint32_t> start(nv + 1, 0);
+    std::vector<std::uint32_t> start(vertex_count + 1, 0);
     for (const TriangleCorners& t : triangles) {
         for (const VertexIndex v : t) ++start[v + 1];
     }
-    for (std::size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
+    for (std::size_t v = 0; v < vertex_count; ++v) start[v + 1] += start[v];
     std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
     struct Out {
         VertexIndex to;
-        std::uint32_t edge;  ///< 3 * triangle + position of the opposite corner
+        std::uint32_t triangle;
     };
     std::vector<Out> edges(3 * triangles.size());
     for (std::size_t t = 0; t < triangles.size(); ++t) {
-        tin.triangles[t].v = triangles[t];
+        out[t].v = triangles[t];
         for (int i = 0; i < 3; ++i) {
             const VertexIndex a = triangles[t][static_cast<std::size_t>((i + 1) % 3)];
             const VertexIndex b = triangles[t][static_cast<std::size_t>((i + 2) % 3)];
-            edges[fill[a]++] = {b, static_cast<std::uint32_t>(3 * t + static_cast<std::size_t>(i))};
+            edges[fill[a]++] = {b, static_cast<std::uint32_t>(t)};
         }
     }
     for (std::size_t t = 0; t < triangles.size(); ++t) {
@@ -122,12 +120,19 @@ Tin tin_from_triangles(std::vector<Point3> vertices, std::span<const TriangleCor
             const VertexIndex b = triangles[t][static_cast<std::size_t>((i + 2) % 3)];
             for (std::uint32_t k = start[b]; k < start[b + 1]; ++k) {
                 if (edges[k].to == a) {
-                    tin.triangles[t].n[static_cast<std::size_t>(i)] = edges[k].edge / 3;
+                    out[t].n[static_cast<std::size_t>(i)] = edges[k].triangle;
                     break;
                 }
             }
         }
     }
+    return out;
+}
+
+Tin tin_from_triangles(std::vector<Point3> vertices, std::span<const TriangleCorners> triangles) {
+    Tin tin;
+    tin.triangles = link_triangles(triangles, vertices.size());
+    tin.vertices = std::move(vertices);
     return tin;
 }
 

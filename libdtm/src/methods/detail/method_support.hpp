@@ -70,6 +70,11 @@ private:
 
 using TriangleCorners = std::array<VertexIndex, 3>;
 
+/// Tin triangles of the counter-clockwise @p triangles over @p vertex_count vertices, neighbour
+/// links found by matching each directed edge with its reverse.
+[[nodiscard]] std::vector<Triangle> link_triangles(std::span<const TriangleCorners> triangles,
+                                                   std::size_t vertex_count);
+
 /// A Tin of @p vertices and the counter-clockwise @p triangles, neighbour links found by
 /// matching each directed edge with its reverse (linear: edges bucketed by origin vertex).
 [[nodiscard]] Tin tin_from_triangles(std::vector<Point3> vertices,
