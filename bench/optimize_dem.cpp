@@ -123,8 +123,8 @@ int run_sample(const std::string& dir, double cell) {
                 {dir + "/breaklines.shp", io::InputRole::breaklines},
                 {dir + "/boundary.shp", io::InputRole::boundary},
                 {dir + "/building.shp", io::InputRole::holes}};
-    lo.skip_bad_lines = true;
-    lo.crs = "EPSG:5514";
+    lo.read.skip_bad_lines = true;
+    lo.crs.default_crs = "EPSG:5514";
     const io::LoadedInputs in = io::load_inputs(lo);
     Box2 box;
     for (const Point3& p : in.terrain.points) box.add(p);

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "dtm/io/formats/ply.hpp"
 #include "dtm/io/tin_file.hpp"
 #include "support/terrain_fixtures.hpp"
 #include "support/test_support.hpp"

@@ -16,7 +16,7 @@
 #include "dtm/algo/triangulate.hpp"
 #include "dtm/geom/predicates.hpp"
 #include "support/terrain_fixtures.hpp"
-#include "support/tin_links.hpp"
+#include "dtm/core/tin.hpp"
 
 namespace dtm {
 namespace {
@@ -76,7 +76,7 @@ Tin hosch_tin(int k) {
             std::swap(t.v[1], t.v[2]);
         tin.triangles.push_back(t);
     }
-    test::link_neighbours(tin);
+    link_neighbours(tin);
     return tin;
 }
 
