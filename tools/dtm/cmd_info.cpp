@@ -39,6 +39,7 @@ void print_json(std::ostream& out, const io::LoadedInputs& loaded)
             json.value("crs", s.crs);
         }
         json.value("points", s.points);
+        json.value("triangles", s.triangles);
         json.value("breaklines", s.breaklines);
         json.value("breakline_vertices", s.breakline_vertices);
         json.value("boundaries", s.boundaries);
@@ -83,6 +84,7 @@ void print_table(std::ostream& out, const io::LoadedInputs& loaded)
             << "  format             " << s.format << "\n"
             << "  crs                " << (s.crs.empty() ? "(none)" : s.crs) << "\n"
             << "  points             " << s.points << "\n"
+            << "  triangles          " << s.triangles << "\n"
             << "  breaklines         " << s.breaklines << " (" << s.breakline_vertices
             << " vertices)\n"
             << "  boundaries         " << s.boundaries << "\n"

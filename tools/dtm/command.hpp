@@ -26,5 +26,6 @@ Command contour_command();
 Command build_command();
 Command methods_command();
 Command voronoi_command();
+Command map_command();
 
 }  // namespace dtm::cli

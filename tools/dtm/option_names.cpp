@@ -11,7 +11,7 @@
 namespace dtm::cli {
 namespace {
 
-constexpr std::array<std::pair<std::string_view, std::string_view>, 30> flags{{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 37> flags{{
     // io::LoadOptions: the files of each role (TerrainInput's members)
     {"breaklines", "--breaklines"},
     {"soft_breaklines", "--soft-breaklines"},
@@ -26,6 +26,8 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 30> flags{{
     {"layer", "--layer"},
     {"where", "--where"},
     {"z_field", "--z-field"},
+    {"retriangulate", "--retriangulate"},
+    {"surface", "--surface"},
     {"hpgl.pens", "--hpgl-pens"},
     {"hpgl.height_pens", "--hpgl-height-pens"},
     {"hpgl.marker_radius_mm", "--hpgl-marker-radius"},
@@ -47,6 +49,12 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 30> flags{{
     {"index_every", "--index-every"},
     {"cog", "--cog"},
     {"levels", "--levels"},
+    // io::map::MapOptions, products::BuildOptions::map_scale
+    {"scale", "--scale"},
+    {"paper", "--paper"},
+    {"extent", "--extent"},
+    {"sheets", "--sheets"},
+    {"map_scale", "--map-scale"},
 }};
 
 }  // namespace
