@@ -4,12 +4,14 @@
 //   dtm methods run NAME INPUT -o OUT.ply [--stats] [--param KEY=VALUE]... [--seed S]
 //   dtm methods compare [--methods a,b] [--n 1000,10000] [--dist uniform,gauss] [--repeat R]
 //                       [--sets S] [--seed S] [--threads T] [--cap-seconds C] -o DIR
-// Thin: parse -> methods::registry / MethodFn -> io::write_tin -> print; compare: parse ->
-// lab::run_compare -> lab::write_compare -> print.
+// Thin: parse -> methods::registry / MethodFn -> io::write_tin (or, by the method's output,
+// io::write_polygon_faces / a folder of TINs) -> print; compare: parse -> lab::run_compare ->
+// lab::write_compare -> print.
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -17,6 +19,7 @@
 #include "command.hpp"
 #include "dtm/algo/line_heights.hpp"
 #include "dtm/core/error.hpp"
+#include "dtm/io/faces_file.hpp"
 #include "dtm/io/json_writer.hpp"
 #include "dtm/io/tin_file.hpp"
 #include "dtm/lab/compare.hpp"
@@ -59,6 +62,7 @@ struct RunArgs {
     InputArgs input;
     std::string output;
     std::vector<std::string> params;
+    std::map<std::string, std::string> aliases;  ///< --swap X means --param swap=X
     std::uint64_t seed = 1;
     unsigned threads = 0;
     bool stats = false;
@@ -86,6 +90,9 @@ int run_method(const RunArgs& a) {
     methods::MethodOptions options;
     options.seed = a.seed;
     options.threads = a.threads;
+    for (const auto& [key, value] : a.aliases) {
+        if (!value.empty()) options.params[key] = value;
+    }
     for (const std::string& p : a.params) {
         const auto eq = p.find('=');
         if (eq == std::string::npos || eq == 0) {
@@ -117,9 +124,15 @@ int run_method(const RunArgs& a) {
         method->run(methods::MethodInput{points, segments}, options, progress.sub(0.1, 0.95));
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    io::TinWriteOptions write_options;
-    write_options.crs_wkt = loaded.crs_wkt;
-    io::write_tin(result.tin, a.output, write_options);
+    if (method->output == methods::Output::all_triangulations) {
+        io::write_tin_series(result.all, a.output, loaded.crs_wkt);
+    } else if (method->output == methods::Output::polygon_faces) {
+        io::write_polygon_faces(result.tin.vertices, result.faces, a.output, {loaded.crs_wkt, false});
+    } else {
+        io::TinWriteOptions write_options;
+        write_options.crs_wkt = loaded.crs_wkt;
+        io::write_tin(result.tin, a.output, write_options);
+    }
     progress.report(1.0, "done");
     if (a.stats) {
         std::cout << "{\"method\": " << io::json_string(a.name) << ", \"points\": " << points.size()
@@ -181,10 +194,16 @@ Command methods_command() {
                 CLI::App* one = app.add_subcommand("run", "Run one method on a point input");
                 one->add_option("name", args->name, "Method name (dtm methods list)")->required();
                 add_input_options(*one, args->input);
-                one->add_option("-o,--output", args->output, "Output TIN (format by extension)")
+                one->add_option("-o,--output", args->output,
+                        "Output TIN by extension; polygon faces (pseudo: .ply, .gpkg, .shp); a "
+                        "folder of t001.ply ... (enumerate)")
                     ->required();
                 one->add_option("--param", args->params,
                                 "Method parameter KEY=VALUE (repeatable; see dtm methods list)");
+                for (const char* key : {"swap", "flip", "criterion"}) {
+                    one->add_option(std::string("--") + key, args->aliases[key],
+                                    std::string("Same as --param ") + key + "=VALUE");
+                }
                 one->add_option("--seed", args->seed, "Seed of randomised methods (default 1)");
                 one->add_option("--threads", args->threads, "Threads of parallel methods");
                 one->add_flag("--stats", args->stats,

@@ -8,6 +8,8 @@
 #include <iostream>
 
 #include "command.hpp"
+#include "dtm/algo/criteria.hpp"
+#include "dtm/algo/optimize.hpp"
 #include "contour_flats_args.hpp"
 #include "dtm/algo/triangulate.hpp"
 #include "dtm/algo/validate.hpp"
@@ -40,7 +42,30 @@ double since(std::chrono::steady_clock::time_point t)
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 
-/// --report: every merged duplicate and every height conflict.
+/// The optimisation's figures (criterion, flips, quality before and after) as the member
+/// "optimize" of the open object, when a criterion other than delaunay was applied.
+void optimize_json(io::JsonWriter& json, const OptimizeStats& o)
+{
+    using Layout = io::JsonWriter::Layout;
+    if (o.criterion == Criterion::delaunay) return;
+    json.begin_object("optimize", Layout::inline_);
+    json.value("criterion", criterion_name(o.criterion));
+    json.value("flips", static_cast<std::size_t>(o.flips));
+    json.value("improvable_before", o.improvable_before);
+    json.value("improvable_after", o.improvable_after);
+    json.value("converged", o.converged);
+    for (const auto& [key, q] : {std::pair{"quality_before", &o.before}, {"quality_after", &o.after}}) {
+        json.begin_object(key, Layout::inline_);
+        json.value("worst", q->worst);
+        json.value("mean", q->mean);
+        json.value("sum", q->sum);
+        json.end();
+    }
+    json.value("seconds", o.seconds);
+    json.end();
+}
+
+/// --report: every merged duplicate and every height conflict (and the optimisation).
 void write_report(const std::string& path, const TriangulateResult& r)
 {
     using Layout = io::JsonWriter::Layout;
@@ -72,6 +97,7 @@ void write_report(const std::string& path, const TriangulateResult& r)
         json.end();
     }
     json.end();
+    optimize_json(json, r.stats.optimize);
     json.end();
     io::AtomicOutput out(path);
     {
@@ -119,15 +145,27 @@ std::string stats_json(const products::Surface& surface, std::size_t skipped_lin
     json.value("write", seconds[1]);
     json.value("total", seconds[2]);
     json.end();
+    optimize_json(json, s.optimize);
     json.end();
     return json.str();
 }
 
-void check_tin(const TriangulateResult& result, const TerrainInput& input)
+/// --check: topology, every breakline, and the exact constrained Delaunay property (or, under
+/// --optimize, local optimality of every unconstrained edge under the criterion).
+void check_tin(const TriangulateResult& result, const TerrainInput& input, Criterion optimize)
 {
     const Tin& tin = result.tin;
     std::string problems;
-    for (const CheckReport& r : {verify_topology(tin), verify_constrained_delaunay(tin),
+    CheckReport optimal = optimize == Criterion::delaunay ? verify_constrained_delaunay(tin)
+                                                          : CheckReport{};
+    if (optimize != Criterion::delaunay) {
+        for (const auto& [a, b] : improvable_edges(tin, optimize, 5)) {
+            optimal.problems.push_back("edge " + std::to_string(a) + "-" + std::to_string(b) +
+                                       " is not locally optimal under " +
+                                       std::string(criterion_name(optimize)));
+        }
+    }
+    for (const CheckReport& r : {verify_topology(tin), optimal,
                                  verify_constraints(tin, input, result.input_to_vertex)}) {
         problems += r.text();
     }
@@ -153,7 +191,7 @@ int run_tin(const TinArgs& a)
     if (a.check) {
         kept.points.insert(kept.points.end(), surface.added_points.begin(),
                            surface.added_points.end());
-        check_tin(result, kept);
+        check_tin(result, kept, a.triangulate.optimize);
     }
 
     const auto write_start = std::chrono::steady_clock::now();

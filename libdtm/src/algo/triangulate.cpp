@@ -229,6 +229,11 @@ TriangulateResult run(TerrainInput&& input, const TriangulateOptions& options,
         result.input_to_vertex.resize(merged_count);  // kernel's memory is released
         std::iota(result.input_to_vertex.begin(), result.input_to_vertex.end(), VertexIndex{0});
     }
+    if (options.optimize != Criterion::delaunay) {
+        result.stats.optimize = optimize_tin(
+            result.tin, {.criterion = options.optimize, .threads = options.threads},
+            progress.sub(1.0, 1.0));
+    }
     return result;
 }
 
