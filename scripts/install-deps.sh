@@ -9,6 +9,7 @@ packages=(
     libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev libcgal-dev
     clang libclang-rt-14-dev python3
     libcairo2-dev fonts-dejavu-core poppler-utils
+    strace python3-qgis
 )
 
 missing=()
