@@ -38,6 +38,7 @@ void print_json(std::ostream& out, const io::LoadedInputs& loaded)
         } else {
             json.value("crs", s.crs);
         }
+        if (!s.crs_note.empty()) json.value("crs_note", s.crs_note);
         json.value("points", s.points);
         json.value("breaklines", s.breaklines);
         json.value("breakline_vertices", s.breakline_vertices);
@@ -82,6 +83,7 @@ void print_table(std::ostream& out, const io::LoadedInputs& loaded)
         out << s.path.string() << "\n"
             << "  format             " << s.format << "\n"
             << "  crs                " << (s.crs.empty() ? "(none)" : s.crs) << "\n"
+            << (s.crs_note.empty() ? "" : "  crs identification " + s.crs_note + "\n")
             << "  points             " << s.points << "\n"
             << "  breaklines         " << s.breaklines << " (" << s.breakline_vertices
             << " vertices)\n"

@@ -45,6 +45,9 @@ struct InputSummary {
     std::filesystem::path path;
     std::string format;
     std::string crs;  ///< name or EPSG code as found, empty if none
+    /// How the CRS was identified when the file gave no EPSG code (io::identify_crs), e.g.
+    /// "EPSG:5514 identified from ESRI WKT ... (GDAL match confidence 90 %)"; empty otherwise.
+    std::string crs_note;
     std::size_t points = 0;
     std::size_t breaklines = 0;
     std::size_t breakline_vertices = 0;
