@@ -91,7 +91,7 @@ def kill_runs(work, old_ref, new_ref, new_points, syscall, numbers, extra=()):
         s = state(out, digest(old_ref), digest(new_ref))
         if s == "no-outdir+old-backup":
             # The documented recovery rule, as a reader applies it (io::recover_directory, which
-            # the next run calls first; tests/unit/io/atomic_directory_test.cpp checks that).
+            # the next run calls first; tests/unit/io/atomic_file_test.cpp checks that).
             (out.parent / ("." + out.name + ".old")).rename(out)
             s = "old (recovered)" if state(out, digest(old_ref), digest(new_ref)) == "old" else "RECOVERY FAILED"
         key = s if r.returncode != 0 else "completed:" + s

@@ -7,7 +7,8 @@
 //   1. an EPSG code in the definition is kept;
 //   2. else the best EPSG match is taken when it is unique and scores >= 90 %;
 //   3. else the EPSG match whose PROJ string equals the definition's (same projection, ellipsoid,
-//      parameters and units; only names differ), when exactly one does;
+//      parameters and units; only names differ, a null shift to WGS 84 ignored), when exactly
+//      one does;
 //   4. else the definition is kept as it is (outputs carry it unchanged), and the note says so.
 #include <ogr_spatialref.h>
 
@@ -31,6 +32,11 @@ std::string proj_string(const OGRSpatialReference& srs) {
     std::string out;
     if (srs.exportToProj4(&text) == OGRERR_NONE && text != nullptr) out = text;
     CPLFree(text);
+    // EPSG's ETRS89 realisations export a null shift to WGS 84; the ESRI texts have none.
+    for (const char* null_shift : {" +towgs84=0,0,0,0,0,0,0", " +towgs84=0,0,0"}) {
+        const std::size_t at = out.find(null_shift);
+        if (at != std::string::npos) out.erase(at, std::string(null_shift).size());
+    }
     return out;
 }
 

@@ -17,6 +17,8 @@
 #include <vtkStringArray.h>
 #include <vtkXMLPolyDataWriter.h>
 
+#include <cstring>
+
 #include "dtm/core/error.hpp"
 
 namespace dtm::io {
@@ -101,6 +103,8 @@ void write_vtp(const Tin& tin, const std::filesystem::path& path, const TinWrite
     if (written != 1 || error != 0) {
         const std::string why = error == vtkErrorCode::OutOfDiskSpaceError
                                     ? ": no space left (full disk or file-size limit)"
+                                : error > 0 && error < 1000
+                                    ? std::string(": ") + std::strerror(static_cast<int>(error))
                                 : error != 0 ? ": VTK error " + std::to_string(error)
                                              : std::string();
         throw Error("vtp: cannot write " + path.string() + why);
