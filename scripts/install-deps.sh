@@ -9,6 +9,7 @@ packages=(
     libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev libcgal-dev
     clang libclang-rt-14-dev python3
     libcairo2-dev fonts-dejavu-core poppler-utils
+    libexpat1-dev libxml2-utils python3-lxml python3-ezdxf
     strace python3-qgis
 )
 

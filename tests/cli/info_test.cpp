@@ -98,8 +98,8 @@ TEST(CliInputs, RepeatableRoleOptionsTakeOneFileEachAndLeavePositionalsAlone)
     const auto first = r.out.find("\"path\": \"" + points + "\", \"format\": \"text\", \"crs\": "
                                   "null, \"points\": 3,");
     EXPECT_NE(first, std::string::npos) << r.out;
-    EXPECT_TRUE(contains(r.out, "\"points\": 0, \"breaklines\": 0, \"breakline_vertices\": 0, "
-                                "\"boundaries\": 0, \"holes\": 3,"))
+    EXPECT_TRUE(contains(r.out, "\"points\": 0, \"triangles\": 0, \"breaklines\": 0, "
+                                "\"breakline_vertices\": 0, \"boundaries\": 0, \"holes\": 3,"))
         << r.out;  // the point file given as --holes: 3 seeds
 }
 

@@ -37,6 +37,10 @@ void print_summary(const products::BuildReport& r, const std::string& out_dir)
         r.surface.vertex_count, r.surface.triangle_count, r.surface.constraint_count,
         r.conflicts.size(), r.dem.cols, r.dem.rows, r.dem.cell, r.contour_lines,
         r.contour_interval);
+    if (r.map_scale > 0.0) {
+        std::printf("dtm build: map.pdf at 1:%g, %zu contour labels (%zu positions without room)\n",
+                    r.map_scale, r.map_labels, r.map_label_failures);
+    }
     std::printf("dtm build: products and report.json in %s\n", out_dir.c_str());
 }
 
@@ -60,8 +64,8 @@ int run_build(BuildArgs& args)
 Command build_command()
 {
     return {"build",
-            "The main job: TIN, DEM, hillshade, contours, VTK surface, 2DM mesh, QGIS project "
-            "and report into one folder",
+            "The main job: TIN, DEM, hillshade, contours, contour map sheet (PDF), VTK surface, "
+            "2DM mesh, QGIS project with its print layout, and report into one folder",
             [](CLI::App& app) {
                 auto args = std::make_shared<BuildArgs>();
                 add_input_options(app, args->input);
@@ -77,6 +81,10 @@ Command build_command()
                     ->check(CLI::PositiveNumber);
                 app.add_option("--index-every", args->build.index_every,
                                "Every N-th contour level is an index contour (default 5)");
+                app.add_option("--map-scale", args->build.map_scale,
+                               "Scale 1:N of map.pdf, an A3 sheet (default: the largest usual "
+                               "scale at which the site fits)")
+                    ->check(CLI::PositiveNumber);
                 add_tin_options(app, args->build.triangulate);
                 app.add_flag("-q,--quiet", args->quiet, "No progress bar");
                 return [args]() { return run_build(*args); };

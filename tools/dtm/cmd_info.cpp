@@ -40,6 +40,7 @@ void print_json(std::ostream& out, const io::LoadedInputs& loaded)
         }
         if (!s.crs_note.empty()) json.value("crs_note", s.crs_note);
         json.value("points", s.points);
+        json.value("triangles", s.triangles);
         json.value("breaklines", s.breaklines);
         json.value("breakline_vertices", s.breakline_vertices);
         json.value("boundaries", s.boundaries);
@@ -85,6 +86,7 @@ void print_table(std::ostream& out, const io::LoadedInputs& loaded)
             << "  crs                " << (s.crs.empty() ? "(none)" : s.crs) << "\n"
             << (s.crs_note.empty() ? "" : "  crs identification " + s.crs_note + "\n")
             << "  points             " << s.points << "\n"
+            << "  triangles          " << s.triangles << "\n"
             << "  breaklines         " << s.breaklines << " (" << s.breakline_vertices
             << " vertices)\n"
             << "  boundaries         " << s.boundaries << "\n"

@@ -2,9 +2,13 @@
 // `dtm methods`: the triangulation methods of the source literature, listed and run one by one.
 //   dtm methods list [--json]
 //   dtm methods run NAME INPUT -o OUT.ply [--stats] [--param KEY=VALUE]... [--seed S]
-// Thin: parse -> methods::registry / MethodFn -> io::write_tin -> print.
+//   dtm methods compare [--methods a,b] [--n 1000,10000] [--dist uniform,gauss] [--repeat R]
+//                       [--sets S] [--seed S] [--threads T] [--cap-seconds C] -o DIR
+// Thin: parse -> methods::registry / MethodFn -> io::write_tin -> print; compare: parse ->
+// lab::run_compare -> lab::write_compare -> print.
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -16,6 +20,7 @@
 #include "dtm/io/json_writer.hpp"
 #include "dtm/io/output_check.hpp"
 #include "dtm/io/tin_file.hpp"
+#include "dtm/lab/compare.hpp"
 #include "dtm/methods/registry.hpp"
 #include "input_args.hpp"
 #include "terminal_progress.hpp"
@@ -133,11 +138,41 @@ int run_method(const RunArgs& a) {
     return 0;
 }
 
+struct CompareArgs {
+    lab::CompareOptions options;
+    std::vector<std::string> distributions;
+    std::string output;
+    bool no_historical = false;
+    bool quiet = false;
+};
+
+int run_compare(CompareArgs& a) {
+    for (const std::string& d : a.distributions) {
+        const auto parsed = methods::parse_distribution(d);
+        if (!parsed) {
+            throw UsageError("methods compare: unknown distribution '" + d +
+                             "' (uniform, gauss, cluster, arc, grid, circle, collinear, duplicates)");
+        }
+        a.options.distributions.push_back(*parsed);
+    }
+    a.options.historical = !a.no_historical;
+    const Progress progress = terminal_progress("methods compare", a.quiet);
+    const lab::CompareResult result = lab::run_compare(a.options, progress);
+    lab::write_compare(result, a.output);
+    std::size_t ok = 0, capped = 0, other = 0;
+    for (const lab::Measurement& c : result.cells) {
+        (c.status == lab::Status::ok ? ok : c.status == lab::Status::capped ? capped : other) += 1;
+    }
+    std::printf("%zu cells measured, %zu capped, %zu refused or failed: %s\n", ok, capped, other,
+                (std::filesystem::path(a.output) / "report.md").string().c_str());
+    return 0;
+}
+
 }  // namespace
 
 Command methods_command() {
     return {"methods",
-            "The triangulation methods of the source literature: list them, run one",
+            "The triangulation methods of the source literature: list, run, compare",
             [](CLI::App& app) -> std::function<int()> {
                 app.require_subcommand(1);
                 auto run = std::make_shared<std::function<int()>>();
@@ -161,6 +196,32 @@ Command methods_command() {
                               "Print one JSON object with the counters and seconds");
                 one->add_flag("-q,--quiet", args->quiet, "No progress bar");
                 one->callback([run, args] { *run = [args] { return run_method(*args); }; });
+
+                auto cmp = std::make_shared<CompareArgs>();
+                CLI::App* compare =
+                    app.add_subcommand("compare", "Run methods side by side and write a report");
+                compare->add_option("--methods", cmp->options.methods,
+                                    "Methods to compare (default: all but enumerate)")
+                    ->delimiter(',');
+                compare->add_option("--n", cmp->options.sizes, "Point counts (default 1000,10000,100000)")
+                    ->delimiter(',');
+                compare->add_option("--dist", cmp->distributions,
+                                    "Distributions (default uniform,gauss,cluster,arc)")
+                    ->delimiter(',');
+                compare->add_option("--sets", cmp->options.sets, "Point sets per cell (default 1)");
+                compare->add_option("--repeat", cmp->options.repeat, "Runs per point set (default 1)");
+                compare->add_option("--seed", cmp->options.seed, "Seed of the first point set (default 1)");
+                compare->add_option("--threads", cmp->options.threads,
+                                    "Threads of the parallel methods (default 1)");
+                compare->add_option("--cap-seconds", cmp->options.cap_seconds,
+                                    "Skip a quadratic method where it would take longer (default 10)");
+                compare->add_option("--histogram-n", cmp->options.histogram_size,
+                                    "Angle histograms at the largest N up to this (default 10000)");
+                compare->add_flag("--no-historical", cmp->no_historical,
+                                  "Do not run uniform-grid at the sizes of the thesis' Fig. 36");
+                compare->add_option("-o,--output", cmp->output, "Output folder")->required();
+                compare->add_flag("-q,--quiet", cmp->quiet, "No progress bar");
+                compare->callback([run, cmp] { *run = [cmp] { return run_compare(*cmp); }; });
 
                 return [run] { return (*run)(); };
             }};

@@ -25,5 +25,7 @@ Command grid_command();
 Command contour_command();
 Command build_command();
 Command methods_command();
+Command voronoi_command();
+Command map_command();
 
 }  // namespace dtm::cli

@@ -11,7 +11,7 @@ void add_input_options(CLI::App& app, InputArgs& args)
 {
     app.add_option("inputs", args.inputs,
                    "Survey points: text (x y z, id;Y;X;Z, lat/lon...), OGR vector files (shp, gpkg, "
-                   "geojson, dxf...: points, lines become breaklines), or a dtm .ply TIN")
+                   "geojson, dxf...: points, lines become breaklines), or a TIN (dtm .ply, LandXML .xml)")
         ->check(CLI::ExistingPath);
     const auto files = [&app](const char* name, std::vector<std::string>& into, const char* what) {
         app.add_option(name, into, what)->check(CLI::ExistingPath)->allow_extra_args(false);
@@ -38,6 +38,10 @@ void add_input_options(CLI::App& app, InputArgs& args)
                    "OGR attribute holding the height (points, or one height per line)");
     app.add_flag("--skip-bad-lines", o.skip_bad_lines,
                  "Skip and count malformed text lines instead of failing");
+    app.add_flag("--retriangulate", o.retriangulate,
+                 "Surface inputs (LandXML, DXF 3DFACE): triangulate their points and lines "
+                 "instead of keeping their faces");
+    app.add_option("--surface", o.surface, "LandXML: the surface of this name (default: the first)");
     add_hpgl_options(app, o.hpgl);
 }
 

@@ -11,7 +11,7 @@
 namespace dtm::cli {
 namespace {
 
-constexpr std::array<std::pair<std::string_view, std::string_view>, 35> flags{{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 42> flags{{
     // io::LoadOptions: the files of each role (TerrainInput's members)
     {"breaklines", "--breaklines"},
     {"soft_breaklines", "--soft-breaklines"},
@@ -26,6 +26,8 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 35> flags{{
     {"layer", "--layer"},
     {"where", "--where"},
     {"z_field", "--z-field"},
+    {"retriangulate", "--retriangulate"},
+    {"surface", "--surface"},
     {"hpgl.pens", "--hpgl-pens"},
     {"hpgl.height_pens", "--hpgl-height-pens"},
     {"hpgl.marker_radius_mm", "--hpgl-marker-radius"},
@@ -53,6 +55,12 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 35> flags{{
     {"hillshade", "--hillshade"},
     {"slope", "--slope"},
     {"aspect", "--aspect"},
+    // io::map::MapOptions, products::BuildOptions::map_scale
+    {"scale", "--scale"},
+    {"paper", "--paper"},
+    {"extent", "--extent"},
+    {"sheets", "--sheets"},
+    {"map_scale", "--map-scale"},
 }};
 
 }  // namespace

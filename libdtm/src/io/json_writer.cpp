@@ -81,6 +81,12 @@ void JsonWriter::value(std::string_view key, std::string_view v)
     quote(v);
 }
 
+void JsonWriter::value(std::string_view key, bool v)
+{
+    member(key);
+    out_ += v ? "true" : "false";
+}
+
 void JsonWriter::null(std::string_view key)
 {
     member(key);

@@ -15,6 +15,9 @@
 #include "randomized_dag.hpp"
 #include "topological_dc.hpp"
 #include "uniform_grid.hpp"
+#include "voronoi_dc.hpp"
+#include "voronoi_incremental.hpp"
+#include "voronoi_topological.hpp"
 
 namespace dtm::methods {
 namespace {
@@ -38,6 +41,19 @@ const std::array kMethods{
                "O(n log n) expected (randomized 3-D hull)",
                "lower convex hull of the points lifted to the paraboloid (exact orient3d)",
                false, false, Output::triangulation, "", &run_lifting},
+    MethodInfo{"voronoi-dc", Family::voronoi, "000 §3.4; Shamos-Hoey 1975", "O(n log n)",
+               "Voronoi diagram by divide and conquer: the dividing chain sigma on a DCEL", false,
+               false, Output::voronoi, "", &run_voronoi_dc},
+    MethodInfo{"voronoi-incremental", Family::voronoi, "000 §3.5; Green-Sibson 1978",
+               "O(n) average, O(n^2) worst",
+               "incremental Voronoi diagram with three auxiliary generators, trusting each sign",
+               false, false, Output::voronoi, "faults=P (test: corrupt in-circle signs)",
+               &run_voronoi_incremental},
+    MethodInfo{"voronoi-topological", Family::voronoi, "000 §3.6; Sugihara-Iri 1992",
+               "O(n) average, O(n^2) worst",
+               "topology-oriented incremental Voronoi diagram: valid topology under any signs",
+               false, false, Output::voronoi, "faults=P (test: corrupt in-circle signs)",
+               &run_voronoi_topological},
     MethodInfo{"topological-dc", Family::delaunay, "000 §3.7; Oishi and Sugihara 1993 [OIS93]",
                "O(N log N) average and worst case (000)",
                "topology-oriented divide and conquer: Guibas-Stolfi merge under conditions 1-6",

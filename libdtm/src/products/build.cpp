@@ -4,6 +4,7 @@
 //   io::load_inputs ─> LoadedInputs ─> products::surface ─> Tin ─┬─ write_tin ─> tin.ply tin.2dm surface.vtp
 //   (every reader)      (one CRS)      (as is, or triangulate)   ├─ dem ───────> dem.tif hillshade.tif
 //                                                               ├─ contours ──> contours.gpkg
+//                                                               ├─ map ───────> map.pdf
 //                                                               ├─ project ───> dtm.qgs
 //                                                               └─ report ────> report.json
 //
@@ -34,8 +35,9 @@ namespace fs = std::filesystem;
 constexpr detail::BuildStep steps[] = {
     {"write_tin", 0.60, nullptr, &detail::write_tin_files},
     {"dem", 0.80, nullptr, &detail::write_dem},
-    {"contours", 0.95, nullptr, &detail::write_contours},
-    {"project", 0.95, nullptr, &detail::write_project},
+    {"contours", 0.90, nullptr, &detail::write_contours},
+    {"map", 0.97, nullptr, &detail::write_map_sheet},
+    {"project", 0.97, nullptr, &detail::write_project},
 };
 
 /// Progress of reading and triangulating (the steps follow).
@@ -83,7 +85,8 @@ BuildReport build(const io::LoadOptions& inputs, const fs::path& out_dir,
     clock.lap("triangulate");
 
     BuildReport report;
-    detail::BuildContext context{options, s.result.tin, loaded.crs_wkt, stats, out, report};
+    detail::BuildContext context{options, s.result.tin, loaded.crs_wkt,     stats,
+                                 out,     report,       &loaded.summaries, {}};
     double at = surface_end;
     for (const detail::BuildStep& step : steps) {
         if (step.wanted != nullptr && !step.wanted(options)) continue;

@@ -5,13 +5,16 @@
 /// on) is in build.cpp.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "dtm/algo/surface_stats.hpp"
 #include "dtm/core/progress.hpp"
 #include "dtm/core/tin.hpp"
 #include "dtm/io/atomic_file.hpp"
+#include "dtm/io/formats/qgis_project.hpp"
 #include "dtm/products/build.hpp"
 
 namespace dtm::products::detail {
@@ -24,6 +27,8 @@ struct BuildContext {
     const SurfaceStats& surface;
     io::AtomicDirectory& out;
     BuildReport& report;
+    const std::vector<io::InputSummary>* inputs = nullptr;  ///< what was read (names of sources)
+    std::optional<io::QgisLayout> map_layout;  ///< map.pdf's sheet, for the QGIS print layout
 
     /// @p text as options.wording words it.
     [[nodiscard]] std::string worded(std::string_view text) const
@@ -45,6 +50,8 @@ void write_tin_files(BuildContext& context, const Progress& progress);
 void write_dem(BuildContext& context, const Progress& progress);
 /// contours.gpkg; report.contour_* (contour_step.cpp).
 void write_contours(BuildContext& context, const Progress& progress);
+/// map.pdf, the contour map sheet; report.map_*, map_layout (map_step.cpp).
+void write_map_sheet(BuildContext& context, const Progress& progress);
 /// dtm.qgs with a layer for each product written before it (project_step.cpp).
 void write_project(BuildContext& context, const Progress& progress);
 

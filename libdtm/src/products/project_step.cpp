@@ -29,6 +29,7 @@ void write_project(BuildContext& context, const Progress&)
         context.report.contour_interval *
         static_cast<double>(std::max<std::size_t>(context.report.index_every, 1));
     project.mesh = layer("tin.2dm");
+    project.layout = context.map_layout;
     io::write_qgis_project(project, context.out.add("dtm.qgs"));
 }
 

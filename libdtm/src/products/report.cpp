@@ -147,6 +147,14 @@ void write_products(io::JsonWriter& json, const BuildReport& report) {
     json.value("levels", report.contour_levels);
     json.value("lines", report.contour_lines);
     json.end();
+    if (report.map_scale > 0.0) {
+        json.begin_object("map");
+        json.value("scale", report.map_scale);
+        json.value("labels_placed", report.map_labels);
+        json.value("label_positions_without_room", report.map_label_failures);
+        json.value("spot_heights", report.map_spot_heights);
+        json.end();
+    }
     json.begin_object("timings_seconds");
     double total = 0.0;
     for (const StageTime& t : report.timings) {

@@ -48,6 +48,17 @@ TEST(JsonWriter, InlineContainersStayOnOneLineInsideBlocks)
               "  {\"n\": 1, \"xy\": [1.5, -2], \"crs\": null}\n]}\n");
 }
 
+TEST(JsonWriter, BooleansAreJsonLiterals)
+{
+    JsonWriter json;
+    json.begin_array({}, Layout::inline_);
+    json.value({}, true);
+    json.value({}, false);
+    json.value({}, "true");
+    json.end();
+    EXPECT_EQ(json.str(), "[true, false, \"true\"]\n");
+}
+
 TEST(JsonWriter, StringsAreEscapedAndNumbersReadBackExactly)
 {
     EXPECT_EQ(dtm::io::json_string("a\"b\\c\nd\te\rf\x01"), "\"a\\\"b\\\\c\\nd\\te\\rf\\u0001\"");

@@ -78,7 +78,7 @@ TEST(ReaderTable, UnknownExtensionIsAnInputErrorListingTheKnownOnesOnce)
         FAIL() << "no exception";
     } catch (const dtm::InputError& e) {
         const std::string what = e.what();
-        EXPECT_NE(what.find("(ply, csv, txt, xyz, pts, asc, hpgl,"), std::string::npos) << what;
+        EXPECT_NE(what.find("(ply, csv, txt, xyz, pts, asc, xml, hpgl,"), std::string::npos) << what;
         EXPECT_EQ(what.find("csv"), what.rfind("csv")) << what;
         EXPECT_NE(what.find("found '.foo'"), std::string::npos) << what;
     }

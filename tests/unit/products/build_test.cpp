@@ -53,7 +53,7 @@ TEST(Build, WritesEveryProductAndReportsThemInOrder)
     const dtm::products::BuildReport report = dtm::products::build(survey(dir), dir / "out");
     const std::vector<std::string> expected{"tin.ply",       "tin.2dm",       "surface.vtp",
                                             "dem.tif",       "hillshade.tif", "contours.gpkg",
-                                            "dtm.qgs",       "report.json"};
+                                            "map.pdf",       "dtm.qgs",       "report.json"};
     EXPECT_EQ(report.outputs, expected);
     std::vector<std::string> sorted = expected;
     std::sort(sorted.begin(), sorted.end());
@@ -62,7 +62,7 @@ TEST(Build, WritesEveryProductAndReportsThemInOrder)
     std::vector<std::string> stages;
     for (const auto& t : report.timings) stages.push_back(t.stage);
     EXPECT_EQ(stages, (std::vector<std::string>{"read", "triangulate", "write_tin", "dem",
-                                                "contours", "project"}));
+                                                "contours", "map", "project"}));
     EXPECT_EQ(report.accounting.survey_points.total, 900u);
     EXPECT_EQ(report.surface.vertex_count, 900u);
     EXPECT_GT(report.contour_lines, 0u);

@@ -38,6 +38,9 @@ struct ReadOptions {
     std::string where;    ///< OGR attribute filter (SQL WHERE clause)
     std::string z_field;  ///< OGR attribute holding the height (points, contours)
     HpglOptions hpgl;     ///< the HP-GL plan reader's
+    /// Surface files (LandXML, DXF 3DFACE): their points and breaklines instead of their TIN.
+    bool retriangulate = false;
+    std::string surface;  ///< LandXML: the surface of this name; empty = the first
 };
 
 /// What one input file held (the fields of `dtm info`).
@@ -49,6 +52,7 @@ struct InputSummary {
     /// "EPSG:5514 identified from ESRI WKT ... (GDAL match confidence 90 %)"; empty otherwise.
     std::string crs_note;
     std::size_t points = 0;
+    std::size_t triangles = 0;  ///< of a TIN input (kept as given), else 0
     std::size_t breaklines = 0;
     std::size_t breakline_vertices = 0;
     std::size_t boundaries = 0;

@@ -22,6 +22,7 @@ struct BuildOptions {
     double cell = 0.0;            ///< DEM cell size in CRS units; 0: default_cell() (rules.hpp)
     double interval = 0.0;        ///< contour interval; 0: default_interval()
     std::size_t index_every = 5;  ///< every n-th contour level is an index contour (0: none)
+    double map_scale = 0.0;       ///< 1 : map_scale of map.pdf; 0: default_map_scale() (map.hpp)
     /// How texts written into the products (the report's warnings and rules) name options.
     /// Empty: as the library does, `field`; tools/dtm passes its flag spelling.
     std::function<std::string(std::string_view)> wording;
@@ -30,7 +31,7 @@ struct BuildOptions {
 /// Reads @p inputs (io::load_inputs), takes their surface (products::surface) and runs the
 /// product steps, each writing its files into one io::AtomicDirectory: tin.ply, tin.2dm,
 /// surface.vtp (step "write_tin"), dem.tif, hillshade.tif ("dem"), contours.gpkg ("contours"),
-/// dtm.qgs ("project"), then report.json; only when all are complete do they move into
+/// map.pdf ("map"), dtm.qgs with a print layout of the map sheet ("project"), then report.json; only when all are complete do they move into
 /// @p out_dir (created if needed; other files there are left alone). The steps are listed in
 /// src/products/build.cpp: a new product is one more step there, with its options here and its
 /// section in BuildReport.

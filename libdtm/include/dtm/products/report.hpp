@@ -40,6 +40,11 @@ struct BuildReport {
     std::string interval_rule;
     std::size_t contour_levels = 0;
     std::size_t contour_lines = 0;
+    // the map sheet (step "map": map.pdf)
+    double map_scale = 0.0;  ///< 1 : map_scale of map.pdf (0: no map)
+    std::size_t map_labels = 0;
+    std::size_t map_label_failures = 0;
+    std::size_t map_spot_heights = 0;
     // the run
     std::vector<StageTime> timings;
     std::vector<std::string> outputs;  ///< file names written into the output folder

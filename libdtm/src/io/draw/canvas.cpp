@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The drawing page on cairo (https://www.cairographics.org/manual/): a PDF, SVG or image surface
 // scaled so that one user unit is a millimetre. Text is drawn with cairo's own text API, so a PDF
-// keeps it as text (pdftotext finds it); a halo is the glyph outline stroked in the halo colour
-// underneath. The surface writes into an AtomicOutput's temporary, renamed on finish().
+// keeps it as text (pdftotext finds it; rotated text as one ActualText span per string, so it
+// is read as a word); a halo is the glyph outline stroked in the halo colour underneath. The surface writes into an AtomicOutput's temporary, renamed on finish().
 #include "dtm/io/draw/canvas.hpp"
 
 #include <cairo-pdf.h>
@@ -13,6 +13,7 @@
 #include <cctype>
 #include <cmath>
 #include <numbers>
+#include <memory>
 #include <optional>
 
 #include "dtm/core/error.hpp"
@@ -52,6 +53,13 @@ void set_font(cairo_t* cr, const TextStyle& style) {
                            style.italic ? CAIRO_FONT_SLANT_ITALIC : CAIRO_FONT_SLANT_NORMAL,
                            style.bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
     cairo_set_font_size(cr, style.size_pt / points_per_mm);
+    // Unhinted metrics everywhere: text measured for layout (on a tiny image surface) must have
+    // the advances the PDF, SVG and PNG pages draw, not widths rounded to whole device units.
+    static thread_local std::unique_ptr<cairo_font_options_t, decltype(&cairo_font_options_destroy)>
+        options(cairo_font_options_create(), &cairo_font_options_destroy);
+    cairo_font_options_set_hint_metrics(options.get(), CAIRO_HINT_METRICS_OFF);
+    cairo_font_options_set_hint_style(options.get(), CAIRO_HINT_STYLE_NONE);
+    cairo_set_font_options(cr, options.get());
 }
 
 TextSize measure_in(cairo_t* cr, std::string_view text, const TextStyle& style) {
@@ -62,6 +70,35 @@ TextSize measure_in(cairo_t* cr, std::string_view text, const TextStyle& style) 
     cairo_font_extents_t fe;
     cairo_font_extents(cr, &fe);
     return {te.x_advance, fe.ascent, fe.descent};
+}
+
+/// True for angles that are whole multiples of 90 degrees: text extractors read those runs.
+bool axis_aligned(double angle_deg) {
+    const double r = std::fmod(std::abs(angle_deg), 90.0);
+    return r < 1e-9 || 90.0 - r < 1e-9;
+}
+
+/// Shows @p text as a single text cluster: cairo's PDF surface then wraps the glyphs in a
+/// marked-content span with /ActualText (ISO 32000-1, 14.9.4), so pdftotext and viewers read
+/// a rotated label as one word instead of one character per glyph.
+void show_as_one_cluster(cairo_t* cr, const std::string& text, double x, double y) {
+    cairo_glyph_t* glyphs = nullptr;
+    int glyph_count = 0;
+    cairo_text_cluster_t* clusters = nullptr;
+    int cluster_count = 0;
+    cairo_text_cluster_flags_t flags{};
+    const int bytes = static_cast<int>(text.size());
+    const cairo_status_t status = cairo_scaled_font_text_to_glyphs(
+        cairo_get_scaled_font(cr), x, y, text.c_str(), bytes, &glyphs, &glyph_count, &clusters,
+        &cluster_count, &flags);
+    if (status != CAIRO_STATUS_SUCCESS) {
+        cairo_show_text(cr, text.c_str());
+        return;
+    }
+    const cairo_text_cluster_t one{bytes, glyph_count};
+    cairo_show_text_glyphs(cr, text.c_str(), bytes, glyphs, glyph_count, &one, 1, flags);
+    cairo_glyph_free(glyphs);
+    cairo_text_cluster_free(clusters);
 }
 
 }  // namespace
@@ -237,7 +274,11 @@ void Canvas::text(Point2 at, std::string_view text, const TextStyle& style, doub
     }
     cairo_move_to(cr, dx, dy);
     set_source(cr, style.color);
-    cairo_show_text(cr, s.c_str());
+    if (axis_aligned(angle_deg)) {
+        cairo_show_text(cr, s.c_str());
+    } else {
+        show_as_one_cluster(cr, s, dx, dy);
+    }
     cairo_new_path(cr);
     cairo_restore(cr);
 }
@@ -285,6 +326,25 @@ void Canvas::push_clip(Point2 top_left, double width, double height) {
     cairo_new_path(impl_->cr);
     cairo_rectangle(impl_->cr, top_left.x, top_left.y, width, height);
     cairo_clip(impl_->cr);
+}
+
+void Canvas::push_clip_excluding(std::span<const std::vector<Point2>> polygons) {
+    cairo_t* cr = impl_->cr;
+    cairo_save(cr);
+    cairo_new_path(cr);
+    cairo_rectangle(cr, 0.0, 0.0, impl_->width, impl_->height);
+    for (const std::vector<Point2>& ring : polygons) {
+        for (std::size_t i = 0; i < ring.size(); ++i) {
+            if (i == 0) {
+                cairo_move_to(cr, ring[i].x, ring[i].y);
+            } else {
+                cairo_line_to(cr, ring[i].x, ring[i].y);
+            }
+        }
+        cairo_close_path(cr);
+    }
+    cairo_set_fill_rule(cr, CAIRO_FILL_RULE_EVEN_ODD);
+    cairo_clip(cr);
 }
 
 void Canvas::pop_clip() { cairo_restore(impl_->cr); }

@@ -76,6 +76,9 @@ void write_layer_head(XmlWriter& xml,
                       std::string_view name,
                       std::string_view provider);
 
+/// The `<Layouts>` element with the project's print layout (qgis_project_layout.cpp).
+void write_layouts(XmlWriter& xml, const QgisProject& project, const CrsInfo& crs);
+
 void write_dem_layer(XmlWriter& xml, const QgisProject& project, const CrsInfo& crs);
 void write_hillshade_layer(XmlWriter& xml, const QgisProject& project, const CrsInfo& crs);
 void write_contours_layer(XmlWriter& xml, const QgisProject& project, const CrsInfo& crs);
