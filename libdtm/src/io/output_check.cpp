@@ -37,6 +37,8 @@ std::vector<std::string> known_extensions(OutputKind kind) {
             return grid_extensions();
         case OutputKind::contours:
             return contour_extensions();
+        case OutputKind::drawing:
+            return {"pdf", "svg", "png"};
         default:
             return {};
     }
@@ -48,6 +50,8 @@ const char* kind_name(OutputKind kind) {
             return "TIN";
         case OutputKind::raster:
             return "raster";
+        case OutputKind::drawing:
+            return "drawing";
         case OutputKind::contours:
             return "contour";
         default:

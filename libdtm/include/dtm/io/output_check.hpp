@@ -14,6 +14,7 @@ enum class OutputKind {
     tin,       ///< write_tin (tin_extensions)
     raster,    ///< GridWriter, write_dem_derivative (grid_extensions: GDAL raster drivers)
     contours,  ///< ContourWriter (contour_extensions)
+    drawing,   ///< draw::Canvas: .pdf, .svg, .png
     any_file,  ///< any extension (a JSON report)
     folder,    ///< an AtomicDirectory target, created if needed
 };
