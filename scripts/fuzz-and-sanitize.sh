@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Hardening run: (a) builds the libFuzzer targets with clang (-DDTM_FUZZ=ON: fuzzer coverage +
+# Hardening run: (a) builds the libFuzzer targets (csv, hpgl, ply, mesh_2dm) with clang (-DDTM_FUZZ=ON: fuzzer coverage +
 # ASan + UBSan) and runs each for a bounded time from seeds in tests/data (and the shared real
 # data when present); (b) builds the test suite with -DDTM_SANITIZE=ON in its own build directory
 # and runs ctest. Exit status is non-zero if a fuzzer finds a crash or a test fails.
@@ -43,6 +43,10 @@ run_fuzzers() {
                     [ -d "$shared/$d" ] && find "$shared/$d" -type f -size -200k \
                         ! -name SOURCE.txt -exec cp -f {} "$corpus"/ \;
                 done ;;
+            ply)
+                cp -f "$repo"/tests/data/tin/*.ply "$corpus"/ 2>/dev/null || true ;;
+            mesh_2dm)
+                cp -f "$repo"/tests/data/tin/*.2dm "$corpus"/ 2>/dev/null || true ;;
         esac
         echo "== fuzzing $name for ${fuzz_seconds}s ($(ls "$corpus" | wc -l) seeds)"
         if ! "$fuzzer" "$corpus" -max_total_time="$fuzz_seconds" -max_len=65536 -timeout=20 \

@@ -10,7 +10,7 @@ packages=(
     clang libclang-rt-14-dev python3
     libcairo2-dev fonts-dejavu-core poppler-utils
     libexpat1-dev libxml2-utils python3-lxml python3-ezdxf
-    python3-scipy
+    python3-scipy strace python3-qgis clang-format
 )
 
 missing=()

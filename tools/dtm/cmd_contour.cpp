@@ -14,6 +14,7 @@
 #include "dtm/core/error.hpp"
 #include "dtm/io/contour_writer.hpp"
 #include "dtm/io/inputs.hpp"
+#include "dtm/io/output_check.hpp"
 #include "dtm/products/surface.hpp"
 #include "input_args.hpp"
 #include "interpolation_args.hpp"
@@ -36,6 +37,7 @@ int run_contour(ContourArgs args) {
     if (args.contour.fixed_levels.empty() && !(args.contour.interval > 0.0)) {
         throw UsageError("contour: give --interval or --levels");
     }
+    io::check_output(args.output, io::OutputKind::contours, "output");
     const Progress progress = terminal_progress("contour", args.quiet);
     io::LoadedInputs inputs = io::load_inputs(to_load_options(args.input), progress.sub(0.0, 0.2));
     const products::Surface surface = products::surface(

@@ -15,6 +15,8 @@
 #include "dtm/core/error.hpp"
 #include "dtm/io/grid_writer.hpp"
 #include "dtm/io/inputs.hpp"
+#include "dtm/io/extension.hpp"
+#include "dtm/io/output_check.hpp"
 #include "dtm/products/surface.hpp"
 #include "input_args.hpp"
 #include "interpolation_args.hpp"
@@ -80,7 +82,23 @@ private:
     float nodata_;
 };
 
+/// Every output and option combination, before any input is read (fail fast).
+void check_grid_args(const GridArgs& args) {
+    io::check_output(args.output, io::OutputKind::raster, "output");
+    const std::string extension = io::lower_extension(args.output);
+    if (args.cog && extension != "tif" && extension != "tiff") {
+        throw OptionError("cog", "grid: `cog` needs a .tif target, not " + args.output);
+    }
+    const std::pair<const std::string*, const char*> derived[] = {
+        {&args.hillshade, "hillshade"}, {&args.slope, "slope"}, {&args.aspect, "aspect"}};
+    for (const auto& [file, field] : derived) {
+        if (!file->empty()) io::check_output(*file, io::OutputKind::raster, field);
+    }
+    if (!args.extent.empty()) (void)parse_extent(args.extent);
+}
+
 int run_grid(const GridArgs& args) {
+    check_grid_args(args);
     const Progress progress = terminal_progress("grid", args.quiet);
     io::LoadedInputs inputs = io::load_inputs(to_load_options(args.input), progress.sub(0.0, 0.2));
     products::Surface surface = products::surface(

@@ -38,6 +38,7 @@ void print_json(std::ostream& out, const io::LoadedInputs& loaded)
         } else {
             json.value("crs", s.crs);
         }
+        if (!s.crs_note.empty()) json.value("crs_note", s.crs_note);
         json.value("points", s.points);
         json.value("triangles", s.triangles);
         json.value("breaklines", s.breaklines);
@@ -83,6 +84,7 @@ void print_table(std::ostream& out, const io::LoadedInputs& loaded)
         out << s.path.string() << "\n"
             << "  format             " << s.format << "\n"
             << "  crs                " << (s.crs.empty() ? "(none)" : s.crs) << "\n"
+            << (s.crs_note.empty() ? "" : "  crs identification " + s.crs_note + "\n")
             << "  points             " << s.points << "\n"
             << "  triangles          " << s.triangles << "\n"
             << "  breaklines         " << s.breaklines << " (" << s.breakline_vertices

@@ -18,6 +18,7 @@
 #include "dtm/core/error.hpp"
 #include "dtm/io/atomic_file.hpp"
 #include "dtm/io/map/map.hpp"
+#include "dtm/io/output_check.hpp"
 #include "dtm/products/map.hpp"
 #include "input_args.hpp"
 #include "terminal_progress.hpp"
@@ -104,6 +105,8 @@ int run_map(MapArgs args) {
         args.map.extent = Box2{args.extent[0], args.extent[1], args.extent[2], args.extent[3]};
     }
     parse_spots(args.spots, args.map);
+    io::check_output(args.output, io::OutputKind::drawing, "output");
+    if (!args.report.empty()) io::check_output(args.report, io::OutputKind::any_file, "report");
     const Progress progress = terminal_progress("map", args.quiet);
     const io::map::MapReport report =
         products::map(to_load_options(args.input), args.output, {args.tin, args.map}, progress);

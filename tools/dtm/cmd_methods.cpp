@@ -21,6 +21,7 @@
 #include "dtm/core/error.hpp"
 #include "dtm/io/faces_file.hpp"
 #include "dtm/io/json_writer.hpp"
+#include "dtm/io/output_check.hpp"
 #include "dtm/io/tin_file.hpp"
 #include "dtm/lab/compare.hpp"
 #include "dtm/methods/registry.hpp"
@@ -99,6 +100,10 @@ int run_method(const RunArgs& a) {
             throw UsageError("methods run: --param expects KEY=VALUE, got '" + p + "'");
         }
         options.params[p.substr(0, eq)] = p.substr(eq + 1);
+    }
+    io::check_output(a.output, io::OutputKind::tin, "output");
+    if (!a.input.breaklines.empty() && !method->takes_constraints) {
+        throw UsageError("methods run: method '" + a.name + "' takes no breaklines");
     }
     const Progress progress = terminal_progress("methods", a.quiet || a.stats);
     io::LoadedInputs loaded = io::load_inputs(to_load_options(a.input), progress.sub(0.0, 0.1));

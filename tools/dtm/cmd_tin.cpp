@@ -16,6 +16,7 @@
 #include "dtm/core/error.hpp"
 #include "dtm/io/atomic_file.hpp"
 #include "dtm/io/json_writer.hpp"
+#include "dtm/io/output_check.hpp"
 #include "dtm/io/tin_file.hpp"
 #include "dtm/products/surface.hpp"
 #include "input_args.hpp"
@@ -174,6 +175,8 @@ void check_tin(const TriangulateResult& result, const TerrainInput& input, Crite
 
 int run_tin(const TinArgs& a)
 {
+    io::check_output(a.output, io::OutputKind::tin, "output");
+    if (!a.report.empty()) io::check_output(a.report, io::OutputKind::any_file, "report");
     const auto start = std::chrono::steady_clock::now();
     const Progress progress = terminal_progress(a.quiet || a.stats);
     io::LoadedInputs loaded = io::load_inputs(to_load_options(a.input), progress.sub(0, 0.2));

@@ -8,6 +8,7 @@
 
 #include "command.hpp"
 #include "dtm/io/inputs.hpp"
+#include "dtm/io/output_check.hpp"
 #include "dtm/products/voronoi.hpp"
 #include "input_args.hpp"
 #include "terminal_progress.hpp"
@@ -23,6 +24,7 @@ struct VoronoiArgs {
 };
 
 int run_voronoi(const VoronoiArgs& args) {
+    io::check_output(args.output, io::OutputKind::any_file, "output");
     const Progress progress = terminal_progress("voronoi", args.quiet);
     const io::LoadedInputs inputs =
         io::load_inputs(to_load_options(args.input), progress.sub(0.0, 0.2));

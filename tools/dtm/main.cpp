@@ -7,6 +7,7 @@
 #include <malloc.h>
 #endif
 
+#include <csignal>
 #include <exception>
 #include <iostream>
 #include <vector>
@@ -23,6 +24,9 @@ int main(int argc, char** argv)
     // heap and the resident memory would add up across phases).
     mallopt(M_MMAP_THRESHOLD, 1 << 20);
 #endif
+    // Past a file-size limit (ulimit -f) write(2) fails with EFBIG and the writer reports it, as
+    // for a full disk, instead of SIGXFSZ killing the process with a core dump.
+    std::signal(SIGXFSZ, SIG_IGN);
     using namespace dtm::cli;
     CLI::App app{"dtm: survey points and breaklines to a constrained Delaunay TIN, DEMs, contours "
                  "and 3-D surfaces"};

@@ -11,7 +11,7 @@
 namespace dtm::cli {
 namespace {
 
-constexpr std::array<std::pair<std::string_view, std::string_view>, 38> flags{{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 43> flags{{
     // io::LoadOptions: the files of each role (TerrainInput's members)
     {"breaklines", "--breaklines"},
     {"soft_breaklines", "--soft-breaklines"},
@@ -49,6 +49,12 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 38> flags{{
     {"index_every", "--index-every"},
     {"cog", "--cog"},
     {"levels", "--levels"},
+    // io::check_output: the outputs of tin, grid, contour and methods
+    {"output", "-o"},
+    {"report", "--report"},
+    {"hillshade", "--hillshade"},
+    {"slope", "--slope"},
+    {"aspect", "--aspect"},
     // io::map::MapOptions, products::BuildOptions::map_scale
     {"scale", "--scale"},
     {"paper", "--paper"},

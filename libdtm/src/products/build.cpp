@@ -22,6 +22,7 @@
 #include "dtm/algo/surface_stats.hpp"
 #include "dtm/core/error.hpp"
 #include "dtm/io/atomic_file.hpp"
+#include "dtm/io/output_check.hpp"
 #include "dtm/products/surface.hpp"
 
 namespace dtm::products {
@@ -71,11 +72,7 @@ BuildReport build(const io::LoadOptions& inputs, const fs::path& out_dir,
                   const BuildOptions& options, const Progress& progress)
 {
     const fs::path target = folder(out_dir);
-    std::error_code ec;
-    if (fs::exists(target, ec) && !fs::is_directory(target, ec)) {
-        throw OptionError("out_dir",
-                          "build: `out_dir` " + target.string() + " is a file, not a folder");
-    }
+    io::check_output(target, io::OutputKind::folder, "out_dir");  // before any input is read
     Stopwatch clock;
     io::AtomicDirectory out(target);
     io::LoadedInputs loaded = io::load_inputs(inputs, progress.sub(0.0, read_end));

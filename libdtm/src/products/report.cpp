@@ -25,6 +25,7 @@ void write_inputs(io::JsonWriter& json, const BuildReport& report) {
         json.value("path", in.path.generic_string());
         json.value("format", in.format);
         json.value("crs", in.crs);
+        if (!in.crs_note.empty()) json.value("crs_note", in.crs_note);
         json.value("points", in.points);
         json.value("breaklines", in.breaklines);
         json.value("breakline_vertices", in.breakline_vertices);

@@ -48,6 +48,9 @@ struct InputSummary {
     std::filesystem::path path;
     std::string format;
     std::string crs;  ///< name or EPSG code as found, empty if none
+    /// How the CRS was identified when the file gave no EPSG code (io::identify_crs), e.g.
+    /// "EPSG:5514 identified from ESRI WKT ... (GDAL match confidence 90 %)"; empty otherwise.
+    std::string crs_note;
     std::size_t points = 0;
     std::size_t triangles = 0;  ///< of a TIN input (kept as given), else 0
     std::size_t breaklines = 0;

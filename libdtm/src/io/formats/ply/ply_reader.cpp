@@ -27,6 +27,7 @@
 
 #include "dtm/core/error.hpp"
 #include "dtm/io/formats/ply.hpp"
+#include "io/formats/tin_checks.hpp"
 
 namespace dtm::io {
 namespace {
@@ -453,6 +454,7 @@ LoadedTin read_tin_ply(const fs::path& path) {
     }
     try {
         link_neighbours(reader.tin);
+        detail::check_tin_from_file(reader.tin);
     } catch (const InputError& e) {
         throw InputError(path, 0, 0, e.what());
     }
