@@ -55,9 +55,10 @@ Surface surface(io::LoadedInputs& inputs, const SurfaceOptions& options, const P
         s.survey_points = n;
         s.result.input_to_vertex.resize(n);
         std::iota(s.result.input_to_vertex.begin(), s.result.input_to_vertex.end(), VertexIndex{0});
-        if (options.optimize != Criterion::delaunay) {
-            s.result.stats.optimize = optimize_tin(
-                s.result.tin, {.criterion = options.optimize, .threads = options.threads}, progress);
+        const TriangulateOptions& t = options.triangulate;
+        if (t.optimize != Criterion::delaunay) {
+            s.result.stats.optimize =
+                optimize_tin(s.result.tin, {.criterion = t.optimize, .threads = t.threads}, progress);
         }
         return s;
     }

@@ -57,7 +57,7 @@ struct Surface {
 };
 
 /// The surface of @p inputs: inputs.tin if a reader returned one (it is moved out; optimised
-/// under options.optimize when that is not delaunay, as triangulate() does), else the
+/// under options.triangulate.optimize when that is not delaunay, as triangulate() does), else the
 /// triangulation of inputs.terrain with @p options (the terrain is consumed: its memory goes as
 /// soon as the vertices are merged). When boundary or hole vertices took the height of the
 /// surface, the summaries of the inputs with rings say so.

@@ -81,6 +81,18 @@ void georeference_pdf(const std::filesystem::path& path,
                         last_error());
         }
     }
+    // GDAL does not report a short write of the update (a full disk): read every page back.
+    for (std::size_t i = 0; i < pages.size(); ++i) {
+        const std::string name = "PDF:" + std::to_string(i + 1) + ":" + path.string();
+        std::unique_ptr<GDALDataset> ds(
+            GDALDataset::Open(name.c_str(), GDAL_OF_RASTER, nullptr, open_options, nullptr));
+        double gt[6] = {};
+        if (!ds || ds->GetGeoTransform(gt) != CE_None ||
+            ds->GetMetadataItem("NEATLINE") == nullptr) {
+            throw Error("map: cannot write " + path.string() + ": the georeferencing of page " +
+                        std::to_string(i + 1) + " did not reach the file (disk full?)");
+        }
+    }
 }
 
 }  // namespace dtm::io::map
