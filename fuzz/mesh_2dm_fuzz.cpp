@@ -9,8 +9,7 @@
 #include "dtm/io/formats/mesh_2dm.hpp"
 #include "tin_fuzz_support.hpp"
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
-{
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const auto path = dtm::fuzz::bytes_to_file(data, size, ".2dm");
     try {
         dtm::fuzz::check_tin(dtm::io::read_2dm(path));

@@ -9,8 +9,7 @@
 #include "dtm/io/formats/ply.hpp"
 #include "tin_fuzz_support.hpp"
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
-{
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const auto path = dtm::fuzz::bytes_to_file(data, size, ".ply");
     try {
         const dtm::io::LoadedTin loaded = dtm::io::read_tin_ply(path);

@@ -17,9 +17,9 @@
 namespace dtm::fuzz {
 
 /// Writes @p data to "<tmp>/dtm-fuzz-<pid><extension>" and returns the path.
-inline std::filesystem::path bytes_to_file(const std::uint8_t* data, std::size_t size,
-                                           const char* extension)
-{
+inline std::filesystem::path bytes_to_file(const std::uint8_t* data,
+                                           std::size_t size,
+                                           const char* extension) {
     static const std::filesystem::path path =
         std::filesystem::temp_directory_path() /
         ("dtm-fuzz-" + std::to_string(::getpid()) + extension);
@@ -31,8 +31,7 @@ inline std::filesystem::path bytes_to_file(const std::uint8_t* data, std::size_t
 }
 
 /// Traps unless the TIN is one a reader may return.
-inline void check_tin(const Tin& tin)
-{
+inline void check_tin(const Tin& tin) {
     const std::size_t n = tin.vertices.size();
     for (const Triangle& t : tin.triangles) {
         for (const VertexIndex v : t.v) {

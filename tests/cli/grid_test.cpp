@@ -247,8 +247,8 @@ TEST(CliGrid, InterpolationPicksTheSurfaceAndCubicFollowsACurvedOneCloser) {
         double sum = 0.0;
         for (int row = 0; row < 40; ++row) {
             for (int col = 0; col < 40; ++col) {
-                const double e = v[static_cast<std::size_t>(row * 40 + col)] -
-                                 bowl(10.5 + col, 49.5 - row);
+                const double e =
+                    v[static_cast<std::size_t>(row * 40 + col)] - bowl(10.5 + col, 49.5 - row);
                 sum += e * e;
             }
         }
@@ -260,9 +260,9 @@ TEST(CliGrid, InterpolationPicksTheSurfaceAndCubicFollowsACurvedOneCloser) {
                                            "--interpolation", "cubic", "-q"});
     EXPECT_EQ(lines.exit_code, 0) << lines.err;
     EXPECT_TRUE(std::filesystem::exists(dir / "c.geojson"));
-    const auto bad = dtm::test::run_dtm({"grid", (dir / "bowl.csv").string(), "-o",
-                                         (dir / "x.tif").string(), "--cell", "1",
-                                         "--interpolation", "spline"});
+    const auto bad =
+        dtm::test::run_dtm({"grid", (dir / "bowl.csv").string(), "-o", (dir / "x.tif").string(),
+                            "--cell", "1", "--interpolation", "spline"});
     EXPECT_EQ(bad.exit_code, 2);
     EXPECT_NE(bad.err.find("--interpolation"), std::string::npos) << bad.err;
     EXPECT_FALSE(std::filesystem::exists(dir / "x.tif"));

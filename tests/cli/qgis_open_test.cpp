@@ -35,8 +35,8 @@ TEST(QgisOpen, BuildProjectOpensInQgisWithEveryLayerValidInSjtsk) {
          "-q", "-o", out.string()});
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const std::string command = "QT_QPA_PLATFORM=offscreen /usr/bin/python3 '" + check.string() +
-                                "' '" + (out / "dtm.qgs").string() + "' '" + dir.path().string() + "' > '" +
-                                (dir / "qgis.log").string() + "' 2>&1";
+                                "' '" + (out / "dtm.qgs").string() + "' '" + dir.path().string() +
+                                "' > '" + (dir / "qgis.log").string() + "' 2>&1";
     EXPECT_EQ(std::system(command.c_str()), 0) << dtm::test::read_file(dir / "qgis.log");
 
     // The print layout: the sheet of map.pdf (A3 at the map's scale, its extent, EPSG:5514,

@@ -26,8 +26,7 @@ struct BuildArgs {
 };
 
 /// One short paragraph on stdout: what was built and where the report is.
-void print_summary(const products::BuildReport& r, const std::string& out_dir)
-{
+void print_summary(const products::BuildReport& r, const std::string& out_dir) {
     const PointFate& points = r.accounting.survey_points;
     std::printf(
         "dtm build: %zu points read (%zu used, %zu merged duplicates, %zu outside the "
@@ -46,8 +45,7 @@ void print_summary(const products::BuildReport& r, const std::string& out_dir)
     std::printf("dtm build: products and report.json in %s\n", out_dir.c_str());
 }
 
-int run_build(BuildArgs& args)
-{
+int run_build(BuildArgs& args) {
     const Progress progress = terminal_progress("build", args.quiet);
     args.build.wording = cli_text;
     args.build.flat_areas.assign(args.input.flat_areas.begin(), args.input.flat_areas.end());
@@ -65,8 +63,7 @@ int run_build(BuildArgs& args)
 
 }  // namespace
 
-Command build_command()
-{
+Command build_command() {
     return {"build",
             "The main job: TIN, DEM, hillshade, contours, contour map sheet (PDF), VTK surface, "
             "2DM mesh, QGIS project with its print layout, and report into one folder",

@@ -132,7 +132,8 @@ int run_method(const RunArgs& a) {
     if (method->output == methods::Output::all_triangulations) {
         io::write_tin_series(result.all, a.output, loaded.crs_wkt);
     } else if (method->output == methods::Output::polygon_faces) {
-        io::write_polygon_faces(result.tin.vertices, result.faces, a.output, {loaded.crs_wkt, false});
+        io::write_polygon_faces(result.tin.vertices, result.faces, a.output,
+                                {loaded.crs_wkt, false});
     } else {
         io::TinWriteOptions write_options;
         write_options.crs_wkt = loaded.crs_wkt;
@@ -163,8 +164,9 @@ int run_compare(CompareArgs& a) {
     for (const std::string& d : a.distributions) {
         const auto parsed = methods::parse_distribution(d);
         if (!parsed) {
-            throw UsageError("methods compare: unknown distribution '" + d +
-                             "' (uniform, gauss, cluster, arc, grid, circle, collinear, duplicates)");
+            throw UsageError(
+                "methods compare: unknown distribution '" + d +
+                "' (uniform, gauss, cluster, arc, grid, circle, collinear, duplicates)");
         }
         a.options.distributions.push_back(*parsed);
     }
@@ -184,66 +186,70 @@ int run_compare(CompareArgs& a) {
 }  // namespace
 
 Command methods_command() {
-    return {"methods",
-            "The triangulation methods of the source literature: list, run, compare",
-            [](CLI::App& app) -> std::function<int()> {
-                app.require_subcommand(1);
-                auto run = std::make_shared<std::function<int()>>();
+    return {
+        "methods", "The triangulation methods of the source literature: list, run, compare",
+        [](CLI::App& app) -> std::function<int()> {
+            app.require_subcommand(1);
+            auto run = std::make_shared<std::function<int()>>();
 
-                auto json = std::make_shared<bool>(false);
-                CLI::App* list = app.add_subcommand("list", "List every method of the registry");
-                list->add_flag("--json", *json, "One JSON array with every field of the registry");
-                list->callback([run, json] { *run = [json] { return run_list(*json); }; });
+            auto json = std::make_shared<bool>(false);
+            CLI::App* list = app.add_subcommand("list", "List every method of the registry");
+            list->add_flag("--json", *json, "One JSON array with every field of the registry");
+            list->callback([run, json] { *run = [json] { return run_list(*json); }; });
 
-                auto args = std::make_shared<RunArgs>();
-                CLI::App* one = app.add_subcommand("run", "Run one method on a point input");
-                one->add_option("name", args->name, "Method name (dtm methods list)")->required();
-                add_input_options(*one, args->input);
-                one->add_option("-o,--output", args->output,
-                        "Output TIN by extension; polygon faces (pseudo: .ply, .gpkg, .shp); a "
-                        "folder of t001.ply ... (enumerate)")
-                    ->required();
-                one->add_option("--param", args->params,
-                                "Method parameter KEY=VALUE (repeatable; see dtm methods list)");
-                for (const char* key : {"swap", "flip", "criterion"}) {
-                    one->add_option(std::string("--") + key, args->aliases[key],
-                                    std::string("Same as --param ") + key + "=VALUE");
-                }
-                one->add_option("--seed", args->seed, "Seed of randomised methods (default 1)");
-                one->add_option("--threads", args->threads, "Threads of parallel methods");
-                one->add_flag("--stats", args->stats,
-                              "Print one JSON object with the counters and seconds");
-                one->add_flag("-q,--quiet", args->quiet, "No progress bar");
-                one->callback([run, args] { *run = [args] { return run_method(*args); }; });
+            auto args = std::make_shared<RunArgs>();
+            CLI::App* one = app.add_subcommand("run", "Run one method on a point input");
+            one->add_option("name", args->name, "Method name (dtm methods list)")->required();
+            add_input_options(*one, args->input);
+            one->add_option("-o,--output", args->output,
+                            "Output TIN by extension; polygon faces (pseudo: .ply, .gpkg, .shp); a "
+                            "folder of t001.ply ... (enumerate)")
+                ->required();
+            one->add_option("--param", args->params,
+                            "Method parameter KEY=VALUE (repeatable; see dtm methods list)");
+            for (const char* key : {"swap", "flip", "criterion"}) {
+                one->add_option(std::string("--") + key, args->aliases[key],
+                                std::string("Same as --param ") + key + "=VALUE");
+            }
+            one->add_option("--seed", args->seed, "Seed of randomised methods (default 1)");
+            one->add_option("--threads", args->threads, "Threads of parallel methods");
+            one->add_flag("--stats", args->stats,
+                          "Print one JSON object with the counters and seconds");
+            one->add_flag("-q,--quiet", args->quiet, "No progress bar");
+            one->callback([run, args] { *run = [args] { return run_method(*args); }; });
 
-                auto cmp = std::make_shared<CompareArgs>();
-                CLI::App* compare =
-                    app.add_subcommand("compare", "Run methods side by side and write a report");
-                compare->add_option("--methods", cmp->options.methods,
-                                    "Methods to compare (default: all but enumerate)")
-                    ->delimiter(',');
-                compare->add_option("--n", cmp->options.sizes, "Point counts (default 1000,10000,100000)")
-                    ->delimiter(',');
-                compare->add_option("--dist", cmp->distributions,
-                                    "Distributions (default uniform,gauss,cluster,arc)")
-                    ->delimiter(',');
-                compare->add_option("--sets", cmp->options.sets, "Point sets per cell (default 1)");
-                compare->add_option("--repeat", cmp->options.repeat, "Runs per point set (default 1)");
-                compare->add_option("--seed", cmp->options.seed, "Seed of the first point set (default 1)");
-                compare->add_option("--threads", cmp->options.threads,
-                                    "Threads of the parallel methods (default 1)");
-                compare->add_option("--cap-seconds", cmp->options.cap_seconds,
-                                    "Skip a quadratic method where it would take longer (default 10)");
-                compare->add_option("--histogram-n", cmp->options.histogram_size,
-                                    "Angle histograms at the largest N up to this (default 10000)");
-                compare->add_flag("--no-historical", cmp->no_historical,
-                                  "Do not run uniform-grid at the sizes of the thesis' Fig. 36");
-                compare->add_option("-o,--output", cmp->output, "Output folder")->required();
-                compare->add_flag("-q,--quiet", cmp->quiet, "No progress bar");
-                compare->callback([run, cmp] { *run = [cmp] { return run_compare(*cmp); }; });
+            auto cmp = std::make_shared<CompareArgs>();
+            CLI::App* compare =
+                app.add_subcommand("compare", "Run methods side by side and write a report");
+            compare
+                ->add_option("--methods", cmp->options.methods,
+                             "Methods to compare (default: all but enumerate)")
+                ->delimiter(',');
+            compare
+                ->add_option("--n", cmp->options.sizes, "Point counts (default 1000,10000,100000)")
+                ->delimiter(',');
+            compare
+                ->add_option("--dist", cmp->distributions,
+                             "Distributions (default uniform,gauss,cluster,arc)")
+                ->delimiter(',');
+            compare->add_option("--sets", cmp->options.sets, "Point sets per cell (default 1)");
+            compare->add_option("--repeat", cmp->options.repeat, "Runs per point set (default 1)");
+            compare->add_option("--seed", cmp->options.seed,
+                                "Seed of the first point set (default 1)");
+            compare->add_option("--threads", cmp->options.threads,
+                                "Threads of the parallel methods (default 1)");
+            compare->add_option("--cap-seconds", cmp->options.cap_seconds,
+                                "Skip a quadratic method where it would take longer (default 10)");
+            compare->add_option("--histogram-n", cmp->options.histogram_size,
+                                "Angle histograms at the largest N up to this (default 10000)");
+            compare->add_flag("--no-historical", cmp->no_historical,
+                              "Do not run uniform-grid at the sizes of the thesis' Fig. 36");
+            compare->add_option("-o,--output", cmp->output, "Output folder")->required();
+            compare->add_flag("-q,--quiet", cmp->quiet, "No progress bar");
+            compare->callback([run, cmp] { *run = [cmp] { return run_compare(*cmp); }; });
 
-                return [run] { return (*run)(); };
-            }};
+            return [run] { return (*run)(); };
+        }};
 }
 
 }  // namespace dtm::cli

@@ -8,9 +8,9 @@
 #include <iostream>
 
 #include "command.hpp"
+#include "contour_flats_args.hpp"
 #include "dtm/algo/criteria.hpp"
 #include "dtm/algo/optimize.hpp"
-#include "contour_flats_args.hpp"
 #include "dtm/algo/triangulate.hpp"
 #include "dtm/algo/validate.hpp"
 #include "dtm/core/error.hpp"
@@ -38,15 +38,13 @@ struct TinArgs {
     bool quiet = false;
 };
 
-double since(std::chrono::steady_clock::time_point t)
-{
+double since(std::chrono::steady_clock::time_point t) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 
 /// The optimisation's figures (criterion, flips, quality before and after) as the member
 /// "optimize" of the open object, when a criterion other than delaunay was applied.
-void optimize_json(io::JsonWriter& json, const OptimizeStats& o)
-{
+void optimize_json(io::JsonWriter& json, const OptimizeStats& o) {
     using Layout = io::JsonWriter::Layout;
     if (o.criterion == Criterion::delaunay) return;
     json.begin_object("optimize", Layout::inline_);
@@ -55,7 +53,8 @@ void optimize_json(io::JsonWriter& json, const OptimizeStats& o)
     json.value("improvable_before", o.improvable_before);
     json.value("improvable_after", o.improvable_after);
     json.value("converged", o.converged);
-    for (const auto& [key, q] : {std::pair{"quality_before", &o.before}, {"quality_after", &o.after}}) {
+    for (const auto& [key, q] :
+         {std::pair{"quality_before", &o.before}, {"quality_after", &o.after}}) {
         json.begin_object(key, Layout::inline_);
         json.value("worst", q->worst);
         json.value("mean", q->mean);
@@ -67,8 +66,7 @@ void optimize_json(io::JsonWriter& json, const OptimizeStats& o)
 }
 
 /// --report: every merged duplicate and every height conflict (and the optimisation).
-void write_report(const std::string& path, const TriangulateResult& r)
-{
+void write_report(const std::string& path, const TriangulateResult& r) {
     using Layout = io::JsonWriter::Layout;
     io::JsonWriter json;
     json.begin_object();
@@ -110,9 +108,9 @@ void write_report(const std::string& path, const TriangulateResult& r)
 }
 
 /// --stats: one line of counts and timings.
-std::string stats_json(const products::Surface& surface, std::size_t skipped_lines,
-                       const std::array<double, 3>& seconds)
-{
+std::string stats_json(const products::Surface& surface,
+                       std::size_t skipped_lines,
+                       const std::array<double, 3>& seconds) {
     using Layout = io::JsonWriter::Layout;
     const TriangulateResult& result = surface.result;
     const TriangulateStats& s = result.stats;
@@ -153,12 +151,11 @@ std::string stats_json(const products::Surface& surface, std::size_t skipped_lin
 
 /// --check: topology, every breakline, and the exact constrained Delaunay property (or, under
 /// --optimize, local optimality of every unconstrained edge under the criterion).
-void check_tin(const TriangulateResult& result, const TerrainInput& input, Criterion optimize)
-{
+void check_tin(const TriangulateResult& result, const TerrainInput& input, Criterion optimize) {
     const Tin& tin = result.tin;
     std::string problems;
-    CheckReport optimal = optimize == Criterion::delaunay ? verify_constrained_delaunay(tin)
-                                                          : CheckReport{};
+    CheckReport optimal =
+        optimize == Criterion::delaunay ? verify_constrained_delaunay(tin) : CheckReport{};
     if (optimize != Criterion::delaunay) {
         for (const auto& [a, b] : improvable_edges(tin, optimize, 5)) {
             optimal.problems.push_back("edge " + std::to_string(a) + "-" + std::to_string(b) +
@@ -166,15 +163,14 @@ void check_tin(const TriangulateResult& result, const TerrainInput& input, Crite
                                        std::string(criterion_name(optimize)));
         }
     }
-    for (const CheckReport& r : {verify_topology(tin), optimal,
-                                 verify_constraints(tin, input, result.input_to_vertex)}) {
+    for (const CheckReport& r :
+         {verify_topology(tin), optimal, verify_constraints(tin, input, result.input_to_vertex)}) {
         problems += r.text();
     }
     if (!problems.empty()) throw Error("the TIN failed its checks:\n" + problems);
 }
 
-int run_tin(const TinArgs& a)
-{
+int run_tin(const TinArgs& a) {
     io::check_output(a.output, io::OutputKind::tin, "output");
     if (!a.report.empty()) io::check_output(a.report, io::OutputKind::any_file, "report");
     const auto start = std::chrono::steady_clock::now();
@@ -213,15 +209,17 @@ int run_tin(const TinArgs& a)
                   << io::json_number(result.conflicts[0].at.x) << ", "
                   << io::json_number(result.conflicts[0].at.y) << "; --report lists them all)\n";
     }
-    if (a.stats) std::cout << stats_json(surface, loaded.skipped_lines, {read_s, write_s, since(start)}) << std::flush;
+    if (a.stats)
+        std::cout << stats_json(surface, loaded.skipped_lines, {read_s, write_s, since(start)})
+                  << std::flush;
     return 0;
 }
 
 }  // namespace
 
-Command tin_command()
-{
-    return {"tin", "Build the constrained Delaunay TIN and write it (.ply, .2dm, .vtp, .gpkg, .shp)",
+Command tin_command() {
+    return {"tin",
+            "Build the constrained Delaunay TIN and write it (.ply, .2dm, .vtp, .gpkg, .shp)",
             [](CLI::App& app) -> std::function<int()> {
                 auto args = std::make_shared<TinArgs>();
                 add_input_options(app, args->input);

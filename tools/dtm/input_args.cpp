@@ -7,11 +7,11 @@
 
 namespace dtm::cli {
 
-void add_input_options(CLI::App& app, InputArgs& args)
-{
-    app.add_option("inputs", args.inputs,
-                   "Survey points: text (x y z, id;Y;X;Z, lat/lon...), OGR vector files (shp, gpkg, "
-                   "geojson, dxf...: points, lines become breaklines), or a TIN (dtm .ply, LandXML .xml)")
+void add_input_options(CLI::App& app, InputArgs& args) {
+    app.add_option(
+           "inputs", args.inputs,
+           "Survey points: text (x y z, id;Y;X;Z, lat/lon...), OGR vector files (shp, gpkg, "
+           "geojson, dxf...: points, lines become breaklines), or a TIN (dtm .ply, LandXML .xml)")
         ->check(CLI::ExistingPath);
     const auto files = [&app](const char* name, std::vector<std::string>& into, const char* what) {
         app.add_option(name, into, what)->check(CLI::ExistingPath)->allow_extra_args(false);
@@ -44,12 +44,12 @@ void add_input_options(CLI::App& app, InputArgs& args)
     app.add_flag("--retriangulate", o.retriangulate,
                  "Surface inputs (LandXML, DXF 3DFACE): triangulate their points and lines "
                  "instead of keeping their faces");
-    app.add_option("--surface", o.surface, "LandXML: the surface of this name (default: the first)");
+    app.add_option("--surface", o.surface,
+                   "LandXML: the surface of this name (default: the first)");
     add_hpgl_options(app, o.hpgl);
 }
 
-io::LoadOptions to_load_options(const InputArgs& args)
-{
+io::LoadOptions to_load_options(const InputArgs& args) {
     io::LoadOptions options;
     options.read = args.read;
     options.crs = args.crs;

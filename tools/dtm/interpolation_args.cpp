@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// --interpolation (grid, contour, build): linear (the TIN's planes), cubic (Clough-Tocher C1, creased
-// along hard breaklines), natural (Sibson natural neighbours).
+// --interpolation (grid, contour, build): linear (the TIN's planes), cubic (Clough-Tocher C1,
+// creased along hard breaklines), natural (Sibson natural neighbours).
 #include "interpolation_args.hpp"
 
 #include <map>

@@ -16,8 +16,7 @@
 #include "dtm/core/error.hpp"
 #include "option_names.hpp"
 
-int main(int argc, char** argv)
-{
+int main(int argc, char** argv) {
 #ifdef M_MMAP_THRESHOLD
     // Large arrays (points, meshes, TINs) come and go in phases; a fixed mmap threshold returns
     // each one to the system when it is freed (glibc's adaptive threshold would keep them in the
@@ -28,16 +27,16 @@ int main(int argc, char** argv)
     // for a full disk, instead of SIGXFSZ killing the process with a core dump.
     std::signal(SIGXFSZ, SIG_IGN);
     using namespace dtm::cli;
-    CLI::App app{"dtm: survey points and breaklines to a constrained Delaunay TIN, DEMs, contours "
-                 "and 3-D surfaces"};
+    CLI::App app{
+        "dtm: survey points and breaklines to a constrained Delaunay TIN, DEMs, contours "
+        "and 3-D surfaces"};
     app.set_version_flag("--version", std::string("dtm ") + DTM_VERSION);
     app.require_subcommand(0, 1);  // at most one; "none" is reported below, so that an unknown
                                    // word or option is named in the error instead
 
-    const std::vector<Command> commands{tin_command(), info_command(), grid_command(),
-                                        contour_command(), build_command(),
-                                        methods_command(), voronoi_command(),
-                                        map_command()};
+    const std::vector<Command> commands{tin_command(),     info_command(),  grid_command(),
+                                        contour_command(), build_command(), methods_command(),
+                                        voronoi_command(), map_command()};
     std::function<int()> run;
     for (const Command& command : commands) {
         CLI::App* sub = app.add_subcommand(std::string(command.name), std::string(command.summary));

@@ -66,16 +66,14 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 43> flags{{
 
 }  // namespace
 
-std::string_view flag_of(std::string_view field) noexcept
-{
+std::string_view flag_of(std::string_view field) noexcept {
     for (const auto& [name, flag] : flags) {
         if (name == field) return flag;
     }
     return {};
 }
 
-std::string cli_text(std::string_view text)
-{
+std::string cli_text(std::string_view text) {
     std::string out;
     out.reserve(text.size());
     std::size_t at = 0;

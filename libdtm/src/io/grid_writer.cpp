@@ -7,6 +7,8 @@
 // rasteriser produces them. Drivers that can only CreateCopy (COG, Arc/Info ASCII, ...) get a
 // staging GeoTIFF next to the target, copied at commit() and then removed, so memory stays
 // bounded whatever the raster size.
+#include "dtm/io/grid_writer.hpp"
+
 #include <cpl_conv.h>
 #include <cpl_error.h>
 #include <cpl_string.h>
@@ -21,9 +23,8 @@
 #include <sstream>
 
 #include "dtm/core/error.hpp"
-#include "dtm/io/extension.hpp"
 #include "dtm/io/atomic_file.hpp"
-#include "dtm/io/grid_writer.hpp"
+#include "dtm/io/extension.hpp"
 
 namespace dtm::io {
 namespace fs = std::filesystem;

@@ -93,7 +93,8 @@ public:
             std::sort(order.begin(), order.end(), [&](VertexIndex a, VertexIndex b) {
                 if (detail::angle_before(pred_, p_[i], p_[a], p_[b])) return true;
                 if (detail::angle_before(pred_, p_[i], p_[b], p_[a])) return false;
-                return pred_.compare_distances(p_[i], p_[a], p_[i], p_[b]) < 0;  // same ray: nearer first
+                return pred_.compare_distances(p_[i], p_[a], p_[i], p_[b]) <
+                       0;  // same ray: nearer first
             });
             std::uint32_t group = 0;
             for (std::size_t k = 0; k < order.size(); ++k) {

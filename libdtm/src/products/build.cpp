@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 // The main job: read -> surface -> product steps -> report -> commit.
 //
-//   io::load_inputs ─> LoadedInputs ─> products::surface ─> Tin ─┬─ write_tin ─> tin.ply tin.2dm surface.vtp
-//   (every reader)      (one CRS)      (as is, or triangulate)   ├─ dem ───────> dem.tif hillshade.tif
+//   io::load_inputs ─> LoadedInputs ─> products::surface ─> Tin ─┬─ write_tin ─> tin.ply tin.2dm
+//   surface.vtp (every reader)      (one CRS)      (as is, or triangulate)   ├─ dem ───────>
+//   dem.tif hillshade.tif
 //                                                               ├─ contours ──> contours.gpkg
 //                                                               ├─ map ───────> map.pdf
 //                                                               ├─ project ───> dtm.qgs
@@ -48,10 +49,10 @@ constexpr double surface_end = 0.45;
 /// Times the stages of the run for the report.
 class Stopwatch {
 public:
-    void lap(std::string_view stage)
-    {
+    void lap(std::string_view stage) {
         const auto now = std::chrono::steady_clock::now();
-        timings_.push_back({std::string(stage), std::chrono::duration<double>(now - last_).count()});
+        timings_.push_back(
+            {std::string(stage), std::chrono::duration<double>(now - last_).count()});
         last_ = now;
     }
     [[nodiscard]] std::vector<StageTime> take() { return std::move(timings_); }
@@ -61,16 +62,16 @@ private:
     std::vector<StageTime> timings_;
 };
 
-fs::path folder(fs::path out_dir)
-{
+fs::path folder(fs::path out_dir) {
     return out_dir.filename().empty() ? out_dir.parent_path() : out_dir;  // "out/" -> "out"
 }
 
 }  // namespace
 
-BuildReport build(const io::LoadOptions& inputs, const fs::path& out_dir,
-                  const BuildOptions& options, const Progress& progress)
-{
+BuildReport build(const io::LoadOptions& inputs,
+                  const fs::path& out_dir,
+                  const BuildOptions& options,
+                  const Progress& progress) {
     const fs::path target = folder(out_dir);
     io::check_output(target, io::OutputKind::folder, "out_dir");  // before any input is read
     Stopwatch clock;
@@ -85,8 +86,9 @@ BuildReport build(const io::LoadOptions& inputs, const fs::path& out_dir,
     Surface s = surface(loaded, surface_options, progress.sub(read_end, triangulate_end));
     const SurfaceStats stats = surface_stats(s.result.tin);
     if (stats.triangle_count == 0) {
-        throw InputError("build: the triangulation has no triangle (is everything outside the "
-                         "boundary?)");
+        throw InputError(
+            "build: the triangulation has no triangle (is everything outside the "
+            "boundary?)");
     }
     GradientOptions gradients;
     gradients.threads = options.triangulate.threads;
@@ -98,8 +100,9 @@ BuildReport build(const io::LoadOptions& inputs, const fs::path& out_dir,
     BuildReport report;
     report.contour_flats = std::move(s.contour_flats);
     report.interpolation = interpolation_name(options.interpolation);
-    detail::BuildContext context{options, s.result.tin, interpolant,       loaded.crs_wkt, stats,
-                                 out,     report,       &loaded.summaries, {}};
+    detail::BuildContext context{options, s.result.tin, interpolant, loaded.crs_wkt,
+                                 stats,   out,          report,      &loaded.summaries,
+                                 {}};
     double at = surface_end;
     for (const detail::BuildStep& step : steps) {
         if (step.wanted != nullptr && !step.wanted(options)) continue;

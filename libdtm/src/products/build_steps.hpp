@@ -25,7 +25,7 @@ struct BuildContext {
     const BuildOptions& options;
     const Tin& tin;
     const TinInterpolant& interpolant;  ///< options.interpolation on tin, for the DEM and contours
-    const std::string& crs_wkt;  ///< CRS of the TIN; empty if unknown
+    const std::string& crs_wkt;         ///< CRS of the TIN; empty if unknown
     const SurfaceStats& surface;
     io::AtomicDirectory& out;
     BuildReport& report;
@@ -33,15 +33,14 @@ struct BuildContext {
     std::optional<io::QgisLayout> map_layout;  ///< map.pdf's sheet, for the QGIS print layout
 
     /// @p text as options.wording words it.
-    [[nodiscard]] std::string worded(std::string_view text) const
-    {
+    [[nodiscard]] std::string worded(std::string_view text) const {
         return options.wording ? options.wording(text) : std::string(text);
     }
 };
 
 struct BuildStep {
-    std::string_view stage;  ///< its name in the report's timings
-    double progress_end;     ///< the overall fraction done when it has finished
+    std::string_view stage;               ///< its name in the report's timings
+    double progress_end;                  ///< the overall fraction done when it has finished
     bool (*wanted)(const BuildOptions&);  ///< nullptr: always run
     void (*run)(BuildContext& context, const Progress& progress);
 };

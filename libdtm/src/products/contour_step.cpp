@@ -8,8 +8,7 @@
 
 namespace dtm::products::detail {
 
-void write_contours(BuildContext& context, const Progress& progress)
-{
+void write_contours(BuildContext& context, const Progress& progress) {
     const bool given = context.options.interval > 0.0;
     ContourOptions options;
     options.interval = given ? context.options.interval : default_interval(context.surface);

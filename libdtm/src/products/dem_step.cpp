@@ -8,8 +8,7 @@
 
 namespace dtm::products::detail {
 
-void write_dem(BuildContext& context, const Progress& progress)
-{
+void write_dem(BuildContext& context, const Progress& progress) {
     const bool given = context.options.cell > 0.0;
     const double cell = given ? context.options.cell : default_cell(context.surface);
     context.report.cell_rule = given ? context.worded("given (`cell`)") : default_cell_rule;

@@ -7,8 +7,7 @@
 
 namespace dtm::products::detail {
 
-void write_project(BuildContext& context, const Progress&)
-{
+void write_project(BuildContext& context, const Progress&) {
     const io::AtomicDirectory& out = context.out;
     const auto layer = [&out](const char* name) {
         return out.contains(name) ? std::filesystem::path(name) : std::filesystem::path();

@@ -14,8 +14,7 @@ namespace {
 /// Indices (into terrain.breaklines) of the hard breaklines read from options.flat_areas, which
 /// are loaded after every other breakline file: the last ones.
 std::vector<std::size_t> flat_outlines(const io::LoadedInputs& inputs,
-                                       const SurfaceOptions& options)
-{
+                                       const SurfaceOptions& options) {
     std::size_t count = 0;
     for (const io::InputSummary& summary : inputs.summaries) {
         if (std::find(options.flat_areas.begin(), options.flat_areas.end(), summary.path) !=
@@ -29,8 +28,7 @@ std::vector<std::size_t> flat_outlines(const io::LoadedInputs& inputs,
     return out;
 }
 
-void note_line_heights(io::LoadedInputs& inputs, const TriangulateResult& result)
-{
+void note_line_heights(io::LoadedInputs& inputs, const TriangulateResult& result) {
     const std::size_t from_surface = result.line_heights.from_surface;
     if (from_surface == 0) return;
     const std::string note = std::to_string(from_surface) +
@@ -43,8 +41,7 @@ void note_line_heights(io::LoadedInputs& inputs, const TriangulateResult& result
 
 }  // namespace
 
-Surface surface(io::LoadedInputs& inputs, const SurfaceOptions& options, const Progress& progress)
-{
+Surface surface(io::LoadedInputs& inputs, const SurfaceOptions& options, const Progress& progress) {
     Surface s;
     if (inputs.tin) {
         s.from_tin = true;
@@ -57,8 +54,8 @@ Surface surface(io::LoadedInputs& inputs, const SurfaceOptions& options, const P
         std::iota(s.result.input_to_vertex.begin(), s.result.input_to_vertex.end(), VertexIndex{0});
         const TriangulateOptions& t = options.triangulate;
         if (t.optimize != Criterion::delaunay) {
-            s.result.stats.optimize =
-                optimize_tin(s.result.tin, {.criterion = t.optimize, .threads = t.threads}, progress);
+            s.result.stats.optimize = optimize_tin(
+                s.result.tin, {.criterion = t.optimize, .threads = t.threads}, progress);
         }
         return s;
     }

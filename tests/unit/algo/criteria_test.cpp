@@ -14,9 +14,9 @@
 #include <vector>
 
 #include "dtm/algo/triangulate.hpp"
+#include "dtm/core/tin.hpp"
 #include "dtm/geom/predicates.hpp"
 #include "support/terrain_fixtures.hpp"
-#include "dtm/core/tin.hpp"
 
 namespace dtm {
 namespace {

@@ -24,15 +24,14 @@ namespace {
 double hill(double x, double y) { return 100.0 + 5.0 * std::sin(x / 15.0) * std::cos(y / 20.0); }
 
 /// A 30 x 30 survey of a smooth hill, in local metres.
-dtm::io::LoadOptions survey(const dtm::test::ScratchDir& dir)
-{
+dtm::io::LoadOptions survey(const dtm::test::ScratchDir& dir) {
     std::string text = "x,y,z\n";
     for (int j = 0; j < 30; ++j) {
         for (int i = 0; i < 30; ++i) {
             const double x = 2.0 * i + 0.3 * std::sin(j);
             const double y = 2.0 * j + 0.3 * std::cos(i);
-            text += std::to_string(x) + "," + std::to_string(y) + "," +
-                    std::to_string(hill(x, y)) + "\n";
+            text += std::to_string(x) + "," + std::to_string(y) + "," + std::to_string(hill(x, y)) +
+                    "\n";
         }
     }
     dtm::test::write_file(dir / "points.csv", text);
@@ -41,8 +40,7 @@ dtm::io::LoadOptions survey(const dtm::test::ScratchDir& dir)
     return options;
 }
 
-std::vector<std::string> names_in(const fs::path& folder)
-{
+std::vector<std::string> names_in(const fs::path& folder) {
     std::vector<std::string> names;
     for (const auto& entry : fs::directory_iterator(folder)) {
         names.push_back(entry.path().filename().string());
@@ -51,13 +49,12 @@ std::vector<std::string> names_in(const fs::path& folder)
     return names;
 }
 
-TEST(Build, WritesEveryProductAndReportsThemInOrder)
-{
+TEST(Build, WritesEveryProductAndReportsThemInOrder) {
     const dtm::test::ScratchDir dir;
     const dtm::products::BuildReport report = dtm::products::build(survey(dir), dir / "out");
-    const std::vector<std::string> expected{"tin.ply",       "tin.2dm",       "surface.vtp",
-                                            "dem.tif",       "hillshade.tif", "contours.gpkg",
-                                            "map.pdf",       "dtm.qgs",       "report.json"};
+    const std::vector<std::string> expected{"tin.ply", "tin.2dm",       "surface.vtp",
+                                            "dem.tif", "hillshade.tif", "contours.gpkg",
+                                            "map.pdf", "dtm.qgs",       "report.json"};
     EXPECT_EQ(report.outputs, expected);
     std::vector<std::string> sorted = expected;
     std::sort(sorted.begin(), sorted.end());
@@ -74,8 +71,7 @@ TEST(Build, WritesEveryProductAndReportsThemInOrder)
     EXPECT_EQ(report.cell_rule, dtm::products::default_cell_rule);
 }
 
-TEST(Build, GivenCellAndIntervalAreReportedInTheCallersWording)
-{
+TEST(Build, GivenCellAndIntervalAreReportedInTheCallersWording) {
     const dtm::test::ScratchDir dir;
     dtm::products::BuildOptions options;
     options.cell = 0.5;
@@ -97,18 +93,16 @@ TEST(Build, GivenCellAndIntervalAreReportedInTheCallersWording)
 }
 
 /// RMS difference of the DEM of @p report in @p folder from the hill, over its data cells.
-double dem_rmse(const fs::path& folder, const dtm::products::BuildReport& report)
-{
+double dem_rmse(const fs::path& folder, const dtm::products::BuildReport& report) {
     GDALAllRegister();
     GDALDataset* ds = GDALDataset::Open((folder / "dem.tif").c_str(), GDAL_OF_RASTER);
     EXPECT_NE(ds, nullptr);
     if (ds == nullptr) return 0.0;
     const dtm::GridSpec& g = report.dem;
     std::vector<float> v(g.cols * g.rows);
-    EXPECT_EQ(ds->GetRasterBand(1)->RasterIO(GF_Read, 0, 0, static_cast<int>(g.cols),
-                                             static_cast<int>(g.rows), v.data(),
-                                             static_cast<int>(g.cols), static_cast<int>(g.rows),
-                                             GDT_Float32, 0, 0, nullptr),
+    EXPECT_EQ(ds->GetRasterBand(1)->RasterIO(
+                  GF_Read, 0, 0, static_cast<int>(g.cols), static_cast<int>(g.rows), v.data(),
+                  static_cast<int>(g.cols), static_cast<int>(g.rows), GDT_Float32, 0, 0, nullptr),
               CE_None);
     const double nodata = ds->GetRasterBand(1)->GetNoDataValue();
     GDALClose(ds);
@@ -127,8 +121,7 @@ double dem_rmse(const fs::path& folder, const dtm::products::BuildReport& report
     return std::sqrt(sum / static_cast<double>(n));
 }
 
-TEST(Build, CubicInterpolationGivesTheDemAndIsReported)
-{
+TEST(Build, CubicInterpolationGivesTheDemAndIsReported) {
     const dtm::test::ScratchDir dir;
     dtm::products::BuildOptions options;
     options.cell = 0.5;
@@ -137,16 +130,16 @@ TEST(Build, CubicInterpolationGivesTheDemAndIsReported)
     const auto cubic = dtm::products::build(survey(dir), dir / "cubic", options);
     EXPECT_EQ(linear.interpolation, "linear");
     EXPECT_EQ(cubic.interpolation, "cubic");
-    EXPECT_NE(dtm::test::read_file(dir / "cubic" / "report.json").find(R"("interpolation": "cubic")"),
-              std::string::npos);
+    EXPECT_NE(
+        dtm::test::read_file(dir / "cubic" / "report.json").find(R"("interpolation": "cubic")"),
+        std::string::npos);
     const double e_linear = dem_rmse(dir / "linear", linear);
     const double e_cubic = dem_rmse(dir / "cubic", cubic);
     EXPECT_LT(e_cubic, 0.25 * e_linear) << "the hill is smooth: the cubic is much closer";
     EXPECT_FALSE(cubic.contour_flats.has_value()) << "points are no contours";
 }
 
-TEST(Build, CancelledRunLeavesTheFolderAsItWas)
-{
+TEST(Build, CancelledRunLeavesTheFolderAsItWas) {
     const dtm::test::ScratchDir dir;
     fs::create_directories(dir / "out");
     dtm::test::write_file(dir / "out" / "tin.ply", "earlier result");
@@ -158,8 +151,7 @@ TEST(Build, CancelledRunLeavesTheFolderAsItWas)
     EXPECT_EQ(names_in(dir.path()), (std::vector<std::string>{"out", "points.csv"}));
 }
 
-TEST(Build, OutputFolderThatIsAFileIsAnOptionError)
-{
+TEST(Build, OutputFolderThatIsAFileIsAnOptionError) {
     const dtm::test::ScratchDir dir;
     dtm::test::write_file(dir / "out", "a file");
     try {

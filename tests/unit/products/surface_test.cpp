@@ -14,8 +14,7 @@
 
 namespace {
 
-dtm::io::LoadedInputs plane_inputs()
-{
+dtm::io::LoadedInputs plane_inputs() {
     dtm::io::LoadedInputs in;
     in.terrain.points = {{0, 0, 0}, {100, 0, 100}, {100, 100, 300}, {0, 100, 200}, {50, 50, 150}};
     in.summaries.resize(2);
@@ -23,8 +22,7 @@ dtm::io::LoadedInputs plane_inputs()
     return in;
 }
 
-TEST(Surface, TinInputIsUsedAsItIs)
-{
+TEST(Surface, TinInputIsUsedAsItIs) {
     dtm::io::LoadedInputs in;
     dtm::Tin tin;
     tin.vertices = {{0, 0, 1}, {10, 0, 2}, {0, 10, 3}};
@@ -40,8 +38,7 @@ TEST(Surface, TinInputIsUsedAsItIs)
     EXPECT_EQ(s.result.input_to_vertex, (std::vector<dtm::VertexIndex>{0, 1, 2}));
 }
 
-TEST(Surface, TerrainIsTriangulatedAndRingsFromTheSurfaceAreNoted)
-{
+TEST(Surface, TerrainIsTriangulatedAndRingsFromTheSurfaceAreNoted) {
     dtm::io::LoadedInputs in = plane_inputs();
     dtm::Polyline ring;
     const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -60,8 +57,7 @@ TEST(Surface, TerrainIsTriangulatedAndRingsFromTheSurfaceAreNoted)
               "4 boundary/hole vertices without height took the height of the surface");
 }
 
-dtm::io::LoadedInputs contour_inputs(const dtm::TerrainInput& terrain)
-{
+dtm::io::LoadedInputs contour_inputs(const dtm::TerrainInput& terrain) {
     dtm::io::LoadedInputs in;
     in.terrain = terrain;
     in.summaries.resize(1);
@@ -70,11 +66,9 @@ dtm::io::LoadedInputs contour_inputs(const dtm::TerrainInput& terrain)
     return in;
 }
 
-TEST(Surface, ContourInputLosesItsFlatTrianglesByDefault)
-{
+TEST(Surface, ContourInputLosesItsFlatTrianglesByDefault) {
     const dtm::TerrainInput terrain = dtm::test::contour_terrain_input(5.0, 2.0);
-    const std::size_t flat_as_given =
-        dtm::count_flat_triangles(dtm::triangulate(terrain).tin);
+    const std::size_t flat_as_given = dtm::count_flat_triangles(dtm::triangulate(terrain).tin);
     dtm::products::SurfaceOptions options;
     options.lines_are_contours = true;
     dtm::io::LoadedInputs in = contour_inputs(terrain);
@@ -102,8 +96,7 @@ TEST(Surface, ContourInputLosesItsFlatTrianglesByDefault)
     EXPECT_FALSE(p.contour_flats.has_value());
 }
 
-TEST(Surface, FlatAreaInputsOutlineRealFlats)
-{
+TEST(Surface, FlatAreaInputsOutlineRealFlats) {
     // a lake: a closed 5 m-level ring inside the 5 m contour ring and no point inside it
     dtm::TerrainInput terrain;
     for (int k = 0; k < 24; ++k) {
@@ -139,8 +132,7 @@ TEST(Surface, FlatAreaInputsOutlineRealFlats)
     EXPECT_EQ(hill.contour_flats->peaks.size(), 1u) << "without the outline it is a summit";
 }
 
-TEST(Rules, NiceNumbersAreOneTwoTwoAndAHalfOrFiveTimesAPowerOfTen)
-{
+TEST(Rules, NiceNumbersAreOneTwoTwoAndAHalfOrFiveTimesAPowerOfTen) {
     using dtm::products::nice_floor;
     using dtm::products::nice_next;
     EXPECT_DOUBLE_EQ(nice_floor(0.37), 0.25);
@@ -154,8 +146,7 @@ TEST(Rules, NiceNumbersAreOneTwoTwoAndAHalfOrFiveTimesAPowerOfTen)
     EXPECT_DOUBLE_EQ(nice_next(5.0), 10.0);
 }
 
-TEST(Rules, DefaultCellIsHalfThePointSpacingAndCapsTheCellCount)
-{
+TEST(Rules, DefaultCellIsHalfThePointSpacingAndCapsTheCellCount) {
     dtm::SurfaceStats s;
     s.vertex_count = 10'000;
     s.planimetric_area = 1e6;  // spacing 10: cell 5
@@ -168,8 +159,7 @@ TEST(Rules, DefaultCellIsHalfThePointSpacingAndCapsTheCellCount)
     EXPECT_DOUBLE_EQ(cell, 0.2);
 }
 
-TEST(Rules, DefaultIntervalGivesAboutTwentyLevels)
-{
+TEST(Rules, DefaultIntervalGivesAboutTwentyLevels) {
     dtm::SurfaceStats s;
     s.z_min = 310.38;
     s.z_max = 331.76;  // range 21.38: 1.069 -> 1

@@ -31,10 +31,11 @@ struct CheckReport {
 /// present as a chain of constrained TIN edges along it: through vertices exactly on it (or
 /// within rounding of it, 1 um + 1e-9 of its length, where crossings split it) and vertices
 /// added at crossings. A segment that leaves the surface (an end beyond the boundary or in a
-/// hole, or on its way out through the boundary and back) is required only where it lies on it. Polyline vertices are found by position,
-/// or through @p input_to_vertex (TriangulateResult::input_to_vertex) when given, which is needed
-/// when points were snapped.
-[[nodiscard]] CheckReport verify_constraints(const Tin& tin, const TerrainInput& input,
+/// hole, or on its way out through the boundary and back) is required only where it lies on it.
+/// Polyline vertices are found by position, or through @p input_to_vertex
+/// (TriangulateResult::input_to_vertex) when given, which is needed when points were snapped.
+[[nodiscard]] CheckReport verify_constraints(const Tin& tin,
+                                             const TerrainInput& input,
                                              std::span<const VertexIndex> input_to_vertex = {});
 
 /// Sum of triangle areas in xy (compensated summation).

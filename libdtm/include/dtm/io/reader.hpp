@@ -30,7 +30,8 @@ struct InputFile {
 
 /// What the readers take; each format reads the options it needs.
 struct ReadOptions {
-    bool skip_bad_lines = false;  ///< count malformed text lines (and HP-GL data) instead of failing
+    bool skip_bad_lines =
+        false;  ///< count malformed text lines (and HP-GL data) instead of failing
     /// Names of the text columns in order ("id,y,x,z,code"; "-" skips a column). Empty: map by
     /// header names, or guess (x,y,z) when there is no header.
     std::string columns;
@@ -89,7 +90,8 @@ struct FileHead {
     std::string_view bytes;
 };
 
-using ReadFn = ReadResult (*)(const InputFile& file, const ReadOptions& options,
+using ReadFn = ReadResult (*)(const InputFile& file,
+                              const ReadOptions& options,
                               const Progress& progress);
 /// True if the reader takes a file that starts like @p head.
 using SniffFn = bool (*)(const FileHead& head);

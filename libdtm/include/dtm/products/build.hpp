@@ -41,14 +41,17 @@ struct BuildOptions {
 /// Reads @p inputs (io::load_inputs), takes their surface (products::surface) and runs the
 /// product steps, each writing its files into one io::AtomicDirectory: tin.ply, tin.2dm,
 /// surface.vtp (step "write_tin"), dem.tif, hillshade.tif ("dem"), contours.gpkg ("contours"),
-/// map.pdf ("map"), dtm.qgs with a print layout of the map sheet ("project"), then report.json; only when all are complete do they move into
+/// map.pdf ("map"), dtm.qgs with a print layout of the map sheet ("project"), then report.json;
+/// only when all are complete do they move into
 /// @p out_dir (created if needed; other files there are left alone). The steps are listed in
 /// src/products/build.cpp: a new product is one more step there, with its options here and its
 /// section in BuildReport.
 /// @returns the report, as written to report.json.
 /// @throws OptionError if @p out_dir is a file (`out_dir`); InputError for unreadable inputs or a
 /// surface without triangles; Error; Cancelled. @p out_dir is unchanged whenever it throws.
-BuildReport build(const io::LoadOptions& inputs, const std::filesystem::path& out_dir,
-                  const BuildOptions& options = {}, const Progress& progress = {});
+BuildReport build(const io::LoadOptions& inputs,
+                  const std::filesystem::path& out_dir,
+                  const BuildOptions& options = {},
+                  const Progress& progress = {});
 
 }  // namespace dtm::products

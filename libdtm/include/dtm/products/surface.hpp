@@ -62,7 +62,8 @@ struct Surface {
 /// soon as the vertices are merged). When boundary or hole vertices took the height of the
 /// surface, the summaries of the inputs with rings say so.
 /// @throws InputError (from triangulate); Cancelled.
-[[nodiscard]] Surface surface(io::LoadedInputs& inputs, const SurfaceOptions& options,
+[[nodiscard]] Surface surface(io::LoadedInputs& inputs,
+                              const SurfaceOptions& options,
                               const Progress& progress = {});
 
 }  // namespace dtm::products

@@ -2,7 +2,8 @@
 // The drawing page on cairo (https://www.cairographics.org/manual/): a PDF, SVG or image surface
 // scaled so that one user unit is a millimetre. Text is drawn with cairo's own text API, so a PDF
 // keeps it as text (pdftotext finds it; rotated text as one ActualText span per string, so it
-// is read as a word); a halo is the glyph outline stroked in the halo colour underneath. The surface writes into an AtomicOutput's temporary, renamed on finish().
+// is read as a word); a halo is the glyph outline stroked in the halo colour underneath. The
+// surface writes into an AtomicOutput's temporary, renamed on finish().
 #include "dtm/io/draw/canvas.hpp"
 
 #include <cairo-pdf.h>
@@ -12,8 +13,8 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <numbers>
 #include <memory>
+#include <numbers>
 #include <optional>
 
 #include "dtm/core/error.hpp"
@@ -88,9 +89,9 @@ void show_as_one_cluster(cairo_t* cr, const std::string& text, double x, double 
     int cluster_count = 0;
     cairo_text_cluster_flags_t flags{};
     const int bytes = static_cast<int>(text.size());
-    const cairo_status_t status = cairo_scaled_font_text_to_glyphs(
-        cairo_get_scaled_font(cr), x, y, text.c_str(), bytes, &glyphs, &glyph_count, &clusters,
-        &cluster_count, &flags);
+    const cairo_status_t status =
+        cairo_scaled_font_text_to_glyphs(cairo_get_scaled_font(cr), x, y, text.c_str(), bytes,
+                                         &glyphs, &glyph_count, &clusters, &cluster_count, &flags);
     if (status != CAIRO_STATUS_SUCCESS) {
         cairo_show_text(cr, text.c_str());
         return;
@@ -123,20 +124,20 @@ struct Canvas::Impl {
         double scale = points_per_mm;
         switch (kind) {
             case Kind::pdf:
-                surface = cairo_pdf_surface_create(temp.c_str(), w * points_per_mm,
-                                                   h * points_per_mm);
+                surface =
+                    cairo_pdf_surface_create(temp.c_str(), w * points_per_mm, h * points_per_mm);
                 break;
             case Kind::svg:
-                surface = cairo_svg_surface_create(temp.c_str(), w * points_per_mm,
-                                                   h * points_per_mm);
+                surface =
+                    cairo_svg_surface_create(temp.c_str(), w * points_per_mm, h * points_per_mm);
                 break;
             case Kind::png: {
                 scale = dpi / 25.4;
                 const double px = std::ceil(w * scale);
                 const double py = std::ceil(h * scale);
                 if (px * py > 4e8) {
-                    throw UsageError("a PNG of " + std::to_string(px) + " x " +
-                                     std::to_string(py) + " pixels is too large; lower the dpi");
+                    throw UsageError("a PNG of " + std::to_string(px) + " x " + std::to_string(py) +
+                                     " pixels is too large; lower the dpi");
                 }
                 surface = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, static_cast<int>(px),
                                                      static_cast<int>(py));
@@ -191,7 +192,8 @@ void Canvas::polyline(std::span<const Point2> points, const Stroke& stroke, bool
     cairo_stroke(impl_->cr);
 }
 
-void Canvas::polygon(std::span<const std::vector<Point2>> rings, const Color& fill,
+void Canvas::polygon(std::span<const std::vector<Point2>> rings,
+                     const Color& fill,
                      const Stroke* outline) {
     cairo_t* cr = impl_->cr;
     cairo_new_path(cr);
@@ -216,8 +218,8 @@ void Canvas::polygon(std::span<const std::vector<Point2>> rings, const Color& fi
     }
 }
 
-void Canvas::rectangle(Point2 top_left, double width, double height, const Color* fill,
-                       const Stroke* outline) {
+void Canvas::rectangle(
+    Point2 top_left, double width, double height, const Color* fill, const Stroke* outline) {
     cairo_t* cr = impl_->cr;
     cairo_new_path(cr);
     cairo_rectangle(cr, top_left.x, top_left.y, width, height);
@@ -287,8 +289,12 @@ TextSize Canvas::measure(std::string_view text, const TextStyle& style) const {
     return measure_in(impl_->cr, text, style);
 }
 
-void Canvas::image(std::span<const std::uint8_t> rgba, int columns, int rows, Point2 top_left,
-                   double width_mm, double height_mm) {
+void Canvas::image(std::span<const std::uint8_t> rgba,
+                   int columns,
+                   int rows,
+                   Point2 top_left,
+                   double width_mm,
+                   double height_mm) {
     if (columns <= 0 || rows <= 0 ||
         rgba.size() < static_cast<std::size_t>(columns) * static_cast<std::size_t>(rows) * 4) {
         throw Error("draw: the image buffer does not hold columns x rows RGBA pixels");
@@ -298,13 +304,17 @@ void Canvas::image(std::span<const std::uint8_t> rgba, int columns, int rows, Po
     unsigned char* data = cairo_image_surface_get_data(img);
     const int stride = cairo_image_surface_get_stride(img);
     for (int r = 0; r < rows; ++r) {
-        auto* row = reinterpret_cast<std::uint32_t*>(data + static_cast<std::ptrdiff_t>(r) * stride);
+        auto* row =
+            reinterpret_cast<std::uint32_t*>(data + static_cast<std::ptrdiff_t>(r) * stride);
         for (int c = 0; c < columns; ++c) {
             const std::uint8_t* p =
                 rgba.data() + (static_cast<std::size_t>(r) * static_cast<std::size_t>(columns) +
-                               static_cast<std::size_t>(c)) * 4;
+                               static_cast<std::size_t>(c)) *
+                                  4;
             const std::uint32_t a = p[3];
-            const auto pre = [a](std::uint8_t v) { return (static_cast<std::uint32_t>(v) * a + 127) / 255; };
+            const auto pre = [a](std::uint8_t v) {
+                return (static_cast<std::uint32_t>(v) * a + 127) / 255;
+            };
             row[c] = (a << 24) | (pre(p[0]) << 16) | (pre(p[1]) << 8) | pre(p[2]);
         }
     }

@@ -214,8 +214,9 @@ void finish_voronoi(VoronoiGraph&& graph,
         }
         if (finite && !placed[e.origin]) {
             placed[e.origin] = true;
-            positions[e.origin] = geom::circumcentre(sites.xy[he[h].face], sites.xy[he[h ^ 1u].face],
-                                               sites.xy[he[he[h ^ 1u].next ^ 1u].face]);
+            positions[e.origin] =
+                geom::circumcentre(sites.xy[he[h].face], sites.xy[he[h ^ 1u].face],
+                                   sites.xy[he[he[h ^ 1u].next ^ 1u].face]);
         }
     }
     d.vertices = std::move(positions);

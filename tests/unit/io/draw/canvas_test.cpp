@@ -60,9 +60,9 @@ TEST(Canvas, RotatedTextIsExtractedAsWholeWords) {
     // default, -raw and -layout modes.
     test::ScratchDir dir;
     const auto path = dir / "labels.pdf";
-    const std::vector<std::pair<std::string, double>> labels{
-        {"245", 30.0}, {"250.5", -60.0}, {"1255", 75.0}, {"260", 180.0}, {"-3.25", 200.0},
-        {"Ústí", 145.0}};
+    const std::vector<std::pair<std::string, double>> labels{{"245", 30.0},    {"250.5", -60.0},
+                                                             {"1255", 75.0},   {"260", 180.0},
+                                                             {"-3.25", 200.0}, {"Ústí", 145.0}};
     {
         Canvas c(path, 200.0, 200.0);
         TextStyle style;

@@ -14,8 +14,7 @@ namespace {
 namespace io = dtm::io;
 namespace test = dtm::test;
 
-TEST(RasterDem, AsciiGridCellsBecomeCentrePointsWithoutNoData)
-{
+TEST(RasterDem, AsciiGridCellsBecomeCentrePointsWithoutNoData) {
     const auto path = test::data_path("dem/small.asc");
     EXPECT_EQ(io::find_reader(path).name, "ascii-grid");
     EXPECT_EQ(io::find_reader(test::data_path("readers/count_line.xyz")).name, "csv");
@@ -32,8 +31,7 @@ TEST(RasterDem, AsciiGridCellsBecomeCentrePointsWithoutNoData)
     EXPECT_EQ(r.terrain.points[4].z, 15.0);
 }
 
-TEST(RasterDem, GeoTiffKeepsItsCrsAndEveryCell)
-{
+TEST(RasterDem, GeoTiffKeepsItsCrsAndEveryCell) {
     if (!test::shared_data_available("dem-whiteboxR/DEM.tif")) GTEST_SKIP();
     const auto path = test::shared_data_path("dem-whiteboxR/DEM.tif");
     EXPECT_EQ(io::find_reader(path).name, "raster");

@@ -66,7 +66,9 @@ void project_to_utm(TerrainInput& terrain, UtmZone zone, const std::string& sour
 
 /// Transforms every vertex and seed from @p from_wkt to @p to_wkt with GDAL/PROJ.
 /// @throws InputError naming @p source_name if a point cannot be transformed.
-void transform_terrain(TerrainInput& terrain, const std::string& from_wkt,
-                       const std::string& to_wkt, const std::string& source_name);
+void transform_terrain(TerrainInput& terrain,
+                       const std::string& from_wkt,
+                       const std::string& to_wkt,
+                       const std::string& source_name);
 
 }  // namespace dtm::io

@@ -24,8 +24,8 @@ struct QgisLayout {
     std::string name = "Map sheet";
     double width_mm = 420.0;
     double height_mm = 297.0;
-    Box2 extent;           ///< the map item's extent (CRS units): the whole page
-    double scale = 500.0;  ///< 1 : scale
+    Box2 extent;                 ///< the map item's extent (CRS units): the whole page
+    double scale = 500.0;        ///< 1 : scale
     double grid_interval = 0.0;  ///< grid crosses every this many CRS units (0: no grid)
     bool sjtsk = false;          ///< grid labels as positive S-JTSK Y, X (Y = -E, X = -N)
     std::string title;
@@ -50,8 +50,8 @@ struct QgisProject {
     std::filesystem::path contours;   ///< GeoPackage or shapefile (ogr provider)
     std::string contour_layer;        ///< layer inside a GeoPackage; empty for a shapefile
     std::string elevation_field = "elevation";
-    /// Boolean (or 0/1) field that is true on index contours (ContourWriter writes `index`). Empty: index contours are recognised from
-    /// their elevation, a multiple of index_interval.
+    /// Boolean (or 0/1) field that is true on index contours (ContourWriter writes `index`). Empty:
+    /// index contours are recognised from their elevation, a multiple of index_interval.
     std::string index_field;
     double index_interval = 5.0;
     std::filesystem::path mesh;  ///< 2DM TIN (mdal provider)

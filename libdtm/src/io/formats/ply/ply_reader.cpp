@@ -8,8 +8,8 @@
 // Reference: Greg Turk, "The PLY Polygon File Format" (1994).
 #include <algorithm>
 #include <bit>
-#include <charconv>
 #include <cerrno>
+#include <charconv>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -461,8 +461,7 @@ LoadedTin read_tin_ply(const fs::path& path) {
     return {std::move(reader.tin), header.crs_wkt};
 }
 
-ReadResult read_ply(const InputFile& file, const ReadOptions&, const Progress& progress)
-{
+ReadResult read_ply(const InputFile& file, const ReadOptions&, const Progress& progress) {
     if (file.role != InputRole::points) {
         throw InputError(file.path, 0, 0,
                          "a dtm PLY TIN is a survey input (the surface itself), not a line or "

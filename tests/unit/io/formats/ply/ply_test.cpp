@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: MIT
+#include "dtm/io/formats/ply.hpp"
+
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -9,7 +11,6 @@
 #include <vector>
 
 #include "dtm/core/error.hpp"
-#include "dtm/io/formats/ply.hpp"
 #include "dtm/io/tin_file.hpp"
 #include "support/test_support.hpp"
 
