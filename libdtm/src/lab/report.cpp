@@ -14,6 +14,7 @@
 
 #include "dtm/core/error.hpp"
 #include "dtm/io/atomic_file.hpp"
+#include "dtm/io/json_writer.hpp"
 #include "dtm/lab/compare.hpp"
 #include "lab/report_detail.hpp"
 
@@ -37,34 +38,7 @@ std::string csv_field(const std::string& s) {
     return out + "\"";
 }
 
-std::string json_string(const std::string& s) {
-    std::string out = "\"";
-    for (const char c : s) {
-        switch (c) {
-            case '"':
-                out += "\\\"";
-                break;
-            case '\\':
-                out += "\\\\";
-                break;
-            case '\n':
-                out += "\\n";
-                break;
-            case '\t':
-                out += "\\t";
-                break;
-            default:
-                if (static_cast<unsigned char>(c) < 0x20) {
-                    char buffer[8];
-                    std::snprintf(buffer, sizeof buffer, "\\u%04x", c);
-                    out += buffer;
-                } else {
-                    out += c;
-                }
-        }
-    }
-    return out + "\"";
-}
+using io::json_string;  // the one JSON string escaper (dtm/io/json_writer.hpp)
 
 std::string json_number(double v) {
     if (!std::isfinite(v)) return "null";
