@@ -101,7 +101,13 @@ int run_method(const RunArgs& a) {
         }
         options.params[p.substr(0, eq)] = p.substr(eq + 1);
     }
-    io::check_output(a.output, io::OutputKind::tin, "output");
+    // The output as the method writes it: a folder of TINs, polygon faces (their writer names
+    // its extensions) or one TIN.
+    const io::OutputKind kind =
+        method->output == methods::Output::all_triangulations ? io::OutputKind::folder
+        : method->output == methods::Output::polygon_faces    ? io::OutputKind::any_file
+                                                              : io::OutputKind::tin;
+    io::check_output(a.output, kind, "output");
     if (!a.input.breaklines.empty() && !method->takes_constraints) {
         throw UsageError("methods run: method '" + a.name + "' takes no breaklines");
     }
