@@ -25,22 +25,7 @@ python=/usr/bin/python3
 
 echo "== work directory: $work"
 echo "== generating $points points"
-"$python" - "$points" "$work/points.csv" "$xmin" "$ymin" "$xmax" "$ymax" <<'PY'
-import math, random, sys
-n, path = int(sys.argv[1]), sys.argv[2]
-x0, y0, x1, y1 = map(float, sys.argv[3:7])
-random.seed(20261124)
-with open(path, "w") as f:
-    f.write("x,y,z\n")
-    pts = [(x0, y0), (x1, y0), (x0, y1), (x1, y1)]
-    pts += [(random.uniform(x0, x1), random.uniform(y0, y1)) for _ in range(n - 4)]
-    for x, y in pts:
-        x, y = round(x, 3), round(y, 3)
-        u, v = x - x0, y - y0
-        z = (300.0 + 40.0 * math.sin(u / 300.0) * math.cos(v / 250.0) + 0.03 * u
-             + 6.0 * math.sin(u / 37.0 + v / 53.0) + 2.0 * math.cos(u / 11.0 - v / 17.0))
-        f.write(f"{x:.3f},{y:.3f},{z:.3f}\n")
-PY
+"$python" "$here/terrain_points.py" "$points" "$work/points.csv" "$xmin" "$ymin" "$xmax" "$ymax"
 
 best_time() {  # best wall time of three runs of the command
     local best=""
@@ -68,7 +53,7 @@ if [[ "$natural" == "--natural" ]]; then
     nat=$(best_time grid natural)
     echo "dtm grid --interpolation natural: ${nat} s ($(echo "$nat / $linear" | bc -l | awk '{printf "%.2f", $1}') x linear)"
 fi
-"$python" - "$work" "$xmin" "$ymin" <<'PY'
+"$python" - "$work" "$xmin" "$ymin" "$here" <<'PY'
 import math, sys
 import numpy as np
 from osgeo import gdal
@@ -78,8 +63,9 @@ cols, rows = ds.RasterXSize, ds.RasterYSize
 u = gt[0] + (np.arange(cols) + 0.5) * gt[1] - x0
 v = gt[3] + (np.arange(rows) + 0.5) * gt[5] - y0
 U, V = np.meshgrid(u, v)
-truth = (300.0 + 40.0 * np.sin(U / 300.0) * np.cos(V / 250.0) + 0.03 * U
-         + 6.0 * np.sin(U / 37.0 + V / 53.0) + 2.0 * np.cos(U / 11.0 - V / 17.0))
+sys.path.insert(0, sys.argv[4])
+from terrain_points import height
+truth = height(U, V, np.sin, np.cos)
 for name in ("linear", "cubic", "natural"):
     try:
         a = gdal.Open(f"{work}/{name}.tif").ReadAsArray().astype(float)
