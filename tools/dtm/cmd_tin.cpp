@@ -1,24 +1,20 @@
 // SPDX-License-Identifier: MIT
 // `dtm tin`: read points and breaklines, build the constrained Delaunay TIN, write it by extension.
 // Thin: parse -> options -> io::load_inputs -> products::surface -> io::write_tin -> report.
-#include <array>
 #include <chrono>
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 
 #include "command.hpp"
 #include "contour_flats_args.hpp"
-#include "dtm/algo/criteria.hpp"
-#include "dtm/algo/optimize.hpp"
 #include "dtm/algo/triangulate.hpp"
 #include "dtm/algo/validate.hpp"
 #include "dtm/core/error.hpp"
-#include "dtm/io/atomic_file.hpp"
 #include "dtm/io/json_writer.hpp"
 #include "dtm/io/output_check.hpp"
 #include "dtm/io/tin_file.hpp"
 #include "dtm/products/surface.hpp"
+#include "dtm/products/tin_report.hpp"
 #include "input_args.hpp"
 #include "terminal_progress.hpp"
 #include "tin_args.hpp"
@@ -42,134 +38,6 @@ double since(std::chrono::steady_clock::time_point t) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 
-/// The optimisation's figures (criterion, flips, quality before and after) as the member
-/// "optimize" of the open object, when a criterion other than delaunay was applied.
-void optimize_json(io::JsonWriter& json, const OptimizeStats& o) {
-    using Layout = io::JsonWriter::Layout;
-    if (o.criterion == Criterion::delaunay) return;
-    json.begin_object("optimize", Layout::inline_);
-    json.value("criterion", criterion_name(o.criterion));
-    json.value("flips", static_cast<std::size_t>(o.flips));
-    json.value("improvable_before", o.improvable_before);
-    json.value("improvable_after", o.improvable_after);
-    json.value("converged", o.converged);
-    for (const auto& [key, q] :
-         {std::pair{"quality_before", &o.before}, {"quality_after", &o.after}}) {
-        json.begin_object(key, Layout::inline_);
-        json.value("worst", q->worst);
-        json.value("mean", q->mean);
-        json.value("sum", q->sum);
-        json.end();
-    }
-    json.value("seconds", o.seconds);
-    json.end();
-}
-
-/// --report: every merged duplicate and every height conflict (and the optimisation).
-void write_report(const std::string& path, const TriangulateResult& r) {
-    using Layout = io::JsonWriter::Layout;
-    io::JsonWriter json;
-    json.begin_object();
-    json.value("duplicates_merged", r.merges.size());
-    json.begin_array("merges");
-    const auto point = [&json](const char* key, const Point3& p) {
-        json.begin_array(key, Layout::inline_);
-        for (const double c : {p.x, p.y, p.z}) json.value({}, c);
-        json.end();
-    };
-    for (const DuplicateMerge& m : r.merges) {
-        json.begin_object({}, Layout::inline_);
-        json.value("kept_input", m.kept_input);
-        json.value("merged_input", m.merged_input);
-        point("kept", m.kept);
-        point("merged", m.merged);
-        json.end();
-    }
-    json.end();
-    json.begin_array("conflicts");
-    for (const ConstraintConflict& c : r.conflicts) {
-        json.begin_object({}, Layout::inline_);
-        json.value("x", c.at.x);
-        json.value("y", c.at.y);
-        json.value("z_first", c.z_first);
-        json.value("z_second", c.z_second);
-        json.end();
-    }
-    json.end();
-    optimize_json(json, r.stats.optimize);
-    json.end();
-    io::AtomicOutput out(path);
-    {
-        std::ofstream f(out.temp_path(), std::ios::binary);
-        f << json.str();
-        if (!f) throw Error("cannot write the report " + path);
-    }
-    out.commit();
-}
-
-/// --stats: one line of counts and timings.
-std::string stats_json(const products::Surface& surface,
-                       std::size_t skipped_lines,
-                       const std::array<double, 3>& seconds) {
-    using Layout = io::JsonWriter::Layout;
-    const TriangulateResult& result = surface.result;
-    const TriangulateStats& s = result.stats;
-    io::JsonWriter json;
-    json.begin_object({}, Layout::inline_);
-    json.value("points_in", s.points_in);
-    json.value("duplicates_merged", s.duplicates_merged);
-    json.value("skipped_lines", skipped_lines);
-    json.value("vertices", result.tin.vertices.size());
-    json.value("triangles", result.tin.triangles.size());
-    json.value("constrained_edges", result.tin.constraints.size());
-    json.value("intersections", s.intersections);
-    json.value("conflicts", s.conflicts);
-    json.value("removed_triangles", s.removed_triangles);
-    if (surface.contour_flats) {
-        const ContourFlatsReport& f = *surface.contour_flats;
-        json.begin_object("contour_flats", Layout::inline_);
-        json.value("flat_before", f.flat_before);
-        json.value("triangles_before", f.triangles_before);
-        json.value("flat_after", f.flat_after);
-        json.value("points_added", f.points_added);
-        json.value("regions", f.regions);
-        json.value("real_flats", f.true_flats);
-        json.value("estimated_peaks", f.peaks.size());
-        json.end();
-    }
-    json.begin_object("seconds", Layout::inline_);
-    json.value("read", seconds[0]);
-    json.value("triangulate", s.seconds_triangulate);
-    json.value("constrain", s.seconds_constrain);
-    json.value("write", seconds[1]);
-    json.value("total", seconds[2]);
-    json.end();
-    optimize_json(json, s.optimize);
-    json.end();
-    return json.str();
-}
-
-/// --check: topology, every breakline, and the exact constrained Delaunay property (or, under
-/// --optimize, local optimality of every unconstrained edge under the criterion).
-void check_tin(const TriangulateResult& result, const TerrainInput& input, Criterion optimize) {
-    const Tin& tin = result.tin;
-    std::string problems;
-    CheckReport optimal =
-        optimize == Criterion::delaunay ? verify_constrained_delaunay(tin) : CheckReport{};
-    if (optimize != Criterion::delaunay) {
-        for (const auto& [a, b] : improvable_edges(tin, optimize, 5)) {
-            optimal.problems.push_back("edge " + std::to_string(a) + "-" + std::to_string(b) +
-                                       " is not locally optimal under " +
-                                       std::string(criterion_name(optimize)));
-        }
-    }
-    for (const CheckReport& r :
-         {verify_topology(tin), optimal, verify_constraints(tin, input, result.input_to_vertex)}) {
-        problems += r.text();
-    }
-    if (!problems.empty()) throw Error("the TIN failed its checks:\n" + problems);
-}
-
 int run_tin(const TinArgs& a) {
     io::check_output(a.output, io::OutputKind::tin, "output");
     if (!a.report.empty()) io::check_output(a.report, io::OutputKind::any_file, "report");
@@ -187,10 +55,12 @@ int run_tin(const TinArgs& a) {
         print_contour_flats(*surface.contour_flats, "tin");
     }
     const TriangulateResult& result = surface.result;
-    if (a.check) {
+    if (a.check) {  // topology, every breakline, Delaunay (or local optimality under --optimize)
         kept.points.insert(kept.points.end(), surface.added_points.begin(),
                            surface.added_points.end());
-        check_tin(result, kept, a.triangulate.optimize);
+        const CheckReport checked =
+            verify_tin(result.tin, kept, result.input_to_vertex, a.triangulate.optimize);
+        if (!checked.ok()) throw Error("the TIN failed its checks:\n" + checked.text());
     }
 
     const auto write_start = std::chrono::steady_clock::now();
@@ -198,7 +68,7 @@ int run_tin(const TinArgs& a) {
     write_options.crs_wkt = loaded.crs_wkt;
     write_options.ascii = a.ascii;
     io::write_tin(result.tin, a.output, write_options);
-    if (!a.report.empty()) write_report(a.report, result);
+    if (!a.report.empty()) products::write_tin_report(a.report, result);
     progress.report(1.0, "done");
     const double write_s = since(write_start);
 
@@ -210,7 +80,8 @@ int run_tin(const TinArgs& a) {
                   << io::json_number(result.conflicts[0].at.y) << "; --report lists them all)\n";
     }
     if (a.stats)
-        std::cout << stats_json(surface, loaded.skipped_lines, {read_s, write_s, since(start)})
+        std::cout << products::tin_stats_json(surface, loaded.skipped_lines,
+                                              {read_s, write_s, since(start)})
                   << std::flush;
     return 0;
 }

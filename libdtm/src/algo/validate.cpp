@@ -130,6 +130,27 @@ private:
 
 }  // namespace
 
+CheckReport verify_tin(const Tin& tin,
+                       const TerrainInput& input,
+                       std::span<const VertexIndex> input_to_vertex,
+                       Criterion criterion) {
+    CheckReport all = verify_topology(tin);
+    const auto append = [&all](const CheckReport& r) {
+        all.problems.insert(all.problems.end(), r.problems.begin(), r.problems.end());
+    };
+    if (criterion == Criterion::delaunay) {
+        append(verify_constrained_delaunay(tin));
+    } else {
+        for (const auto& [a, b] : improvable_edges(tin, criterion, 5)) {
+            all.problems.push_back("edge " + std::to_string(a) + "-" + std::to_string(b) +
+                                   " is not locally optimal under " +
+                                   std::string(criterion_name(criterion)));
+        }
+    }
+    append(verify_constraints(tin, input, input_to_vertex));
+    return all;
+}
+
 std::string CheckReport::text() const {
     std::ostringstream out;
     for (const std::string& p : problems) out << p << '\n';

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "dtm/algo/criteria.hpp"
 #include "dtm/core/terrain.hpp"
 #include "dtm/core/tin.hpp"
 
@@ -37,6 +38,15 @@ struct CheckReport {
 [[nodiscard]] CheckReport verify_constraints(const Tin& tin,
                                              const TerrainInput& input,
                                              std::span<const VertexIndex> input_to_vertex = {});
+
+/// The whole check of a TIN made from @p input (`dtm tin --check`): verify_topology, then the
+/// exact constrained Delaunay property, or for a TIN optimised under another @p criterion local
+/// optimality of every unconstrained edge (the first five offenders listed), then
+/// verify_constraints; the problems of all three in that order.
+[[nodiscard]] CheckReport verify_tin(const Tin& tin,
+                                     const TerrainInput& input,
+                                     std::span<const VertexIndex> input_to_vertex,
+                                     Criterion criterion = Criterion::delaunay);
 
 /// Sum of triangle areas in xy (compensated summation).
 [[nodiscard]] double tin_area(const Tin& tin);
