@@ -4,8 +4,8 @@
 //   dtm methods run NAME INPUT -o OUT.ply [--stats] [--param KEY=VALUE]... [--seed S]
 //   dtm methods compare [--methods a,b] [--n 1000,10000] [--dist uniform,gauss] [--repeat R]
 //                       [--sets S] [--seed S] [--threads T] [--cap-seconds C] -o DIR
-// Thin: parse -> methods::registry / MethodFn -> io::write_tin (or, by the method's output,
-// io::write_polygon_faces / a folder of TINs) -> print; compare: parse -> lab::run_compare ->
+// Thin: parse -> methods::registry / MethodFn on lab::method_points -> lab::write_method_output
+// -> print; compare: parse -> lab::run_compare ->
 // lab::write_compare -> print.
 #include <chrono>
 #include <cstdio>
@@ -17,13 +17,11 @@
 #include <vector>
 
 #include "command.hpp"
-#include "dtm/algo/line_heights.hpp"
 #include "dtm/core/error.hpp"
-#include "dtm/io/faces_file.hpp"
 #include "dtm/io/json_writer.hpp"
 #include "dtm/io/output_check.hpp"
-#include "dtm/io/tin_file.hpp"
 #include "dtm/lab/compare.hpp"
+#include "dtm/lab/run.hpp"
 #include "dtm/methods/registry.hpp"
 #include "input_args.hpp"
 #include "terminal_progress.hpp"
@@ -70,18 +68,6 @@ struct RunArgs {
     bool quiet = false;
 };
 
-std::string counters_json(const methods::MethodCounters& c) {
-    std::string out = "{\"orient_calls\": " + std::to_string(c.orient_calls) +
-                      ", \"incircle_calls\": " + std::to_string(c.incircle_calls) +
-                      ", \"flips\": " + std::to_string(c.flips) +
-                      ", \"walk_steps\": " + std::to_string(c.walk_steps) +
-                      ", \"peak_bytes\": " + std::to_string(c.peak_bytes);
-    for (const auto& [key, value] : c.extra) {
-        out += ", " + io::json_string(key) + ": " + std::to_string(value);
-    }
-    return out + "}";
-}
-
 int run_method(const RunArgs& a) {
     const methods::MethodInfo* method = methods::find_method(a.name);
     if (method == nullptr) {
@@ -101,58 +87,25 @@ int run_method(const RunArgs& a) {
         }
         options.params[p.substr(0, eq)] = p.substr(eq + 1);
     }
-    // The output as the method writes it: a folder of TINs, polygon faces (their writer names
-    // its extensions) or one TIN.
-    const io::OutputKind kind =
-        method->output == methods::Output::all_triangulations ? io::OutputKind::folder
-        : method->output == methods::Output::polygon_faces    ? io::OutputKind::any_file
-                                                              : io::OutputKind::tin;
-    io::check_output(a.output, kind, "output");
+    io::check_output(a.output, lab::method_output_kind(*method), "output");
     if (!a.input.breaklines.empty() && !method->takes_constraints) {
         throw UsageError("methods run: method '" + a.name + "' takes no breaklines");
     }
     const Progress progress = terminal_progress("methods", a.quiet || a.stats);
     io::LoadedInputs loaded = io::load_inputs(to_load_options(a.input), progress.sub(0.0, 0.1));
-    // 2-D breakline vertices take the height of a survey point at their position, as in
-    // triangulate(); then they join the points and each breakline segment becomes a constraint.
-    (void)resolve_line_heights(loaded.terrain);
-    std::vector<Point3> points = std::move(loaded.terrain.points);
-    std::vector<methods::Segment> segments;
-    for (const Polyline& line : loaded.terrain.breaklines) {
-        for (std::size_t i = 0; i < line.points.size(); ++i) {
-            points.push_back(line.points[i]);
-            if (i > 0) {
-                const auto b = static_cast<VertexIndex>(points.size() - 1);
-                segments.emplace_back(b - 1, b);
-            }
-        }
-    }
-    if (!segments.empty() && !method->takes_constraints) {
+    const lab::MethodPoints input = lab::method_points(loaded.terrain);
+    if (!input.segments.empty() && !method->takes_constraints) {
         throw UsageError("methods run: method '" + a.name + "' takes no breaklines");
     }
     const auto start = std::chrono::steady_clock::now();
-    const methods::MethodResult result =
-        method->run(methods::MethodInput{points, segments}, options, progress.sub(0.1, 0.95));
+    const methods::MethodResult result = method->run(
+        methods::MethodInput{input.points, input.segments}, options, progress.sub(0.1, 0.95));
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (method->output == methods::Output::all_triangulations) {
-        io::write_tin_series(result.all, a.output, loaded.crs_wkt);
-    } else if (method->output == methods::Output::polygon_faces) {
-        io::write_polygon_faces(result.tin.vertices, result.faces, a.output,
-                                {loaded.crs_wkt, false});
-    } else {
-        io::TinWriteOptions write_options;
-        write_options.crs_wkt = loaded.crs_wkt;
-        io::write_tin(result.tin, a.output, write_options);
-    }
+    lab::write_method_output(*method, result, a.output, loaded.crs_wkt);
     progress.report(1.0, "done");
     if (a.stats) {
-        std::cout << "{\"method\": " << io::json_string(a.name) << ", \"points\": " << points.size()
-                  << ", \"vertices\": " << result.tin.vertices.size()
-                  << ", \"triangles\": " << result.tin.triangles.size()
-                  << ", \"seconds\": " << io::json_number(seconds)
-                  << ", \"counters\": " << counters_json(result.counters)
-                  << (result.stats_json.empty() ? "" : ", ") << result.stats_json << "}"
+        std::cout << lab::method_stats_json(*method, input.points.size(), result, seconds)
                   << std::endl;
     }
     return 0;
