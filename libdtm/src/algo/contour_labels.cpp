@@ -272,6 +272,7 @@ private:
         // Baseline against the walking direction: up = right of the walk = uphill.
         label.box = {
             {(p0.x + p1.x) / 2.0, (p0.y + p1.y) / 2.0}, {-walk.x, -walk.y}, w / 2.0, h / 2.0};
+        label.anchor = path.point_at(s);
         const double gap = o_.gap_mm * mm_;
         label.cut_begin = path.closed ? path.wrap(s0 - gap) : std::max(s0 - gap, 0.0);
         label.cut_end = path.closed ? path.wrap(s1 + gap) : std::min(s1 + gap, path.length());

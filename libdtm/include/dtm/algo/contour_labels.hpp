@@ -75,6 +75,9 @@ struct ContourLabel {
     /// The text's rectangle: centre, baseline direction (box.axis) and half sizes. The up
     /// vector box.up() points uphill.
     LabelBox box;
+    /// The point on the line at the label's centre along it (the box centre lies on the chord,
+    /// up to max_deviation x height off the line): the contour's level holds here exactly.
+    Point2 anchor;
     double cut_begin = 0.0;  ///< arc length along the line (CRS units) where its gap starts
     double cut_end = 0.0;    ///< ... and ends (cut_end < cut_begin: the gap wraps a ring's start)
     bool crosses_lines = false;  ///< lines without a text pass under it (see options)
