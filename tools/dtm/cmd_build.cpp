@@ -49,9 +49,11 @@ int run_build(BuildArgs& args) {
     const Progress progress = terminal_progress("build", args.quiet);
     args.build.wording = cli_text;
     args.build.flat_areas.assign(args.input.flat_areas.begin(), args.input.flat_areas.end());
+    args.build.dem = args.input.dem;
     const products::BuildReport report =
         products::build(to_load_options(args.input), args.out_dir, args.build, progress);
     if (report.contour_flats && !args.quiet) print_contour_flats(*report.contour_flats, "build");
+    if (report.dem_cells && !args.quiet) print_dem_report(*report.dem_cells, "build");
     if (!args.quiet) print_summary(report, args.out_dir);
     if (report.crs_wkt.empty()) {
         std::fprintf(stderr,
@@ -88,6 +90,7 @@ Command build_command() {
                     ->check(CLI::PositiveNumber);
                 add_tin_options(app, args->build.triangulate);
                 add_contour_flats_options(app, args->build.contour_flats);
+                add_dem_options(app, args->input.dem);
                 add_interpolation_option(app, "--interpolation", args->build.interpolation);
                 app.add_flag("-q,--quiet", args->quiet, "No progress bar");
                 return [args]() { return run_build(*args); };

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 // dtm contour INPUTS... -o OUT --interval I [--base B] [--levels L1,L2,...] [--index-every K]
 //             [--smooth N] [--interpolation linear|cubic|natural] [--subdivisions M]
-// Contour lines traced exactly on the TIN (parse -> options -> library -> report).
+//             [--spot-heights] [--no-labels] [--label-scale S] [--label-height MM]
+// Contour lines traced exactly on the TIN, with their labels in DXF and GeoPackage files
+// (parse -> options -> library -> report).
 #include <iostream>
 #include <memory>
 #include <string>
@@ -15,6 +17,7 @@
 #include "dtm/io/contour_writer.hpp"
 #include "dtm/io/inputs.hpp"
 #include "dtm/io/output_check.hpp"
+#include "dtm/products/contours.hpp"
 #include "dtm/products/surface.hpp"
 #include "input_args.hpp"
 #include "interpolation_args.hpp"
@@ -30,6 +33,8 @@ struct ContourArgs {
     products::ContourFlats flats = products::ContourFlats::automatic;
     std::string output;
     ContourOptions contour;
+    products::ContourFileOptions file;
+    bool no_labels = false;
     bool quiet = false;
 };
 
@@ -38,6 +43,10 @@ int run_contour(ContourArgs args) {
         throw UsageError("contour: give --interval or --levels");
     }
     io::check_output(args.output, io::OutputKind::contours, "output");
+    args.file.labels = !args.no_labels;
+    if (args.file.spot_heights && !io::contour_file_holds_annotation(args.output)) {
+        throw UsageError("contour: --spot-heights need a .dxf or .gpkg output, not " + args.output);
+    }
     const Progress progress = terminal_progress("contour", args.quiet);
     io::LoadedInputs inputs = io::load_inputs(to_load_options(args.input), progress.sub(0.0, 0.2));
     const products::Surface surface = products::surface(
@@ -45,14 +54,24 @@ int run_contour(ContourArgs args) {
     if (surface.contour_flats && !args.quiet) {
         print_contour_flats(*surface.contour_flats, "contour");
     }
+    if (surface.dem && !args.quiet) print_dem_report(*surface.dem, "contour");
     const Tin& tin = surface.result.tin;
     args.contour.threads = args.tin.threads;
     args.contour.gradients.threads = args.tin.threads;
     args.contour.gradients.crease_at_breaklines = !surface.contour_input;
-    io::ContourWriter writer(args.output, {.crs_wkt = inputs.crs_wkt});
-    contour(tin, args.contour, writer, progress.sub(0.6, 1.0));
-    writer.commit();
-    std::cout << "contour: " << writer.feature_count() << " lines -> " << args.output << '\n';
+    args.file.crs_wkt = inputs.crs_wkt;
+    const products::ContourFileReport r = products::write_contour_file(
+        tin, nullptr, args.contour, args.output, args.file, progress.sub(0.6, 1.0));
+    std::cout << "contour: " << r.lines << " lines -> " << args.output << '\n';
+    if (r.annotated) {
+        std::cout << "contour: " << r.labels << " labels at 1:" << r.label_scale << " (text "
+                  << r.text_height << " high, " << r.label_failures << " positions without room)";
+        if (args.file.spot_heights) {
+            std::cout << ", " << r.spots << " spot heights (" << r.spot_labels_failed
+                      << " without room for the label)";
+        }
+        std::cout << '\n';
+    }
     return 0;
 }
 
@@ -67,6 +86,7 @@ Command contour_command() {
                 add_input_options(app, args->input);
                 add_tin_options(app, args->tin);
                 add_contour_flats_options(app, args->flats);
+                add_dem_options(app, args->input.dem);
                 app.add_option("-o,--output", args->output,
                                "Contour file: .gpkg (default format), .shp, .dxf, .geojson")
                     ->required();
@@ -89,6 +109,19 @@ Command contour_command() {
                     ->check(CLI::Range(1, 64));
                 app.add_option("--max-levels", args->contour.max_levels,
                                "Refuse more levels than this (default 100000)");
+                app.add_flag("--spot-heights", args->file.spot_heights,
+                             "DXF/GeoPackage: spot heights (summits, pits, saddles, then evenly "
+                             "spread) as points with their height labels");
+                app.add_flag("--no-labels", args->no_labels,
+                             "DXF/GeoPackage: no index contour numbers (they are written by "
+                             "default: along the line, reading uphill, never overlapping)");
+                app.add_option("--label-scale", args->file.label_scale,
+                               "Drawing scale 1:S of the label texts (default: the largest usual "
+                               "scale at which the site fits an A3 sheet)")
+                    ->check(CLI::PositiveNumber);
+                app.add_option("--label-height", args->file.annotation.text_mm,
+                               "Text height on paper in mm (default 2.5)")
+                    ->check(CLI::PositiveNumber);
                 app.add_flag("-q,--quiet", args->quiet, "No progress on stderr");
                 return [args]() { return run_contour(*args); };
             }};

@@ -104,6 +104,7 @@ int run_grid(const GridArgs& args) {
     products::Surface surface = products::surface(
         inputs, surface_options(args.input, args.tin, args.flats), progress.sub(0.2, 0.5));
     if (surface.contour_flats && !args.quiet) print_contour_flats(*surface.contour_flats, "grid");
+    if (surface.dem && !args.quiet) print_dem_report(*surface.dem, "grid");
     const Tin& tin = surface.result.tin;
     if (tin.triangles.empty()) {
         throw InputError("grid: the inputs give no triangle to rasterise");
@@ -158,6 +159,7 @@ Command grid_command() {
                 add_input_options(app, args->input);
                 add_tin_options(app, args->tin);
                 add_contour_flats_options(app, args->flats);
+                add_dem_options(app, args->input.dem);
                 app.add_option("-o,--output", args->output,
                                "DEM file; the extension picks the GDAL driver (default .tif: "
                                "tiled DEFLATE Float32 GeoTIFF; .asc, .img, ...)")

@@ -41,6 +41,11 @@ double since(std::chrono::steady_clock::time_point t) {
 int run_tin(const TinArgs& a) {
     io::check_output(a.output, io::OutputKind::tin, "output");
     if (!a.report.empty()) io::check_output(a.report, io::OutputKind::any_file, "report");
+    if (a.check && (a.input.dem.clip_radius > 0.0 || a.input.dem.max_error > 0.0)) {
+        throw UsageError(
+            "tin: --check compares the TIN with every input point; it does not take "
+            "--dem-clip-radius or --dem-max-error");
+    }
     const auto start = std::chrono::steady_clock::now();
     const Progress progress = terminal_progress(a.quiet || a.stats);
     io::LoadedInputs loaded = io::load_inputs(to_load_options(a.input), progress.sub(0, 0.2));
@@ -54,6 +59,7 @@ int run_tin(const TinArgs& a) {
     if (surface.contour_flats && !a.quiet && !a.stats) {
         print_contour_flats(*surface.contour_flats, "tin");
     }
+    if (surface.dem && !a.quiet && !a.stats) print_dem_report(*surface.dem, "tin");
     const TriangulateResult& result = surface.result;
     if (a.check) {  // topology, every breakline, Delaunay (or local optimality under --optimize)
         kept.points.insert(kept.points.end(), surface.added_points.begin(),
@@ -96,6 +102,7 @@ Command tin_command() {
                 add_input_options(app, args->input);
                 add_tin_options(app, args->triangulate);
                 add_contour_flats_options(app, args->flats);
+                add_dem_options(app, args->input.dem);
                 app.add_option("-o,--output", args->output, "Output TIN (format by extension)")
                     ->required();
                 app.add_flag("--ascii", args->ascii, "PLY as text instead of binary");

@@ -19,6 +19,28 @@ void add_contour_flats_options(CLI::App& app, products::ContourFlats& mode) {
     on->excludes(off);
 }
 
+void add_dem_options(CLI::App& app, DemReduceOptions& options) {
+    app.add_option("--dem-clip-radius", options.clip_radius,
+                   "Raster DEM inputs: drop the cells within R of a survey point or breakline "
+                   "(the survey describes the ground there)")
+        ->check(CLI::NonNegativeNumber);
+    app.add_option("--dem-max-error", options.max_error,
+                   "Raster DEM inputs: keep only the cells needed for the TIN to be within E of "
+                   "every cell (greedy insertion, breaklines kept); reports the vertices and the "
+                   "max and RMS error reached")
+        ->check(CLI::NonNegativeNumber);
+}
+
+void print_dem_report(const DemReduceReport& r, const char* command) {
+    std::fprintf(stderr, "dtm %s: DEM: %zu cells, %zu dropped near the survey, %zu kept", command,
+                 r.cells, r.clipped, r.kept);
+    if (r.passes > 0) {
+        std::fprintf(stderr, "; %zu vertices, max error %.6g, RMS %.6g over %zu cells (%zu passes)",
+                     r.vertices, r.max_error, r.rms_error, r.measured, r.passes);
+    }
+    std::fprintf(stderr, "\n");
+}
+
 products::SurfaceOptions surface_options(const InputArgs& input,
                                          const TriangulateOptions& triangulate,
                                          products::ContourFlats mode) {
@@ -27,6 +49,7 @@ products::SurfaceOptions surface_options(const InputArgs& input,
     options.contour_flats = mode;
     options.lines_are_contours = !input.read.z_field.empty();
     options.flat_areas.assign(input.flat_areas.begin(), input.flat_areas.end());
+    options.dem = input.dem;
     return options;
 }
 

@@ -14,6 +14,12 @@ namespace dtm::cli {
 /// Declares --contours-fix-flats / --no-contours-fix-flats on @p app.
 void add_contour_flats_options(CLI::App& app, products::ContourFlats& mode);
 
+/// Declares --dem-clip-radius and --dem-max-error (raster DEM inputs against the survey).
+void add_dem_options(CLI::App& app, DemReduceOptions& options);
+
+/// Prints the DEM thinning summary on stderr (cells kept, max and RMS error reached).
+void print_dem_report(const DemReduceReport& report, const char* command);
+
 /// The surface options of a subcommand: the lines are contours when their heights come from
 /// --z-field; the --flat-areas files outline real flats.
 [[nodiscard]] products::SurfaceOptions surface_options(const InputArgs& input,

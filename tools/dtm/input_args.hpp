@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "dtm/algo/dem_reduce.hpp"
 #include "dtm/io/inputs.hpp"
 
 namespace dtm::cli {
@@ -21,6 +22,7 @@ struct InputArgs {
     std::vector<std::string> flat_areas;  ///< real flats (lakes): hard breaklines, loaded last
     io::ReadOptions read;                 ///< what the readers take
     io::CrsOptions crs;
+    DemReduceOptions dem;  ///< --dem-clip-radius, --dem-max-error (add_dem_options)
 };
 
 /// Declares the positional INPUTS and the reader options on @p app.

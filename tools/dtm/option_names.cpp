@@ -11,7 +11,7 @@
 namespace dtm::cli {
 namespace {
 
-constexpr std::array<std::pair<std::string_view, std::string_view>, 43> flags{{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 46> flags{{
     // io::LoadOptions: the files of each role (TerrainInput's members)
     {"breaklines", "--breaklines"},
     {"soft_breaklines", "--soft-breaklines"},
@@ -62,6 +62,11 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 43> flags{{
     {"sheets", "--sheets"},
     {"map_scale", "--map-scale"},
     {"subdivisions", "--subdivisions"},
+    // DemReduceOptions (products::SurfaceOptions::dem)
+    {"dem.clip_radius", "--dem-clip-radius"},
+    {"dem.max_error", "--dem-max-error"},
+    // products::ContourFileOptions
+    {"spot_heights", "--spot-heights"},
 }};
 
 }  // namespace

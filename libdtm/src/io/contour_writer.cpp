@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Contour output through OGR (GDAL's vector API): one LineStringZ feature per contour line.
 // Features are written inside transactions of 50 000 (GeoPackage is an SQLite file: one
-// transaction per feature would be very slow). DXF has no attribute table: the layer of each
+// transaction per feature would be very slow). DXF goes through dtm's own R12 writer (GDAL's
+// DXF writer cannot write rotated, centred TEXT): it has no attribute table, the layer of each
 // entity (CONTOUR_INDEX or CONTOUR) carries the index flag and the z the elevation.
 #include "dtm/io/contour_writer.hpp"
 
@@ -15,10 +16,13 @@
 #include <array>
 #include <cctype>
 #include <mutex>
+#include <optional>
 
 #include "dtm/core/error.hpp"
 #include "dtm/io/atomic_file.hpp"
 #include "dtm/io/extension.hpp"
+#include "dtm/io/formats/dxf.hpp"
+#include "dtm/io/formats/qgis_project.hpp"
 
 namespace dtm::io {
 namespace fs = std::filesystem;
@@ -51,15 +55,23 @@ const Format& format_for(const fs::path& target) {
 
 constexpr long long transaction_size = 50'000;
 
+const std::array<DxfLayer, 5> dxf_layers{{{"CONTOUR", 32},
+                                          {"CONTOUR_INDEX", 30},
+                                          {"CONTOUR_LABELS", 30},
+                                          {"SPOT_HEIGHTS", 7},
+                                          {"SPOT_LABELS", 7}}};
+
 }  // namespace
 
 struct ContourWriter::State {
     AtomicOutput out;
     bool dxf = false;
+    bool gpkg = false;
+    std::optional<DxfWriter> dxf_writer;
     GDALDatasetH ds = nullptr;
     OGRLayerH layer = nullptr;
     OGRSpatialReferenceH srs = nullptr;
-    int elevation_field = -1, index_field = -1, closed_field = -1, dxf_layer_field = -1;
+    int elevation_field = -1, index_field = -1, closed_field = -1;
     std::size_t features = 0;
     bool in_transaction = false;
 
@@ -73,26 +85,119 @@ struct ContourWriter::State {
         }
     }
     void create_fields();
+    OGRLayerH create_layer(const char* name, OGRwkbGeometryType type);
+    void write_annotation_layers(const ContourAnnotation& a);
+    void write_style(const char* table, LabelLayer kind, double text_height);
 };
 
-void ContourWriter::State::create_fields() {
-    if (dxf) {
-        dxf_layer_field = OGR_FD_GetFieldIndex(OGR_L_GetLayerDefn(layer), "Layer");
-        return;
+namespace {
+
+int add_field(OGRLayerH layer, const char* name, OGRFieldType type, OGRFieldSubType sub) {
+    OGRFieldDefnH f = OGR_Fld_Create(name, type);
+    OGR_Fld_SetSubType(f, sub);
+    const OGRErr err = OGR_L_CreateField(layer, f, TRUE);
+    OGR_Fld_Destroy(f);
+    if (err != OGRERR_NONE) {
+        throw_ogr(std::string("cannot create the field ") + name);
     }
-    const auto add = [this](const char* name, OGRFieldType type, OGRFieldSubType sub) {
-        OGRFieldDefnH f = OGR_Fld_Create(name, type);
-        OGR_Fld_SetSubType(f, sub);
-        const OGRErr err = OGR_L_CreateField(layer, f, TRUE);
-        OGR_Fld_Destroy(f);
-        if (err != OGRERR_NONE) {
-            throw_ogr(std::string("cannot create the field ") + name);
+    return OGR_FD_GetFieldIndex(OGR_L_GetLayerDefn(layer), name);
+}
+
+void create_feature(OGRLayerH layer, OGRFeatureH feature, const char* what) {
+    const OGRErr err = OGR_L_CreateFeature(layer, feature);
+    OGR_F_Destroy(feature);
+    if (err != OGRERR_NONE) throw_ogr(std::string("cannot write ") + what);
+}
+
+}  // namespace
+
+void ContourWriter::State::create_fields() {
+    elevation_field = add_field(layer, "elevation", OFTReal, OFSTNone);
+    index_field = add_field(layer, "index", OFTInteger, OFSTBoolean);
+    closed_field = add_field(layer, "closed", OFTInteger, OFSTBoolean);
+}
+
+OGRLayerH ContourWriter::State::create_layer(const char* name, OGRwkbGeometryType type) {
+    OGRLayerH l = GDALDatasetCreateLayer(ds, name, type == wkbNone ? nullptr : srs, type, nullptr);
+    if (l == nullptr) throw_ogr(std::string("cannot create the layer ") + name);
+    return l;
+}
+
+/// The GeoPackage's default QGIS style of @p table (the layer_styles table QGIS reads).
+void ContourWriter::State::write_style(const char* table, LabelLayer kind, double text_height) {
+    OGRLayerH styles = GDALDatasetGetLayerByName(ds, "layer_styles");
+    if (styles == nullptr) {
+        styles = create_layer("layer_styles", wkbNone);
+        for (const char* f : {"f_table_catalog", "f_table_schema", "f_table_name",
+                              "f_geometry_column", "styleName", "styleQML", "styleSLD"}) {
+            add_field(styles, f, OFTString, OFSTNone);
         }
-        return OGR_FD_GetFieldIndex(OGR_L_GetLayerDefn(layer), name);
+        add_field(styles, "useAsDefault", OFTInteger, OFSTBoolean);
+        for (const char* f : {"description", "owner", "ui"})
+            add_field(styles, f, OFTString, OFSTNone);
+        add_field(styles, "update_time", OFTDateTime, OFSTNone);
+    }
+    OGRFeatureH f = OGR_F_Create(OGR_L_GetLayerDefn(styles));
+    const auto set = [&](const char* field, const std::string& value) {
+        OGR_F_SetFieldString(f, OGR_F_GetFieldIndex(f, field), value.c_str());
     };
-    elevation_field = add("elevation", OFTReal, OFSTNone);
-    index_field = add("index", OFTInteger, OFSTBoolean);
-    closed_field = add("closed", OFTInteger, OFSTBoolean);
+    set("f_table_catalog", "");
+    set("f_table_schema", "");
+    set("f_table_name", table);
+    set("f_geometry_column", "geom");
+    set("styleName", table);
+    set("styleQML", label_layer_qml(kind, text_height));
+    set("styleSLD", "");
+    OGR_F_SetFieldInteger(f, OGR_F_GetFieldIndex(f, "useAsDefault"), 1);
+    set("description", "dtm: placed labels");
+    set("owner", "");
+    set("ui", "");
+    create_feature(styles, f, "the layer style");
+}
+
+void ContourWriter::State::write_annotation_layers(const ContourAnnotation& a) {
+    if (in_transaction && GDALDatasetCommitTransaction(ds) != OGRERR_NONE) {
+        throw_ogr("cannot write " + out.target().string());
+    }
+    in_transaction = GDALDatasetStartTransaction(ds, FALSE) == OGRERR_NONE;
+    OGRLayerH labels = create_layer("contour_labels", wkbPoint);
+    const int text = add_field(labels, "text", OFTString, OFSTNone);
+    const int level = add_field(labels, "level", OFTReal, OFSTNone);
+    const int angle = add_field(labels, "angle", OFTReal, OFSTNone);
+    const int height = add_field(labels, "height", OFTReal, OFSTNone);
+    for (const ContourLabel& l : a.labels) {
+        OGRFeatureH f = OGR_F_Create(OGR_L_GetLayerDefn(labels));
+        OGR_F_SetFieldString(f, text, l.text.c_str());
+        OGR_F_SetFieldDouble(f, level, l.level);
+        OGR_F_SetFieldDouble(f, angle, l.angle_deg());
+        OGR_F_SetFieldDouble(f, height, a.text_height);
+        OGRGeometryH g = OGR_G_CreateGeometry(wkbPoint);
+        OGR_G_SetPoint_2D(g, 0, l.anchor.x, l.anchor.y);
+        OGR_F_SetGeometryDirectly(f, g);
+        create_feature(labels, f, "a contour label");
+    }
+    OGRLayerH spots = create_layer("spot_heights", wkbPoint25D);
+    const int z = add_field(spots, "height", OFTReal, OFSTNone);
+    const int kind = add_field(spots, "kind", OFTString, OFSTNone);
+    const int label = add_field(spots, "label", OFTString, OFSTNone);
+    const int lx = add_field(spots, "label_x", OFTReal, OFSTNone);
+    const int ly = add_field(spots, "label_y", OFTReal, OFSTNone);
+    for (const SpotAnnotation& s : a.spots) {
+        OGRFeatureH f = OGR_F_Create(OGR_L_GetLayerDefn(spots));
+        OGR_F_SetFieldDouble(f, z, s.spot.point.z);
+        OGR_F_SetFieldString(f, kind, to_string(s.spot.kind));
+        if (s.box) {
+            OGR_F_SetFieldString(f, label, s.text.c_str());
+            OGR_F_SetFieldDouble(f, lx, s.box->centre.x);
+            OGR_F_SetFieldDouble(f, ly, s.box->centre.y);
+        }
+        OGRGeometryH g = OGR_G_CreateGeometry(wkbPoint25D);
+        OGR_G_SetPoint(g, 0, s.spot.point.x, s.spot.point.y, s.spot.point.z);
+        OGR_F_SetGeometryDirectly(f, g);
+        create_feature(spots, f, "a spot height");
+    }
+    write_style("contour_labels", LabelLayer::contour_labels, a.text_height);
+    write_style("spot_heights", LabelLayer::spot_heights, a.text_height);
 }
 
 ContourWriter::ContourWriter(const fs::path& target, const ContourWriteOptions& options) {
@@ -102,6 +207,11 @@ ContourWriter::ContourWriter(const fs::path& target, const ContourWriteOptions& 
     state_ = std::make_unique<State>(target);
     State& s = *state_;
     s.dxf = std::string_view(format.driver) == "DXF";
+    s.gpkg = std::string_view(format.driver) == "GPKG";
+    if (s.dxf) {
+        s.dxf_writer.emplace(s.out.temp_path(), dxf_layers);
+        return;
+    }
     GDALDriverH driver = GDALGetDriverByName(format.driver);
     if (driver == nullptr) {
         throw Error(std::string("contour: the GDAL driver ") + format.driver + " is not available");
@@ -131,17 +241,20 @@ ContourWriter::~ContourWriter() = default;
 
 void ContourWriter::add(const ContourLevel& level, std::span<const Point3> line, bool closed) {
     State& s = *state_;
+    if (s.dxf) {
+        // a closed ring repeats its first point: the polyline's closed flag says it once
+        const std::size_t n = closed && line.size() > 1 ? line.size() - 1 : line.size();
+        s.dxf_writer->polyline(level.index ? "CONTOUR_INDEX" : "CONTOUR", line.first(n), closed);
+        ++s.features;
+        return;
+    }
     if (!s.in_transaction) {
         s.in_transaction = GDALDatasetStartTransaction(s.ds, FALSE) == OGRERR_NONE;
     }
     OGRFeatureH feature = OGR_F_Create(OGR_L_GetLayerDefn(s.layer));
-    if (s.dxf) {
-        OGR_F_SetFieldString(feature, s.dxf_layer_field, level.index ? "CONTOUR_INDEX" : "CONTOUR");
-    } else {
-        OGR_F_SetFieldDouble(feature, s.elevation_field, level.value);
-        OGR_F_SetFieldInteger(feature, s.index_field, level.index ? 1 : 0);
-        OGR_F_SetFieldInteger(feature, s.closed_field, closed ? 1 : 0);
-    }
+    OGR_F_SetFieldDouble(feature, s.elevation_field, level.value);
+    OGR_F_SetFieldInteger(feature, s.index_field, level.index ? 1 : 0);
+    OGR_F_SetFieldInteger(feature, s.closed_field, closed ? 1 : 0);
     OGRGeometryH geometry = OGR_G_CreateGeometry(wkbLineString25D);
     OGR_G_SetPointCount(geometry, static_cast<int>(line.size()));
     for (std::size_t i = 0; i < line.size(); ++i) {
@@ -162,8 +275,38 @@ void ContourWriter::add(const ContourLevel& level, std::span<const Point3> line,
     }
 }
 
+bool ContourWriter::holds_annotation() const noexcept { return state_->dxf || state_->gpkg; }
+
+void ContourWriter::add_annotation(const ContourAnnotation& a) {
+    State& s = *state_;
+    if (!holds_annotation()) {
+        throw UsageError("contour: labels and spot heights need a .dxf or .gpkg output, not " +
+                         s.out.target().string());
+    }
+    if (!s.dxf) {
+        s.write_annotation_layers(a);
+        return;
+    }
+    DxfWriter& w = *s.dxf_writer;
+    for (const ContourLabel& l : a.labels) {
+        w.text("CONTOUR_LABELS", {l.anchor.x, l.anchor.y, l.level}, a.text_height, l.angle_deg(),
+               l.text, DxfWriter::Align::middle_centre);
+    }
+    for (const SpotAnnotation& spot : a.spots) {
+        w.point("SPOT_HEIGHTS", spot.spot.point);
+        if (!spot.box) continue;
+        w.text("SPOT_LABELS", {spot.box->centre.x, spot.box->centre.y, spot.spot.point.z},
+               a.text_height, 0.0, spot.text, DxfWriter::Align::middle_centre);
+    }
+}
+
 void ContourWriter::commit() {
     State& s = *state_;
+    if (s.dxf) {
+        s.dxf_writer->finish();
+        s.out.commit();
+        return;
+    }
     if (s.in_transaction && GDALDatasetCommitTransaction(s.ds) != OGRERR_NONE) {
         throw_ogr("cannot write " + s.out.target().string());
     }
@@ -178,6 +321,11 @@ void ContourWriter::commit() {
 }
 
 std::size_t ContourWriter::feature_count() const noexcept { return state_->features; }
+
+bool contour_file_holds_annotation(const fs::path& target) {
+    const std::string ext = lower_extension(target);
+    return ext == "dxf" || ext == "gpkg";
+}
 
 std::vector<std::string> contour_extensions() {
     std::vector<std::string> out;

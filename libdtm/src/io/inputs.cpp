@@ -211,6 +211,9 @@ void merge(LoadedInputs& out, Loaded& l) {
         out.labels.ids.resize(before + t.points.size());
         out.labels.codes.resize(before + t.points.size());
     }
+    if (l.result.raster_cells) {
+        out.dem_cells.push_back({before, before + t.points.size(), out.summaries.size()});
+    }
     append(out.terrain.points, t.points);
     append(out.terrain.breaklines, t.breaklines);
     append(out.terrain.soft_breaklines, t.soft_breaklines);

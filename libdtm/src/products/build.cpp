@@ -83,6 +83,7 @@ BuildReport build(const io::LoadOptions& inputs,
     surface_options.contour_flats = options.contour_flats;
     surface_options.lines_are_contours = !inputs.read.z_field.empty();
     surface_options.flat_areas = options.flat_areas;
+    surface_options.dem = options.dem;
     Surface s = surface(loaded, surface_options, progress.sub(read_end, triangulate_end));
     const SurfaceStats stats = surface_stats(s.result.tin);
     if (stats.triangle_count == 0) {
@@ -99,6 +100,7 @@ BuildReport build(const io::LoadOptions& inputs,
 
     BuildReport report;
     report.contour_flats = std::move(s.contour_flats);
+    report.dem_cells = s.dem;
     report.interpolation = interpolation_name(options.interpolation);
     detail::BuildContext context{options, s.result.tin, interpolant, loaded.crs_wkt,
                                  stats,   out,          report,      &loaded.summaries,

@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: MIT
 // Build step "contours": contour lines traced exactly on the TIN (or on its cubic or
-// natural-neighbour surface, BuildOptions::interpolation) into a GeoPackage.
+// natural-neighbour surface, BuildOptions::interpolation) into a GeoPackage, with the index
+// contour numbers and spot heights placed at the map's scale (layers contour_labels,
+// spot_heights: products/contours.hpp).
 #include "build_steps.hpp"
 #include "dtm/algo/contour.hpp"
-#include "dtm/io/contour_writer.hpp"
+#include "dtm/products/contours.hpp"
 #include "dtm/products/rules.hpp"
 
 namespace dtm::products::detail {
@@ -20,12 +22,19 @@ void write_contours(BuildContext& context, const Progress& progress) {
     report.interval_rule = given ? context.worded("given (`interval`)") : default_interval_rule;
     report.contour_levels =
         contour_levels(context.surface.z_min, context.surface.z_max, options).size();
-    io::ContourWriteOptions write_options;
-    write_options.crs_wkt = context.crs_wkt;
-    io::ContourWriter writer(context.out.add("contours.gpkg"), write_options);
-    contour(context.tin, context.interpolant, options, writer, progress);
-    writer.commit();
-    report.contour_lines = writer.feature_count();
+    ContourFileOptions file;
+    file.crs_wkt = context.crs_wkt;
+    file.spot_heights = true;
+    file.label_scale = context.options.map_scale;
+    const ContourFileReport written =
+        write_contour_file(context.tin, &context.interpolant, options,
+                           context.out.add("contours.gpkg"), file, progress);
+    report.contour_lines = written.lines;
+    report.contour_label_scale = written.label_scale;
+    report.contour_label_height = written.text_height;
+    report.contour_labels = written.labels;
+    report.contour_label_failures = written.label_failures;
+    report.contour_spot_heights = written.spots;
 }
 
 }  // namespace dtm::products::detail

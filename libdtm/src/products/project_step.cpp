@@ -27,6 +27,11 @@ void write_project(BuildContext& context, const Progress&) {
     project.index_interval =
         context.report.contour_interval *
         static_cast<double>(std::max<std::size_t>(context.report.index_every, 1));
+    if (!project.contours.empty() && context.report.contour_label_height > 0.0) {
+        project.contour_label_layer = "contour_labels";
+        project.spot_layer = "spot_heights";
+        project.label_height = context.report.contour_label_height;
+    }
     project.mesh = layer("tin.2dm");
     project.layout = context.map_layout;
     io::write_qgis_project(project, context.out.add("dtm.qgs"));

@@ -119,6 +119,21 @@ void write_tin(io::JsonWriter& json, const BuildReport& report) {
         json.end();
         json.end();
     }
+    if (report.dem_cells) {
+        const DemReduceReport& d = *report.dem_cells;
+        json.begin_object("dem_cells");
+        json.value("cells", d.cells);
+        json.value("clipped", d.clipped);
+        json.value("kept", d.kept);
+        json.value("passes", d.passes);
+        json.value("vertices", d.vertices);
+        json.value("max_error", d.max_error);
+        json.value("rms_error", d.rms_error);
+        json.value("measured", d.measured);
+        json.value("outside", d.outside);
+        json.value("over_error", d.over_error);
+        json.end();
+    }
     json.begin_object("conflicts");
     json.value("count", report.conflicts.size());
     json.begin_array("items");
@@ -171,6 +186,10 @@ void write_products(io::JsonWriter& json, const BuildReport& report) {
     json.value("interval_rule", report.interval_rule);
     json.value("levels", report.contour_levels);
     json.value("lines", report.contour_lines);
+    json.value("label_scale", report.contour_label_scale);
+    json.value("labels_placed", report.contour_labels);
+    json.value("label_positions_without_room", report.contour_label_failures);
+    json.value("spot_heights", report.contour_spot_heights);
     json.end();
     if (report.map_scale > 0.0) {
         json.begin_object("map");

@@ -31,6 +31,13 @@ struct LoadOptions {
     CrsOptions crs;
 };
 
+/// terrain.points[first, last) are the cells of the raster input summaries[summary].
+struct DemCells {
+    std::size_t first = 0;
+    std::size_t last = 0;
+    std::size_t summary = 0;
+};
+
 struct LoadedInputs {
     /// Every input merged, in one CRS. Line vertices given without a height keep NaN z
     /// (triangulate() gives them one: algo/line_heights.hpp).
@@ -40,6 +47,9 @@ struct LoadedInputs {
     std::optional<Tin> tin;  ///< the first TIN a reader returned, in the same CRS
     std::vector<InputSummary> summaries;
     std::size_t skipped_lines = 0;
+    /// The raster DEM cells among terrain.points, one range per raster input, in order
+    /// (products::surface clips and thins them: DemReduceOptions).
+    std::vector<DemCells> dem_cells;
 };
 
 /// @throws InputError (file, line, column, what was expected); OptionError for a CRS that GDAL

@@ -81,6 +81,8 @@ struct ReadResult {
     /// A TIN the file holds (dtm PLY; LandXML surfaces, DXF 3DFACE ...): used as the surface
     /// as it is. Its vertices are also in terrain.points (for summaries and CRS handling).
     std::optional<Tin> tin;
+    /// terrain.points are the cells of a raster DEM (LoadedInputs::dem_cells; DemReduceOptions).
+    bool raster_cells = false;
 };
 
 /// The start of a file, for readers that decide by content (up to 64 KiB; shorter files whole).

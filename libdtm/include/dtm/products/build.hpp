@@ -27,6 +27,8 @@ struct BuildOptions {
     ContourFlats contour_flats = ContourFlats::automatic;
     /// Inputs whose breaklines outline real flats (lakes), loaded after the other breaklines.
     std::vector<std::filesystem::path> flat_areas;
+    /// Raster DEM inputs: cells near the survey dropped, the rest thinned (algo/dem_reduce.hpp).
+    DemReduceOptions dem;
     /// The surface the DEM samples and the contours follow (one estimate shared by both).
     Interpolation interpolation = Interpolation::linear;
     double cell = 0.0;            ///< DEM cell size in CRS units; 0: default_cell() (rules.hpp)

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "dtm/algo/contour_flats.hpp"
+#include "dtm/algo/dem_reduce.hpp"
 #include "dtm/algo/surface_stats.hpp"
 #include "dtm/algo/triangulate.hpp"
 #include "dtm/core/grid.hpp"
@@ -35,7 +36,8 @@ struct BuildReport {
     SurfaceStats surface;
     /// Set when the flat triangles of contour input were removed.
     std::optional<ContourFlatsReport> contour_flats;
-    std::string interpolation = "linear";  ///< the surface of the DEM and the contours
+    std::optional<DemReduceReport> dem_cells;  ///< raster DEM cells clipped and thinned
+    std::string interpolation = "linear";      ///< the surface of the DEM and the contours
     // the DEM (step "dem": dem.tif, hillshade.tif)
     GridSpec dem;
     std::string cell_rule;  ///< how the cell size was chosen (given, or the automatic rule)
@@ -45,6 +47,12 @@ struct BuildReport {
     std::string interval_rule;
     std::size_t contour_levels = 0;
     std::size_t contour_lines = 0;
+    /// dtm's placed labels in contours.gpkg (layers contour_labels, spot_heights)
+    double contour_label_scale = 0.0;
+    double contour_label_height = 0.0;  ///< CRS units
+    std::size_t contour_labels = 0;
+    std::size_t contour_label_failures = 0;
+    std::size_t contour_spot_heights = 0;
     // the map sheet (step "map": map.pdf)
     double map_scale = 0.0;  ///< 1 : map_scale of map.pdf (0: no map)
     std::size_t map_labels = 0;

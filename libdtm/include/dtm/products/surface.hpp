@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "dtm/algo/contour_flats.hpp"
+#include "dtm/algo/dem_reduce.hpp"
 #include "dtm/algo/triangulate.hpp"
 #include "dtm/core/progress.hpp"
 #include "dtm/io/inputs.hpp"
@@ -39,6 +40,9 @@ struct SurfaceOptions {
     /// Inputs (as in LoadOptions::files, loaded after every other breakline file) whose hard
     /// breaklines outline real flats such as lakes, kept flat when the contour flats are removed.
     std::vector<std::filesystem::path> flat_areas;
+    /// Raster DEM cells near the survey dropped, the rest thinned to an error bound
+    /// (algo/dem_reduce.hpp; io::LoadedInputs::dem_cells).
+    DemReduceOptions dem;
 };
 
 struct Surface {
@@ -54,6 +58,9 @@ struct Surface {
     /// added (after the survey points in input order) and the estimated summits and pits.
     std::optional<ContourFlatsReport> contour_flats;
     std::vector<Point3> added_points;  ///< the points the flat removal added
+    /// Set when SurfaceOptions::dem clipped or thinned raster cells (also noted in the raster
+    /// inputs' summaries); survey_points then counts the points kept.
+    std::optional<DemReduceReport> dem;
 };
 
 /// The surface of @p inputs: inputs.tin if a reader returned one (it is moved out; optimised

@@ -51,6 +51,7 @@ ReadResult read_raster_dem(const InputFile& file, const ReadOptions&, const Prog
     const int width = ds->GetRasterXSize();
     const int height = ds->GetRasterYSize();
     ReadResult r;
+    r.raster_cells = true;
     r.summary.path = file.path;
     r.summary.format = std::string("raster DEM (") + ds->GetDriver()->GetDescription() + ")";
     if (const char* wkt = ds->GetProjectionRef(); wkt != nullptr) r.crs_wkt = wkt;

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <tuple>
 
+#include "dtm/algo/contour_annotation.hpp"
 #include "dtm/core/error.hpp"
 #include "io/map/map_detail.hpp"
 
@@ -239,17 +240,7 @@ void draw_furniture(draw::Canvas& canvas,
     draw::draw_title_block(canvas, block, f.title);
 }
 
-std::string level_text(double v) {
-    for (int d = 0; d <= 6; ++d) {
-        char buf[64];
-        std::snprintf(buf, sizeof buf, "%.*f", d, v);
-        if (std::abs(std::strtod(buf, nullptr) - v) < 1e-9) {
-            std::string s = buf;
-            return s == "-0" ? "0" : s;
-        }
-    }
-    return number(v);
-}
+std::string level_text(double v) { return dtm::level_text(v); }
 
 std::string grouped(double v) {
     char buf[64];

@@ -41,13 +41,19 @@ public:
     /// A 3-D polyline (POLYLINE flag 8 with VERTEX flag 32); @p closed adds flag 1.
     void polyline(std::string_view layer, std::span<const Point3> points, bool closed);
     void point(std::string_view layer, const Point3& p);
-    /// Text with its insertion point (left, baseline), height and rotation in degrees
-    /// counter-clockwise from the x axis.
+    /// Where a text stands on its insertion point.
+    enum class Align {
+        left_baseline,  ///< the start of the baseline (group 10)
+        middle_centre,  ///< the middle of the text (72 = 1, 73 = 2; groups 10 and 11 both @p at)
+    };
+    /// Text with its insertion point, height and rotation in degrees counter-clockwise from the
+    /// x axis (the text's up vector is the baseline turned 90 degrees counter-clockwise).
     void text(std::string_view layer,
               const Point3& at,
               double height,
               double rotation_deg,
-              std::string_view text);
+              std::string_view text,
+              Align align = Align::left_baseline);
     /// Ends the ENTITIES section and the file. @throws Error if writing failed.
     void finish();
 

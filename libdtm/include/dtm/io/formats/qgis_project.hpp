@@ -54,10 +54,24 @@ struct QgisProject {
     /// index contours are recognised from their elevation, a multiple of index_interval.
     std::string index_field;
     double index_interval = 5.0;
+    /// Layers of the contour GeoPackage with dtm's placed labels (ContourWriter::add_annotation):
+    /// point layers of contour numbers and of spot heights; empty: none. With contour labels the
+    /// contour layer is not labelled by QGIS itself.
+    std::string contour_label_layer;
+    std::string spot_layer;
+    double label_height = 1.0;   ///< text height of those labels, CRS units
     std::filesystem::path mesh;  ///< 2DM TIN (mdal provider)
     bool mesh_visible = false;   ///< the wireframe starts hidden: it hides the DEM at small scales
     std::optional<QgisLayout> layout;  ///< a print layout of the map sheet
 };
+
+/// The point layers of placed labels (ContourWriter::add_annotation).
+enum class LabelLayer { contour_labels, spot_heights };
+
+/// The QML style of such a layer (the GeoPackage's default style, layer_styles): contour numbers
+/// rotated by the field `angle` (degrees counter-clockwise) from the field `text`; spot heights
+/// as a dot with `label` centred at (`label_x`, `label_y`). Text @p text_height in map units.
+[[nodiscard]] std::string label_layer_qml(LabelLayer kind, double text_height);
 
 /// The project as QGIS 3 XML (`<qgis>` with projectCrs, layer-tree-group, mapcanvas,
 /// projectlayers/maplayer, layerorder and properties).

@@ -114,13 +114,19 @@ void DxfWriter::text(std::string_view layer,
                      const Point3& at,
                      double height,
                      double rotation_deg,
-                     std::string_view text) {
+                     std::string_view text,
+                     Align align) {
     code(0, "TEXT");
     code(8, layer);
     xyz(10, at);
     code(40, height);
     code(1, text);
     if (rotation_deg != 0.0) code(50, rotation_deg);
+    if (align == Align::middle_centre) {
+        code(72, "1");
+        xyz(11, at);
+        code(73, "2");
+    }
 }
 
 void DxfWriter::finish() {

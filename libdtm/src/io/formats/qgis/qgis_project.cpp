@@ -212,6 +212,17 @@ struct TreeEntry {
 /// The layers present in @p project, top of the drawing order first.
 std::vector<TreeEntry> tree_entries(const QgisProject& project) {
     std::vector<TreeEntry> entries;
+    const auto in_contours = [&](const std::string& layer) {
+        return project_path(project.contours) + "|layername=" + layer;
+    };
+    if (!project.contours.empty() && !project.spot_layer.empty()) {
+        entries.push_back(
+            {qgis::spot_heights_id, "Spot heights", in_contours(project.spot_layer), "ogr", true});
+    }
+    if (!project.contours.empty() && !project.contour_label_layer.empty()) {
+        entries.push_back({qgis::contour_labels_id, "Contour labels",
+                           in_contours(project.contour_label_layer), "ogr", true});
+    }
     if (!project.contours.empty()) {
         entries.push_back(
             {qgis::contours_id, "Contours", qgis::contours_source(project), "ogr", true});
@@ -309,6 +320,12 @@ std::string qgis_project_xml(const QgisProject& project) {
     write_layer_tree(xml, entries);
     write_canvas(xml, project, crs);
     xml.open("projectlayers");
+    if (!project.contours.empty() && !project.spot_layer.empty()) {
+        qgis::write_label_layer(xml, project, crs, LabelLayer::spot_heights);
+    }
+    if (!project.contours.empty() && !project.contour_label_layer.empty()) {
+        qgis::write_label_layer(xml, project, crs, LabelLayer::contour_labels);
+    }
     if (!project.contours.empty()) {
         qgis::write_contours_layer(xml, project, crs);
     }

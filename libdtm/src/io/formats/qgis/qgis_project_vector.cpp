@@ -142,7 +142,8 @@ void write_contours_layer(XmlWriter& xml, const QgisProject& project, const CrsI
     open_maplayer(xml, "vector", "Line");
     write_layer_head(xml, project, crs, contours_id, contours_source(project), "Contours", "ogr");
     write_contour_renderer(xml, project);
-    write_contour_labeling(xml, project);
+    // dtm's own placed labels are a layer of their own (qgis_label_layers.cpp)
+    if (project.contour_label_layer.empty()) write_contour_labeling(xml, project);
     xml.text("blendMode", "0");
     xml.text("featureBlendMode", "0");
     xml.text("layerOpacity", "1");

@@ -56,6 +56,8 @@ inline constexpr std::string_view dem_id = "dtm_dem_layer";
 inline constexpr std::string_view hillshade_id = "dtm_hillshade_layer";
 inline constexpr std::string_view contours_id = "dtm_contours_layer";
 inline constexpr std::string_view mesh_id = "dtm_tin_mesh_layer";
+inline constexpr std::string_view contour_labels_id = "dtm_contour_labels_layer";
+inline constexpr std::string_view spot_heights_id = "dtm_spot_heights_layer";
 
 /// A layer path as QGIS reads it: a relative path gets a leading "./" (QgsPathResolver resolves
 /// only "./" and "../" paths against the project folder; a bare name would be taken relative to
@@ -83,5 +85,10 @@ void write_dem_layer(XmlWriter& xml, const QgisProject& project, const CrsInfo& 
 void write_hillshade_layer(XmlWriter& xml, const QgisProject& project, const CrsInfo& crs);
 void write_contours_layer(XmlWriter& xml, const QgisProject& project, const CrsInfo& crs);
 void write_mesh_layer(XmlWriter& xml, const QgisProject& project, const CrsInfo& crs);
+/// A layer of placed labels in the contour GeoPackage (qgis_label_layers.cpp).
+void write_label_layer(XmlWriter& xml,
+                       const QgisProject& project,
+                       const CrsInfo& crs,
+                       LabelLayer kind);
 
 }  // namespace dtm::io::qgis
