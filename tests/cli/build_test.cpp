@@ -347,7 +347,9 @@ TEST_F(BuildSample, QgisProjectOpensEveryProductInEpsg5514) {
         EXPECT_TRUE(fs::exists(*out_ / source)) << source;
         EXPECT_STREQ(CPLGetXMLValue(layer, "srs.spatialrefsys.authid", ""), "EPSG:5514");
     }
-    EXPECT_EQ(count, 4u);
+    EXPECT_EQ(count, 6u);  // DEM, hillshade, contours, contour labels, spot heights, TIN
+    EXPECT_NE(text.find("layername=contour_labels"), std::string::npos);
+    EXPECT_NE(text.find("layername=spot_heights"), std::string::npos);
 }
 
 TEST(BuildSampleData, FilesAgreeWithTheAnalyticTerrain) {
