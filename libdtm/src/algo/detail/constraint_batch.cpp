@@ -170,6 +170,50 @@ void order_by_key(const std::vector<std::uint32_t>& key,
     }
 }
 
+/// Marks, in parallel, the pending free segments that are already one edge of the mesh, takes
+/// them out of @p pending (the others keep their order) and returns their number. Marking changes
+/// no triangle, and no free segment crosses another, so such an edge exists before and after the
+/// insertion of every other free segment: marking it now gives the result of marking it in its
+/// turn. Short breakline segments between nearby survey points are mostly such edges.
+std::size_t mark_existing_edges(MeshEditor& editor,
+                                const std::vector<InputSegment>& segments,
+                                std::vector<std::uint32_t>& pending) {
+    std::vector<HalfEdge> along(pending.size(), no_half_edge);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pending.size(), 1024),
+                      [&](const tbb::blocked_range<std::size_t>& r) {
+                          MeshEditor::SegmentPlan plan;
+                          for (std::size_t k = r.begin(); k != r.end(); ++k) {
+                              if (k + 8 < r.end()) {
+                                  const InputSegment& ahead = segments[pending[k + 8]];
+                                  editor.prefetch(ahead.a, ahead.b, false);
+                              }
+                              if (k + 3 < r.end()) {
+                                  const InputSegment& ahead = segments[pending[k + 3]];
+                                  editor.prefetch(ahead.a, ahead.b, true);
+                              }
+                              const InputSegment& s = segments[pending[k]];
+                              editor.plan_segment(s.a, s.b, plan);
+                              if (!plan.crosses_constraint && plan.piece_count == 1 &&
+                                  plan.pieces[0].along != no_half_edge) {
+                                  along[k] = plan.pieces[0].along;
+                              }
+                          }
+                      });
+    // Each edge is one segment's (equal segments are not free), and its two half-edges' bits are
+    // bytes of their own: the writes never meet.
+    tbb::parallel_for(std::size_t{0}, pending.size(), [&](std::size_t k) {
+        if (along[k] == no_half_edge) return;
+        editor.mark_edge(along[k], segments[pending[k]].bits);
+    });
+    std::size_t kept = 0;
+    for (std::size_t k = 0; k < pending.size(); ++k) {
+        if (along[k] == no_half_edge) pending[kept++] = pending[k];
+    }
+    const std::size_t marked = pending.size() - kept;
+    pending.resize(kept);
+    return marked;
+}
+
 }  // namespace
 
 void insert_segments(MeshEditor& editor,
@@ -230,6 +274,9 @@ void insert_segments(MeshEditor& editor,
         }
         done = pending.size();
         pending.clear();
+    }
+    if (!pending.empty()) {
+        done += mark_existing_edges(editor, segments, pending);
     }
     if (!pending.empty()) {
         constexpr std::uint32_t unreserved = 0xffffffffu;
