@@ -15,6 +15,11 @@
 // deterministic parallel algorithms can be fast", PPoPP 2012). The priority order takes blocks of
 // nearby segments one after another and a fixed hash of the input index within a block, so the
 // mesh a window works on stays in the caches and polyline chains do not serialise the rounds.
+// Before the rounds, the free segments that are already one edge of the mesh (most short
+// breakline segments between survey points) are marked in one parallel pass: marking changes no
+// triangle, so it commutes with every other free insertion. With up to two threads the rest are
+// inserted one by one in priority order (the rounds' planning twice and reservations cost more
+// than a second thread wins there), with more threads by the rounds; the result is the same.
 // Which segments touch others is found on a uniform grid (counting sort by cell, the pairs of
 // every cell tested in parallel). Segments that cross, overlap or touch others
 // are inserted afterwards one by one in input order, which keeps the vertices added at
@@ -251,9 +256,12 @@ void insert_segments(MeshEditor& editor,
     keyed = {};
     const std::size_t total = segments.size();
     std::size_t done = 0;
-    // With one thread, plain insertion in priority order gives the very result of the rounds
-    // (that is what the reservations guarantee) without their bookkeeping.
-    if (tbb::this_task_arena::max_concurrency() == 1) {
+    const int threads = tbb::this_task_arena::max_concurrency();
+    if (threads > 1) done += mark_existing_edges(editor, segments, pending);
+    // With one thread (or two, where the rounds' bookkeeping costs more than the second thread
+    // wins), plain insertion in priority order gives the very result of the rounds (that is what
+    // the reservations guarantee).
+    if (threads <= 2) {
         for (std::size_t k = 0; k < pending.size(); ++k) {
             // The walks start at scattered vertices of the block: their first reads are
             // requested a few segments ahead.
@@ -268,15 +276,12 @@ void insert_segments(MeshEditor& editor,
             const InputSegment& s = segments[pending[k]];
             editor.insert_segment(s.a, s.b, s.bits);
             if ((k & 4095u) == 0) {
-                progress.report(static_cast<double>(k) / static_cast<double>(total),
+                progress.report(static_cast<double>(done + k) / static_cast<double>(total),
                                 "inserting breaklines");
             }
         }
-        done = pending.size();
+        done += pending.size();
         pending.clear();
-    }
-    if (!pending.empty()) {
-        done += mark_existing_edges(editor, segments, pending);
     }
     if (!pending.empty()) {
         constexpr std::uint32_t unreserved = 0xffffffffu;
