@@ -95,8 +95,12 @@ std::vector<bool> find_free_segments(const GhostMesh& m,
         total_length += (x1 - x0) + (y1 - y0);
     }
     const double extent = std::max(box.xmax - box.xmin, box.ymax - box.ymin);
-    const double cell = std::max(
-        {total_length / static_cast<double>(count), extent / 4096.0, extent * 1e-12, 1e-300});
+    // At most about one cell per segment (a segment's box meets few cells, and the counting sort
+    // below is not swamped by empty cells on large inputs).
+    const double per_segment =
+        std::sqrt((box.xmax - box.xmin) * (box.ymax - box.ymin) / static_cast<double>(count));
+    const double cell = std::max({total_length / static_cast<double>(count), per_segment,
+                                  extent / 4096.0, extent * 1e-12, 1e-300});
     const auto cols = static_cast<std::size_t>((box.xmax - box.xmin) / cell) + 1;
     const auto rows = static_cast<std::size_t>((box.ymax - box.ymin) / cell) + 1;
     const auto cell_of = [&](double v, double lo, std::size_t n) {
