@@ -179,6 +179,23 @@ void order_by_key(const std::vector<std::uint32_t>& key,
     }
 }
 
+/// The walks start at scattered vertices of a block: the first reads of the segments a few
+/// places after @p k (below @p end) in @p pending are requested ahead.
+void prefetch_ahead(const MeshEditor& editor,
+                    const std::vector<InputSegment>& segments,
+                    const std::vector<std::uint32_t>& pending,
+                    std::size_t k,
+                    std::size_t end) {
+    if (k + 8 < end) {
+        const InputSegment& ahead = segments[pending[k + 8]];
+        editor.prefetch(ahead.a, ahead.b, false);
+    }
+    if (k + 3 < end) {
+        const InputSegment& ahead = segments[pending[k + 3]];
+        editor.prefetch(ahead.a, ahead.b, true);
+    }
+}
+
 /// Marks, in parallel, the pending free segments that are already one edge of the mesh, takes
 /// them out of @p pending (the others keep their order) and returns their number. Marking changes
 /// no triangle, and no free segment crosses another, so such an edge exists before and after the
@@ -192,14 +209,7 @@ std::size_t mark_existing_edges(MeshEditor& editor,
                       [&](const tbb::blocked_range<std::size_t>& r) {
                           MeshEditor::SegmentPlan plan;
                           for (std::size_t k = r.begin(); k != r.end(); ++k) {
-                              if (k + 8 < r.end()) {
-                                  const InputSegment& ahead = segments[pending[k + 8]];
-                                  editor.prefetch(ahead.a, ahead.b, false);
-                              }
-                              if (k + 3 < r.end()) {
-                                  const InputSegment& ahead = segments[pending[k + 3]];
-                                  editor.prefetch(ahead.a, ahead.b, true);
-                              }
+                              prefetch_ahead(editor, segments, pending, k, r.end());
                               const InputSegment& s = segments[pending[k]];
                               editor.plan_segment(s.a, s.b, plan);
                               if (!plan.crosses_constraint && plan.piece_count == 1 &&
@@ -267,16 +277,7 @@ void insert_segments(MeshEditor& editor,
     // the reservations guarantee).
     if (threads <= 2) {
         for (std::size_t k = 0; k < pending.size(); ++k) {
-            // The walks start at scattered vertices of the block: their first reads are
-            // requested a few segments ahead.
-            if (k + 8 < pending.size()) {
-                const InputSegment& ahead = segments[pending[k + 8]];
-                editor.prefetch(ahead.a, ahead.b, false);
-            }
-            if (k + 3 < pending.size()) {
-                const InputSegment& ahead = segments[pending[k + 3]];
-                editor.prefetch(ahead.a, ahead.b, true);
-            }
+            prefetch_ahead(editor, segments, pending, k, pending.size());
             const InputSegment& s = segments[pending[k]];
             editor.insert_segment(s.a, s.b, s.bits);
             if ((k & 4095u) == 0) {
