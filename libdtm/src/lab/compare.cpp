@@ -122,6 +122,7 @@ public:
     CompareResult run() {
         CompareResult result;
         result.machine = detail::machine_info();
+        detail::fix_allocator();
         result.date = detail::utc_now();
         warm_up();
         for (const methods::Distribution dist : options_.distributions) {

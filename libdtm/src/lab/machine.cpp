@@ -2,10 +2,21 @@
 // Machine and process figures for the lab (machine.hpp). The peak resident set is the kernel's
 // VmHWM, reset before each run by writing 5 to /proc/self/clear_refs (Linux 4.0+); freed heap
 // memory is handed back first (malloc_trim) so that the rise during a run is the run's own.
+// glibc raises its mmap threshold to the largest block freed so far (up to 32 MiB): after a
+// large run, a method's arrays would live in the heap, where freed blocks stay resident, and
+// its rise would depend on what ran before it. fix_allocator() pins the thresholds at glibc's
+// defaults, so every block above 128 KiB is mapped and unmapped on its own in every run. The
+// dtm binary asks for transparent huge pages for blocks of 2 MiB and more (ADR 0007), which
+// makes a block resident in 2 MiB steps (at 10^5 points a large part of a method's total);
+// fix_allocator() turns huge pages off for the lab's process (prctl PR_SET_THP_DISABLE), so
+// the rise is the 4 KiB pages the method touched.
 #include "lab/machine.hpp"
 
 #if __has_include(<malloc.h>)
 #include <malloc.h>
+#endif
+#if __has_include(<sys/prctl.h>)
+#include <sys/prctl.h>
 #endif
 
 #include <chrono>
@@ -68,6 +79,16 @@ MachineInfo machine_info() {
         m.caches += name + " " + size;
     }
     return m;
+}
+
+void fix_allocator() {
+#if __has_include(<malloc.h>) && defined(M_MMAP_THRESHOLD)
+    mallopt(M_MMAP_THRESHOLD, 128 * 1024);
+    mallopt(M_TRIM_THRESHOLD, 128 * 1024);
+#endif
+#if __has_include(<sys/prctl.h>) && defined(PR_SET_THP_DISABLE)
+    (void)prctl(PR_SET_THP_DISABLE, 1, 0, 0, 0);
+#endif
 }
 
 std::size_t start_peak_count() {

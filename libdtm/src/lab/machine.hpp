@@ -13,6 +13,12 @@ namespace dtm::lab::detail {
 
 [[nodiscard]] MachineInfo machine_info();
 
+/// Pins the allocator's mmap and trim thresholds (glibc: 128 KiB, its defaults, which it
+/// otherwise raises as large blocks are freed), so that a run's resident-set rise does not
+/// depend on the runs before it, and turns transparent huge pages off (Linux), so that it
+/// counts 4 KiB pages, not 2 MiB ones. Process-wide; the lab calls it once.
+void fix_allocator();
+
 /// Returns freed heap memory to the system and restarts the peak count from the current
 /// resident set (Linux: /proc/self/clear_refs). @return the resident set in bytes, 0 unknown.
 std::size_t start_peak_count();

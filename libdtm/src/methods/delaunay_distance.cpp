@@ -78,7 +78,7 @@ MethodResult run_delaunay_distance(const MethodInput& input,
     result.counters.extra["hull_edges"] = hull_edges;
     const std::size_t peak = detail::bytes_of(p) + detail::bytes_of(triangles) + peak_front +
                              triangles.size() * sizeof(Triangle);
-    result.tin = detail::tin_from_triangles(std::move(prepared.vertices), triangles);
+    result.tin = detail::tin_from_triangles(std::move(prepared.vertices), std::move(triangles));
     detail::finish_counters(result, pred, prepared.duplicates, peak);
     progress.report(1.0, "triangulated");
     return result;

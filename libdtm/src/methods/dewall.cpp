@@ -236,7 +236,9 @@ private:
         }
         if (!afl2.empty()) right = solve(mid, hi, depth + 1, std::move(afl2));
         tasks.wait();
+        out.reserve(out.size() + left.size() + right.size());  // one exact growth, not two
         out.insert(out.end(), left.begin(), left.end());
+        left = {};
         out.insert(out.end(), right.begin(), right.end());
         return out;
     }
@@ -287,12 +289,14 @@ MethodResult run_dewall(const MethodInput& input,
         peak = dw.bytes() + detail::bytes_of(pts) + detail::bytes_of(in) + detail::bytes_of(perm) +
                2 * detail::bytes_of(triangles);
     }
+    pts = {};  // the k-d ordered copy
     for (TriangleCorners& t : triangles) {
         for (VertexIndex& v : t) v = perm[v];
     }
+    perm = {};
     peak = std::max(peak, detail::bytes_of(in) + detail::bytes_of(triangles) +
                               triangles.size() * sizeof(Triangle));
-    result.tin = detail::tin_from_triangles(std::move(prepared.vertices), triangles);
+    result.tin = detail::tin_from_triangles(std::move(prepared.vertices), std::move(triangles));
     detail::finish_counters(result, pred, prepared.duplicates, peak);
     progress.report(1.0, "triangulated");
     return result;

@@ -73,10 +73,8 @@ MethodResult run_incremental_kirkpatrick(const MethodInput& input,
         hierarchy = {};
         order = {};
         result.counters.flips = we.flips();
-        result.tin.triangles = we.real_triangles();
-        peak =
-            std::max({peak, inserting,
-                      we.bytes() + detail::bytes_of(pts) + detail::bytes_of(result.tin.triangles)});
+        result.tin.triangles = we.release_triangles();  // after the edges are freed: less
+        peak = std::max(peak, inserting);
     }
     result.tin.vertices = std::move(prepared.vertices);
     detail::finish_counters(result, pred, prepared.duplicates, peak);

@@ -51,13 +51,12 @@ MethodResult run_incremental_walk(const MethodInput& input,
             }
             result.counters.walk_steps += we.insert(order[k]);
         }
-        // Peak: inserting (with the order), then building the output (without it).
-        const std::size_t inserting = we.bytes() + detail::bytes_of(pts) + detail::bytes_of(order);
+        // Peak: inserting (with the order); the output is built after the edges are freed
+        // (WingedEdgeDelaunay::release_triangles), over the triangle list, in less.
+        peak = we.bytes() + detail::bytes_of(pts) + detail::bytes_of(order);
         order = {};
         result.counters.flips = we.flips();
-        result.tin.triangles = we.real_triangles();
-        peak = std::max(
-            inserting, we.bytes() + detail::bytes_of(pts) + detail::bytes_of(result.tin.triangles));
+        result.tin.triangles = we.release_triangles();
     }
     result.tin.vertices = std::move(prepared.vertices);
     detail::finish_counters(result, pred, prepared.duplicates, peak);

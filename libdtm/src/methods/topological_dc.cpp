@@ -65,45 +65,38 @@ MethodResult run_topological_dc(const MethodInput& input,
                                 detail::bytes_of(prepared.vertices) + 2 * detail::bytes_of(perm);
     p = {};
     const std::vector<Point3>& v = prepared.vertices;
-    const detail::EdgeAlgebra& q = dc.edges();
     // The counter-clockwise faces of three edges are the triangles (the outer face runs
-    // clockwise); each half-edge learns its face, so the links come from the twins.
-    std::vector<TriangleIndex> face(q.half_edges(), no_triangle);
+    // clockwise), each taken at its smallest half-edge; there are E - n + 1 of them (Euler).
+    // The links are made from the corners once the quad-edges are freed.
     std::vector<Triangle> triangles;
-    triangles.reserve(2 * p.size());
-    std::vector<detail::HalfEdge> first;
-    first.reserve(2 * p.size());
-    for (detail::HalfEdge e = 0; e < q.half_edges(); ++e) {
-        if (face[e] != no_triangle || !q.alive(e)) continue;
-        const detail::HalfEdge f = q.lnext(e);
-        const detail::HalfEdge g = q.lnext(f);
-        if (q.lnext(g) != e ||
-            pred.orient(v[perm[q.org(e)]], v[perm[q.org(f)]], v[perm[q.org(g)]]) <= 0) {
-            continue;
+    std::size_t collecting = 0;
+    {
+        const detail::EdgeAlgebra& q = dc.edges();
+        triangles.reserve(std::max(q.edges() + 1, v.size()) - v.size());
+        for (detail::HalfEdge e = 0; e < q.half_edges(); ++e) {
+            if (!q.alive(e)) continue;
+            const detail::HalfEdge f = q.lnext(e);
+            const detail::HalfEdge g = q.lnext(f);
+            if (q.lnext(g) != e || f < e || g < e ||
+                pred.orient(v[perm[q.org(e)]], v[perm[q.org(f)]], v[perm[q.org(g)]]) <= 0) {
+                continue;
+            }
+            Triangle x;
+            x.v = {perm[q.org(e)], perm[q.org(f)], perm[q.org(g)]};
+            triangles.push_back(x);
         }
-        const auto t = static_cast<TriangleIndex>(triangles.size());
-        face[e] = face[f] = face[g] = t;
-        Triangle x;
-        x.v = {perm[q.org(e)], perm[q.org(f)], perm[q.org(g)]};
-        triangles.push_back(x);
-        first.push_back(e);
+        collecting =
+            q.bytes() + detail::bytes_of(v) + detail::bytes_of(perm) + detail::bytes_of(triangles);
     }
-    for (TriangleIndex t = 0; t < triangles.size(); ++t) {
-        // v[0] = org(e): opposite it lies the edge f = lnext(e), and so on.
-        const detail::HalfEdge e = first[t];
-        const detail::HalfEdge f = q.lnext(e);
-        const detail::HalfEdge g = q.lnext(f);
-        triangles[t].n = {face[detail::EdgeAlgebra::sym(f)], face[detail::EdgeAlgebra::sym(g)],
-                          face[detail::EdgeAlgebra::sym(e)]};
-    }
+    const detail::MergeCounts c = dc.counts();
+    dc.release();  // the quad-edges
+    perm = {};
+    detail::link_in_place(triangles, v.size());
     MethodResult result;
-    const detail::MergeCounts& c = dc.counts();
     result.counters.extra["deletions"] = c.deletions;
     result.counters.extra["refused_deletions"] = c.refused_deletions;
     result.counters.extra["conflicts"] = c.conflicts;
-    const std::size_t peak = std::max(
-        working, q.bytes() + detail::bytes_of(v) + detail::bytes_of(perm) + detail::bytes_of(face) +
-                     detail::bytes_of(first) + detail::bytes_of(triangles));
+    const std::size_t peak = std::max(working, collecting);
     result.tin.vertices = std::move(prepared.vertices);
     result.tin.triangles = std::move(triangles);
     detail::finish_counters(result, pred, prepared.duplicates, peak);

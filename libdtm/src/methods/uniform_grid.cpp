@@ -350,7 +350,7 @@ MethodResult run_uniform_grid(const MethodInput& input,
         std::max(result.counters.peak_bytes, detail::bytes_of(prepared.vertices) +
                                                  detail::bytes_of(out.triangles) +
                                                  out.triangles.size() * sizeof(Triangle));
-    result.tin = detail::tin_from_triangles(std::move(prepared.vertices), out.triangles);
+    result.tin = detail::tin_from_triangles(std::move(prepared.vertices), std::move(out.triangles));
     detail::finish_counters(result, pred, prepared.duplicates + dropped, peak);
     progress.report(1.0, "triangulated");
     return result;

@@ -87,10 +87,19 @@ public:
             he_[e].face = dead_face;
             he_[e ^ 1u].face = dead_face;
         }
-        prev_ = {};
         detail::VoronoiGraph g;
         g.vertex_count = static_cast<std::uint32_t>(vref_.size());
         g.he = std::move(he_);
+        // The rest is the builder's own: freed before the result is made.
+        prev_ = {};
+        vref_ = {};
+        free_edges_ = {};
+        free_vertices_ = {};
+        face_edge_ = {};
+        stamp_ = {};
+        first_stop_ = {};
+        events_ = {};
+        killed_ = {};
         return g;
     }
 
@@ -404,7 +413,7 @@ MethodResult run_voronoi_dc(const MethodInput& input,
         throw UsageError("method voronoi-dc takes no parameter (got '" +
                          options.params.begin()->first + "')");
     }
-    const detail::Sites sites = detail::make_sites(input.points, "voronoi-dc");
+    detail::Sites sites = detail::make_sites(input.points, "voronoi-dc");
     std::vector<std::uint32_t> order(sites.real);
     std::iota(order.begin(), order.end(), 0u);
     std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
@@ -420,8 +429,8 @@ MethodResult run_voronoi_dc(const MethodInput& input,
     builder.build(order.data(), order.size());
     order = {};
     result.counters.peak_bytes = builder.peak_bytes();
-    detail::finish_voronoi(builder.release(), sites, input.points, detail::FinishOptions{}, pred,
-                           result, progress.sub(0.8, 1.0));
+    detail::finish_voronoi(builder.release(), std::move(sites), input.points,
+                           detail::FinishOptions{}, pred, result, progress.sub(0.8, 1.0));
     pred.add_to(result.counters);
     return result;
 }

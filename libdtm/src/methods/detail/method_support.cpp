@@ -91,47 +91,66 @@ PreparedPoints prepare_points(std::string_view method,
                      " distinct points are collinear: there is no surface to triangulate");
 }
 
-std::vector<Triangle> link_triangles(std::span<const TriangleCorners> triangles,
-                                     std::size_t vertex_count) {
-    std::vector<Triangle> out(triangles.size());
-    // Directed edges bucketed by origin: start[v] .. start[v + 1].
+void link_in_place(std::span<Triangle> triangles, std::size_t vertex_count) {
+    // Each side a -> b with a < b is listed under a (a counting sort, so in triangle order, as
+    // 3 t + s); a side with a > b finds its twin b -> a in b's row. About 3 entries of 4 bytes
+    // per vertex plus the row starts: the links cost 16 bytes per vertex beyond the triangles.
+    const auto from = [&](std::size_t t, std::size_t s) { return triangles[t].v[(s + 1) % 3]; };
+    const auto to = [&](std::size_t t, std::size_t s) { return triangles[t].v[(s + 2) % 3]; };
     std::vector<std::uint32_t> start(vertex_count + 1, 0);
-    for (const TriangleCorners& t : triangles) {
-        for (const VertexIndex v : t) ++start[v + 1];
-    }
-    for (std::size_t v = 0; v < vertex_count; ++v) start[v + 1] += start[v];
-    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
-    struct Out {
-        VertexIndex to;
-        std::uint32_t triangle;
-    };
-    std::vector<Out> edges(3 * triangles.size());
     for (std::size_t t = 0; t < triangles.size(); ++t) {
-        out[t].v = triangles[t];
-        for (int i = 0; i < 3; ++i) {
-            const VertexIndex a = triangles[t][static_cast<std::size_t>((i + 1) % 3)];
-            const VertexIndex b = triangles[t][static_cast<std::size_t>((i + 2) % 3)];
-            edges[fill[a]++] = {b, static_cast<std::uint32_t>(t)};
+        triangles[t].n = {no_triangle, no_triangle, no_triangle};
+        for (std::size_t s = 0; s < 3; ++s) {
+            if (from(t, s) < to(t, s)) ++start[from(t, s) + 1];
         }
     }
+    for (std::size_t v = 0; v < vertex_count; ++v) start[v + 1] += start[v];
+    std::vector<std::uint32_t> side(start[vertex_count]);
     for (std::size_t t = 0; t < triangles.size(); ++t) {
-        for (int i = 0; i < 3; ++i) {
-            const VertexIndex a = triangles[t][static_cast<std::size_t>((i + 1) % 3)];
-            const VertexIndex b = triangles[t][static_cast<std::size_t>((i + 2) % 3)];
+        for (std::size_t s = 0; s < 3; ++s) {
+            if (from(t, s) < to(t, s))
+                side[start[from(t, s)]++] = static_cast<std::uint32_t>(3 * t + s);
+        }
+    }
+    for (std::size_t v = vertex_count; v > 0; --v) start[v] = start[v - 1];  // undo the fill
+    start[0] = 0;
+    for (std::size_t t = 0; t < triangles.size(); ++t) {
+        for (std::size_t s = 0; s < 3; ++s) {
+            const VertexIndex a = from(t, s), b = to(t, s);
+            if (a < b) continue;
             for (std::uint32_t k = start[b]; k < start[b + 1]; ++k) {
-                if (edges[k].to == a) {
-                    out[t].n[static_cast<std::size_t>(i)] = edges[k].triangle;
+                const std::uint32_t u = side[k] / 3, r = side[k] % 3;
+                if (to(u, r) == a) {
+                    triangles[t].n[s] = u;
+                    triangles[u].n[r] = static_cast<TriangleIndex>(t);
                     break;
                 }
             }
         }
     }
+}
+
+std::vector<Triangle> link_triangles(std::span<const TriangleCorners> triangles,
+                                     std::size_t vertex_count) {
+    std::vector<Triangle> out(triangles.size());
+    for (std::size_t t = 0; t < triangles.size(); ++t) out[t].v = triangles[t];
+    link_in_place(out, vertex_count);
     return out;
 }
 
 Tin tin_from_triangles(std::vector<Point3> vertices, std::span<const TriangleCorners> triangles) {
     Tin tin;
     tin.triangles = link_triangles(triangles, vertices.size());
+    tin.vertices = std::move(vertices);
+    return tin;
+}
+
+Tin tin_from_triangles(std::vector<Point3> vertices, std::vector<TriangleCorners>&& triangles) {
+    Tin tin;
+    tin.triangles.resize(triangles.size());
+    for (std::size_t t = 0; t < triangles.size(); ++t) tin.triangles[t].v = triangles[t];
+    triangles = {};  // the corners are in the Tin now: free them before the links are made
+    link_in_place(tin.triangles, vertices.size());
     tin.vertices = std::move(vertices);
     return tin;
 }

@@ -70,6 +70,11 @@ private:
 
 using TriangleCorners = std::array<VertexIndex, 3>;
 
+/// Sets every n of the counter-clockwise @p triangles (vertex ids below @p vertex_count) by
+/// matching each directed edge with its reverse (no_triangle where there is none); for a
+/// triangulation (each directed edge in one triangle). Linear; 16 bytes per vertex of scratch.
+void link_in_place(std::span<Triangle> triangles, std::size_t vertex_count);
+
 /// Tin triangles of the counter-clockwise @p triangles over @p vertex_count vertices, neighbour
 /// links found by matching each directed edge with its reverse.
 [[nodiscard]] std::vector<Triangle> link_triangles(std::span<const TriangleCorners> triangles,
@@ -79,6 +84,9 @@ using TriangleCorners = std::array<VertexIndex, 3>;
 /// matching each directed edge with its reverse (linear: edges bucketed by origin vertex).
 [[nodiscard]] Tin tin_from_triangles(std::vector<Point3> vertices,
                                      std::span<const TriangleCorners> triangles);
+/// The same, freeing @p triangles as soon as the Tin holds their corners (a lower peak).
+[[nodiscard]] Tin tin_from_triangles(std::vector<Point3> vertices,
+                                     std::vector<TriangleCorners>&& triangles);
 
 /// Fills the predicate counts, the duplicates and the peak bytes into @p result.
 void finish_counters(MethodResult& result,

@@ -53,6 +53,14 @@ public:
 
     [[nodiscard]] const EdgeAlgebra& edges() const noexcept { return q_; }
     [[nodiscard]] const MergeCounts& counts() const noexcept { return counts_; }
+    /// Frees the quad-edges and the working lists (the counts stay).
+    void release() {
+        q_ = {};
+        order_ = {};
+        cross_ = {};
+        hanging_ = {};
+        scratch_ = {};
+    }
 
 private:
     using Hull = std::pair<HalfEdge, HalfEdge>;  ///< ccw out of leftmost, cw out of rightmost

@@ -332,6 +332,17 @@ VoronoiGraph IncrementalVoronoi::release() {
     VoronoiGraph g;
     g.vertex_count = static_cast<std::uint32_t>(vout_.size());
     g.he = std::move(he_);
+    // The rest is the graph's own: freed before the result is made.
+    vout_ = {};
+    face_edge_ = {};
+    free_edges_ = {};
+    free_vertices_ = {};
+    label_ = {};
+    incident_ = {};
+    labelled_ = {};
+    incident_list_ = {};
+    boundary_ = {};
+    region_stamp_ = {};
     return g;
 }
 
@@ -361,18 +372,20 @@ MethodResult run_incremental(const MethodInput& input,
     CountingPredicates pred;
     IncrementalVoronoi graph(sites, pred);
     graph.set_faults(faults, options.seed);
-    const std::vector<std::uint32_t> order = graph.insertion_order();
-    std::vector<std::uint32_t> tree;
     std::uint64_t deleted = 0;
     progress.report(0.0, name);
-    for (std::size_t i = 0; i < order.size(); ++i) {
-        if ((i & 0x3fffu) == 0) progress.report(0.8 * double(i) / double(order.size()));
-        const std::uint32_t g = order[i];
-        graph.clear_labels();
-        tree.clear();
-        choose(graph, g, sites.xy[g], tree);
-        deleted += tree.size();
-        graph.insert(g, tree);
+    {
+        const std::vector<std::uint32_t> order = graph.insertion_order();
+        std::vector<std::uint32_t> tree;
+        for (std::size_t i = 0; i < order.size(); ++i) {
+            if ((i & 0x3fffu) == 0) progress.report(0.8 * double(i) / double(order.size()));
+            const std::uint32_t g = order[i];
+            graph.clear_labels();
+            tree.clear();
+            choose(graph, g, sites.xy[g], tree);
+            deleted += tree.size();
+            graph.insert(g, tree);
+        }
     }
     graph.clear_labels();
     MethodResult result;
@@ -385,7 +398,7 @@ MethodResult run_incremental(const MethodInput& input,
     }
     FinishOptions finish;
     finish.exact = faults == 0.0;
-    finish_voronoi(graph.release(), sites, input.points, finish, pred, result,
+    finish_voronoi(graph.release(), std::move(sites), input.points, finish, pred, result,
                    progress.sub(0.8, 1.0));
     pred.add_to(result.counters);
     return result;

@@ -11,6 +11,7 @@
 #include "methods/detail/voronoi_output.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <numeric>
 #include <string>
@@ -18,6 +19,7 @@
 #include "algo/detail/exact_duplicates.hpp"
 #include "dtm/core/error.hpp"
 #include "dtm/geom/constructions.hpp"
+#include "methods/detail/method_support.hpp"
 
 namespace dtm::methods::detail {
 namespace {
@@ -32,79 +34,74 @@ std::uint32_t find_root(std::vector<std::uint32_t>& parent, std::uint32_t v) {
     return v;
 }
 
-/// Faces around each output vertex and the dual Tin's triangles with their neighbours.
-class DualTin {
+/// The kept edges of the working graph as a bit set with ranks: the output index of kept
+/// half-edge h is 2 rank(h / 2) + h % 2 (twins stay adjacent), a quarter bit per half-edge
+/// instead of an index table.
+class EdgeRank {
 public:
-    DualTin(const VoronoiDiagram& d, std::vector<std::uint32_t> distinct_of_face)
-        : d_(d), dist_(std::move(distinct_of_face)) {}
-
-    void build(Tin& tin, const Progress& progress) {
-        const auto& he = d_.half_edges;
-        prev_.assign(he.size(), no_index);
-        for (std::uint32_t h = 0; h < he.size(); ++h) prev_[he[h].next] = h;
-        const std::size_t nv = d_.vertices.size();
-        out_.assign(nv, no_index);
-        for (std::uint32_t h = 0; h < he.size(); ++h) {
-            if (he[h].origin != no_index) out_[he[h].origin] = h;
-        }
-        rot_.assign(he.size(), 0);
-        first_.assign(nv + 1, 0);
-        for (std::uint32_t v = 0; v < nv; ++v) {
-            std::uint32_t h = out_[v];
-            std::uint32_t i = 0;
-            do {
-                rot_[h] = i++;
-                h = prev_[h] ^ 1u;
-            } while (h != out_[v]);
-            first_[v + 1] = first_[v] + (i - 2);
-        }
-        tin.triangles.resize(first_[nv]);
-        std::vector<std::uint32_t> around;
-        for (std::uint32_t v = 0; v < nv; ++v) {
-            if ((v & 0xffffu) == 0) progress.check();
-            around.clear();
-            std::uint32_t h = out_[v];
-            do {
-                around.push_back(h);
-                h = prev_[h] ^ 1u;
-            } while (h != out_[v]);
-            fan(v, around, tin);
+    explicit EdgeRank(std::size_t edges) : bits_((edges + 63) / 64, 0), before_(bits_.size() + 1) {}
+    void set(std::size_t e) { bits_[e / 64] |= std::uint64_t{1} << (e % 64); }
+    void finish() {
+        for (std::size_t i = 0; i < bits_.size(); ++i) {
+            before_[i + 1] = before_[i] + static_cast<std::uint32_t>(std::popcount(bits_[i]));
         }
     }
+    [[nodiscard]] bool kept(std::uint32_t h) const {
+        const std::uint32_t e = h / 2;
+        return ((bits_[e / 64] >> (e % 64)) & 1u) != 0;
+    }
+    [[nodiscard]] std::uint32_t out(std::uint32_t h) const {
+        const std::uint32_t e = h / 2;
+        const std::uint64_t below = (std::uint64_t{1} << (e % 64)) - 1;
+        return 2 * (before_[e / 64] +
+                    static_cast<std::uint32_t>(std::popcount(bits_[e / 64] & below))) +
+               (h & 1u);
+    }
+    [[nodiscard]] std::uint32_t half_edges() const { return 2 * before_.back(); }
 
 private:
-    const VoronoiDiagram& d_;
-    std::vector<std::uint32_t> dist_;
-    std::vector<std::uint32_t> prev_, out_, rot_, first_;
+    std::vector<std::uint64_t> bits_;
+    std::vector<std::uint32_t> before_;
+};
 
-    /// Triangle of vertex v's fan that holds the Delaunay edge dual to its i-th out half-edge
-    /// (between its faces i-1 and i).
-    [[nodiscard]] std::uint32_t triangle_of(std::uint32_t v, std::uint32_t i) const {
-        const std::uint32_t k = first_[v + 1] - first_[v] + 2;
-        const std::uint32_t edge = (i + k - 1) % k;  // polygon edge (g_edge, g_edge+1)
-        const std::uint32_t j = edge == 0 ? 0 : (edge == k - 1 ? k - 3 : edge - 1);
-        return first_[v] + j;
+/// The dual Tin's triangles (faces: distinct generator ids < @p real): a fan per Voronoi
+/// vertex, its generators counter-clockwise from the one left of its last out half-edge, the
+/// links made from the corners. The rotation around a vertex is walked backwards, next(twin),
+/// which needs no table of predecessors.
+void dual_triangles(const VoronoiDiagram& d,
+                    std::uint32_t real,
+                    Tin& tin,
+                    const Progress& progress) {
+    const auto& he = d.half_edges;
+    const std::size_t nv = d.vertices.size();
+    std::vector<std::uint32_t> out(nv, no_index);
+    std::size_t corners = 0;
+    for (std::uint32_t h = 0; h < he.size(); ++h) {
+        if (he[h].origin == no_index) continue;
+        out[he[h].origin] = h;
+        ++corners;
     }
-
-    [[nodiscard]] TriangleIndex across(std::uint32_t h) const {
-        const std::uint32_t t = h ^ 1u;
-        const std::uint32_t w = d_.half_edges[t].origin;
-        if (w == no_index) return no_triangle;
-        return triangle_of(w, rot_[t]);
-    }
-
-    void fan(std::uint32_t v, const std::vector<std::uint32_t>& h, Tin& tin) const {
-        const auto k = static_cast<std::uint32_t>(h.size());
-        const auto g = [&](std::uint32_t i) { return dist_[d_.half_edges[h[i]].face]; };
-        for (std::uint32_t j = 0; j + 2 < k; ++j) {
-            Triangle& t = tin.triangles[first_[v] + j];
+    tin.triangles.reserve(corners - 2 * nv);  // sum of (degree - 2)
+    std::vector<std::uint32_t> around;
+    for (std::uint32_t v = 0; v < nv; ++v) {
+        if ((v & 0xffffu) == 0) progress.check();
+        around.clear();
+        std::uint32_t h = out[v];
+        do {
+            around.push_back(h);
+            h = he[h ^ 1u].next;
+        } while (h != out[v]);
+        std::reverse(around.begin() + 1, around.end());
+        const auto g = [&](std::size_t i) { return he[around[i]].face; };
+        for (std::size_t j = 0; j + 2 < around.size(); ++j) {
+            Triangle t;
             t.v = {g(0), g(j + 1), g(j + 2)};
-            t.n[0] = across(h[j + 2]);
-            t.n[1] = j + 3 == k ? across(h[0]) : first_[v] + j + 1;
-            t.n[2] = j == 0 ? across(h[1]) : first_[v] + j - 1;
+            tin.triangles.push_back(t);
         }
     }
-};
+    out = {};
+    link_in_place(tin.triangles, real);
+}
 
 }  // namespace
 
@@ -112,6 +109,10 @@ Sites make_sites(std::span<const Point3> points, const char* method) {
     Sites s;
     const auto first = dtm::detail::first_occurrences(points);
     s.first.assign(first.begin(), first.end());
+    std::size_t distinct = 0;
+    for (std::size_t i = 0; i < points.size(); ++i) distinct += s.first[i] == i ? 1 : 0;
+    s.xy.reserve(distinct + 3);  // exact: the incremental methods append 3 auxiliaries
+    s.input.reserve(distinct);
     for (std::size_t i = 0; i < points.size(); ++i) {
         if (s.first[i] == i) {
             s.xy.push_back(points[i].xy());
@@ -128,12 +129,15 @@ Sites make_sites(std::span<const Point3> points, const char* method) {
 }
 
 void finish_voronoi(VoronoiGraph&& graph,
-                    const Sites& sites,
+                    Sites&& sites,
                     std::span<const Point3> input,
                     const FinishOptions& options,
                     CountingPredicates& predicates,
                     MethodResult& result,
                     const Progress& progress) {
+    // The result (about 180 bytes per generator: the diagram, the Tin) is built over the
+    // working graph and with little else alive: the output half-edges are compacted in place,
+    // their indices ranked from a bit set, the sites freed as soon as each part is done.
     std::vector<HalfEdge>& he = graph.he;
     const std::uint32_t real = sites.real;
     const auto nh = static_cast<std::uint32_t>(he.size());
@@ -150,14 +154,13 @@ void finish_voronoi(VoronoiGraph&& graph,
     // Zero-length edges between finite vertices: cocircular generators.
     std::vector<std::uint32_t> id(graph.vertex_count);
     std::iota(id.begin(), id.end(), 0u);
-    std::vector<bool> contracted(nh / 2, false);
+    EdgeRank rank(nh / 2);
     std::uint64_t merges = 0;
-    if (options.exact) {
-        for (std::uint32_t h = 0; h < nh; h += 2) {
-            if (!kept_edge(h)) continue;
-            const std::uint32_t u = he[h].origin;
-            const std::uint32_t w = he[h ^ 1u].origin;
-            if (u == no_index || w == no_index || state[u] != 1 || state[w] != 1) continue;
+    for (std::uint32_t h = 0; h < nh; h += 2) {
+        if (!kept_edge(h)) continue;
+        const std::uint32_t u = he[h].origin;
+        const std::uint32_t w = he[h ^ 1u].origin;
+        if (options.exact && u != no_index && w != no_index && state[u] == 1 && state[w] == 1) {
             const Point2& a = sites.xy[he[h].face];
             const Point2& b = sites.xy[he[h ^ 1u].face];
             const Point2& c = sites.xy[he[he[h ^ 1u].next ^ 1u].face];
@@ -166,11 +169,13 @@ void finish_voronoi(VoronoiGraph&& graph,
                 const std::uint32_t ru = find_root(id, u);
                 const std::uint32_t rw = find_root(id, w);
                 if (ru != rw) id[ru] = rw;
-                contracted[h / 2] = true;
                 ++merges;
+                continue;  // contracted
             }
         }
+        rank.set(h / 2);
     }
+    rank.finish();
     progress.check();
     // Output vertices, numbered by their first finite member.
     std::vector<std::uint32_t> vertex_of(graph.vertex_count, no_index);
@@ -182,62 +187,77 @@ void finish_voronoi(VoronoiGraph&& graph,
         vertex_of[v] = vertex_of[r];
     }
     id = {};
+    const auto finite = [&](std::uint32_t u) { return u != no_index && state[u] == 1; };
+    // Positions: the circumcentre seen from the first output half-edge out of the vertex.
     std::vector<Point2> positions(nv);
-    std::vector<bool> placed(nv, false);
-    // Output half-edges: the kept, uncontracted ones, in order (twins stay adjacent).
-    std::vector<std::uint32_t> out_index(nh, no_index);
-    std::uint32_t no = 0;
-    for (std::uint32_t h = 0; h < nh; h += 2) {
-        if (kept_edge(h) && !contracted[h / 2]) {
-            out_index[h] = no++;
-            out_index[h + 1] = no++;
-        }
-    }
-    VoronoiDiagram& d = result.voronoi;
-    d.half_edges.resize(no);
-    d.face_edge.assign(input.size(), VoronoiDiagram::none);
-    std::uint64_t unbounded = 0;
-    for (std::uint32_t h = 0; h < nh; ++h) {
-        const std::uint32_t o = out_index[h];
-        if (o == no_index) continue;
-        std::uint32_t x = he[h].next;
-        while (out_index[x] == no_index) x = he[x].next;  // auxiliary or zero-length edges
-        const std::uint32_t u = he[h].origin;
-        const bool finite = u != no_index && state[u] == 1;
-        HalfEdge& e = d.half_edges[o];
-        e.origin = finite ? vertex_of[u] : VoronoiDiagram::none;
-        e.next = out_index[x];
-        e.face = sites.input[he[h].face];
-        if (d.face_edge[e.face] == VoronoiDiagram::none) d.face_edge[e.face] = o;
-        if (!finite && (o % 2 == 0 || d.half_edges[o - 1].origin != VoronoiDiagram::none)) {
-            ++unbounded;  // once per edge with an end at infinity (both twins are seen)
-        }
-        if (finite && !placed[e.origin]) {
-            placed[e.origin] = true;
-            positions[e.origin] =
+    {
+        std::vector<bool> placed(nv, false);
+        for (std::uint32_t h = 0; h < nh; ++h) {
+            const std::uint32_t u = he[h].origin;
+            if (!rank.kept(h) || !finite(u) || placed[vertex_of[u]]) continue;
+            placed[vertex_of[u]] = true;
+            positions[vertex_of[u]] =
                 geom::circumcentre(sites.xy[he[h].face], sites.xy[he[h ^ 1u].face],
                                    sites.xy[he[he[h ^ 1u].next ^ 1u].face]);
         }
     }
+    sites.xy = {};
+    sites.first = {};
+    // next: past the auxiliary and zero-length edges (only kept half-edges are rewritten, and
+    // the walks only read the others).
+    for (std::uint32_t h = 0; h < nh; ++h) {
+        if (!rank.kept(h)) continue;
+        std::uint32_t x = he[h].next;
+        while (!rank.kept(x)) x = he[x].next;
+        he[h].next = x;
+    }
+    // Output half-edges, in order, over the working ones (output index <= working index).
+    std::vector<std::uint32_t> face_edge(real, VoronoiDiagram::none);  // by distinct generator
+    std::uint64_t unbounded = 0;
+    for (std::uint32_t h = 0; h < nh; ++h) {
+        if (!rank.kept(h)) continue;
+        const std::uint32_t o = rank.out(h);
+        const HalfEdge from = he[h];
+        const bool at_finite = finite(from.origin);
+        HalfEdge& e = he[o];
+        e.origin = at_finite ? vertex_of[from.origin] : VoronoiDiagram::none;
+        e.next = rank.out(from.next);
+        e.face = from.face;
+        if (face_edge[e.face] == VoronoiDiagram::none) face_edge[e.face] = o;
+        if (!at_finite && (o % 2 == 0 || he[o - 1].origin != VoronoiDiagram::none)) {
+            ++unbounded;  // once per edge with an end at infinity (both twins are seen)
+        }
+    }
+    const std::uint32_t no = rank.half_edges();
+    he.resize(no);
+    state = {};
+    vertex_of = {};
+    VoronoiDiagram& d = result.voronoi;
     d.vertices = std::move(positions);
-    he = {};
-    out_index = {};
-
+    d.half_edges = std::move(he);
+    std::uint64_t max_degree = 0;
+    {
+        std::vector<std::uint32_t> degree(nv, 0);
+        for (const HalfEdge& e : d.half_edges) {
+            if (e.origin != VoronoiDiagram::none)
+                max_degree = std::max<std::uint64_t>(max_degree, ++degree[e.origin]);
+        }
+    }
     // The dual Tin: the distinct points as vertices, a fan per Voronoi vertex.
     Tin& tin = result.tin;
+    if (options.exact) dual_triangles(d, real, tin, progress);
     tin.vertices.reserve(real);
     for (std::uint32_t i = 0; i < real; ++i) tin.vertices.push_back(input[sites.input[i]]);
-    std::uint64_t max_degree = 0;
-    if (options.exact) {
-        std::vector<std::uint32_t> distinct_of_face(input.size(), no_index);
-        for (std::uint32_t i = 0; i < real; ++i) distinct_of_face[sites.input[i]] = i;
-        DualTin(d, std::move(distinct_of_face)).build(tin, progress);
+    // Faces by input point: sites.input is increasing, so the move runs from the back.
+    for (HalfEdge& e : d.half_edges) e.face = sites.input[e.face];
+    face_edge.resize(input.size(), VoronoiDiagram::none);
+    for (std::uint32_t k = real; k-- > 0;) {
+        const std::uint32_t edge = face_edge[k];
+        face_edge[k] = VoronoiDiagram::none;
+        face_edge[sites.input[k]] = edge;
     }
-    std::vector<std::uint32_t> degree(nv, 0);
-    for (const HalfEdge& e : d.half_edges) {
-        if (e.origin != VoronoiDiagram::none)
-            max_degree = std::max<std::uint64_t>(max_degree, ++degree[e.origin]);
-    }
+    d.face_edge = std::move(face_edge);
+    sites.input = {};
     auto& extra = result.counters.extra;
     extra["voronoi_vertices"] = nv;
     extra["voronoi_edges"] = no / 2;

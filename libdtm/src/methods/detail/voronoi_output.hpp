@@ -46,10 +46,11 @@ struct FinishOptions {
     bool exact = true;
 };
 
-/// Fills result.voronoi and result.tin from @p graph (consumed) and adds the diagram's counts to
-/// result.counters.extra. Vertices with an auxiliary generator go to infinity.
+/// Fills result.voronoi and result.tin from @p graph and @p sites (both consumed: freed as the
+/// result is built, so that the peak is little above the result) and adds the diagram's counts
+/// to result.counters.extra. Vertices with an auxiliary generator go to infinity.
 void finish_voronoi(VoronoiGraph&& graph,
-                    const Sites& sites,
+                    Sites&& sites,
                     std::span<const Point3> input,
                     const FinishOptions& options,
                     CountingPredicates& predicates,

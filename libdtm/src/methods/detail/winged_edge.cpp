@@ -15,6 +15,8 @@
 
 #include <algorithm>
 
+#include "methods/detail/method_support.hpp"
+
 namespace dtm::methods::detail {
 
 WingedEdgeDelaunay::WingedEdgeDelaunay(const std::vector<Point3>& points,
@@ -319,6 +321,25 @@ std::vector<Triangle> WingedEdgeDelaunay::real_triangles() const {
                renumber(other_side(e[0], t))};
         out.push_back(x);
     }
+    return out;
+}
+
+std::vector<Triangle> WingedEdgeDelaunay::release_triangles() {
+    // Triangle t's corners only read tris_[t] and the edges: overwriting the kept ones in
+    // order, at k <= t, never touches a triangle still to be read.
+    std::size_t kept = 0;
+    for (TriangleIndex t = 0; t < tris_.size(); ++t) {
+        const auto c = corners(t);
+        if (st_.is_corner(c[0]) || st_.is_corner(c[1]) || st_.is_corner(c[2])) continue;
+        tris_[kept++].e = c;
+    }
+    edges_ = {};
+    vertex_edge_ = {};
+    pending_ = {};
+    std::vector<Triangle> out(kept);
+    for (std::size_t t = 0; t < kept; ++t) out[t].v = tris_[t].e;
+    tris_ = {};
+    link_in_place(out, pts_.size());
     return out;
 }
 

@@ -74,6 +74,11 @@ public:
     /// The Delaunay triangulation without the corners' triangles, as Tin triangles (linked).
     [[nodiscard]] std::vector<Triangle> real_triangles() const;
 
+    /// real_triangles(), in the same order with the same links, built with little memory
+    /// beyond the result: the corners are written over the triangle list, the edges freed,
+    /// then the links made from the corners. The structure is empty afterwards.
+    [[nodiscard]] std::vector<Triangle> release_triangles();
+
 private:
     [[nodiscard]] VertexIndex origin_in(EdgeIndex e, TriangleIndex t) const noexcept {
         return edges_[e].t1 == t ? edges_[e].v1 : edges_[e].v2;
