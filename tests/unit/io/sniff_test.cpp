@@ -110,7 +110,9 @@ TEST(Sniff, RealPlotsAndTextVariantsKeepTheirReaders) {
                 std::string_view(folder).starts_with("hpgl") ? "hpgl" : "csv";
             try {
                 const std::string_view got = io::find_reader(entry.path()).name;
-                if (got != "csv-wkt") EXPECT_EQ(got, expected) << entry.path();
+                if (got != "csv-wkt") {
+                    EXPECT_EQ(got, expected) << entry.path();
+                }
             } catch (const dtm::InputError& e) {
                 ADD_FAILURE() << e.what();
             }
