@@ -23,6 +23,7 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_pipeline.h>
+#include <tbb/parallel_reduce.h>
 #include <tbb/task_arena.h>
 
 #include <algorithm>
@@ -31,6 +32,7 @@
 #include <cstdint>
 #include <limits>
 #include <string>
+#include <utility>
 
 #include "algo/detail/contour_refined.hpp"
 #include "algo/detail/contour_smooth.hpp"
@@ -337,14 +339,23 @@ void contour(const Tin& tin,
         detail::contour_refined(tin, interpolant, options, sink, progress.sub(0.2, 1.0));
         return;
     }
-    double zmin = std::numeric_limits<double>::infinity();
-    double zmax = -zmin;
-    for (const Triangle& t : tin.triangles) {
-        for (const VertexIndex v : t.v) {
-            zmin = std::min(zmin, tin.vertices[v].z);
-            zmax = std::max(zmax, tin.vertices[v].z);
-        }
-    }
+    // The height range of the triangles' vertices (a parallel reduction: min and max are exact).
+    using Range = std::pair<double, double>;
+    const double inf = std::numeric_limits<double>::infinity();
+    const auto [zmin, zmax] = tbb::parallel_reduce(
+        tbb::blocked_range<std::size_t>(0, tin.triangles.size(), 1 << 14), Range{inf, -inf},
+        [&](const tbb::blocked_range<std::size_t>& r, Range z) {
+            for (std::size_t t = r.begin(); t < r.end(); ++t) {
+                for (const VertexIndex v : tin.triangles[t].v) {
+                    z.first = std::min(z.first, tin.vertices[v].z);
+                    z.second = std::max(z.second, tin.vertices[v].z);
+                }
+            }
+            return z;
+        },
+        [](Range a, Range b) {
+            return Range{std::min(a.first, b.first), std::max(a.second, b.second)};
+        });
     detail::trace_contour_levels(tin, contour_levels(zmin, zmax, options), options, sink, progress);
 }
 

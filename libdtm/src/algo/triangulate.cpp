@@ -24,9 +24,11 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <numeric>
 #include <string>
 
@@ -110,7 +112,12 @@ Kernel build_kernel(const MergedInput& in,
 
     start = std::chrono::steady_clock::now();
     const detail::BigArray<detail::KernelPoint>& kp = k.triangles.points;
-    std::vector<detail::VertexId> kernel_of(in.vertices.size(), no_vertex);
+    // Every array of this step is first touched in parallel (fresh pages are costly to fault in).
+    const std::unique_ptr<detail::VertexId[]> kernel_of(new detail::VertexId[in.vertices.size()]);
+    tbb::parallel_for(
+        tbb::blocked_range<std::size_t>(0, in.vertices.size(), 1 << 16), [&](const auto& r) {
+            std::fill(kernel_of.get() + r.begin(), kernel_of.get() + r.end(), no_vertex);
+        });
     k.z.resize(kernel_count);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, kernel_count, 1 << 14),
                       [&](const auto& r) {
@@ -120,10 +127,13 @@ Kernel build_kernel(const MergedInput& in,
                               k.z[v] = in.vertices[id].z;
                           }
                       });
-    for (detail::InputSegment& seg : segments) {
-        seg.a = kernel_of[seg.a];
-        seg.b = kernel_of[seg.b];
-    }
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, segments.size(), 1 << 14),
+                      [&](const auto& r) {
+                          for (std::size_t i = r.begin(); i < r.end(); ++i) {
+                              segments[i].a = kernel_of[segments[i].a];
+                              segments[i].b = kernel_of[segments[i].b];
+                          }
+                      });
     if (!segments.empty()) {
         detail::MeshEditor editor(k.triangles, k.z, options.z_tolerance);
         detail::insert_segments(editor, k.triangles, segments, progress.sub(0.7, 1.0));

@@ -128,7 +128,7 @@ TEST_P(TiledSeams, EveryTileCountGivesTheSequentialTin) {
     const CheckReport constraints = verify_constraints(reference.tin, c.input);
     ASSERT_TRUE(constraints.ok()) << constraints.text();
     for (const std::size_t tiles : {1u, 2u, 7u, 64u}) {
-        for (const unsigned threads : {1u, 2u}) {
+        for (const unsigned threads : {1u, 2u, 4u}) {  // 4: the reservation rounds
             TriangulateOptions options;
             options.tiles = tiles;
             options.threads = threads;

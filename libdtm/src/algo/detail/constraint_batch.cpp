@@ -15,6 +15,11 @@
 // deterministic parallel algorithms can be fast", PPoPP 2012). The priority order takes blocks of
 // nearby segments one after another and a fixed hash of the input index within a block, so the
 // mesh a window works on stays in the caches and polyline chains do not serialise the rounds.
+// Before the rounds, the free segments that are already one edge of the mesh (most short
+// breakline segments between survey points) are marked in one parallel pass: marking changes no
+// triangle, so it commutes with every other free insertion. With up to two threads the rest are
+// inserted one by one in priority order (the rounds' planning twice and reservations cost more
+// than a second thread wins there), with more threads by the rounds; the result is the same.
 // Which segments touch others is found on a uniform grid (counting sort by cell, the pairs of
 // every cell tested in parallel). Segments that cross, overlap or touch others
 // are inserted afterwards one by one in input order, which keeps the vertices added at
@@ -90,8 +95,12 @@ std::vector<bool> find_free_segments(const GhostMesh& m,
         total_length += (x1 - x0) + (y1 - y0);
     }
     const double extent = std::max(box.xmax - box.xmin, box.ymax - box.ymin);
-    const double cell = std::max(
-        {total_length / static_cast<double>(count), extent / 4096.0, extent * 1e-12, 1e-300});
+    // At most about one cell per segment (a segment's box meets few cells, and the counting sort
+    // below is not swamped by empty cells on large inputs).
+    const double per_segment =
+        std::sqrt((box.xmax - box.xmin) * (box.ymax - box.ymin) / static_cast<double>(count));
+    const double cell = std::max({total_length / static_cast<double>(count), per_segment,
+                                  extent / 4096.0, extent * 1e-12, 1e-300});
     const auto cols = static_cast<std::size_t>((box.xmax - box.xmin) / cell) + 1;
     const auto rows = static_cast<std::size_t>((box.ymax - box.ymin) / cell) + 1;
     const auto cell_of = [&](double v, double lo, std::size_t n) {
@@ -170,6 +179,60 @@ void order_by_key(const std::vector<std::uint32_t>& key,
     }
 }
 
+/// The walks start at scattered vertices of a block: the first reads of the segments a few
+/// places after @p k (below @p end) in @p pending are requested ahead.
+void prefetch_ahead(const MeshEditor& editor,
+                    const std::vector<InputSegment>& segments,
+                    const std::vector<std::uint32_t>& pending,
+                    std::size_t k,
+                    std::size_t end) {
+    if (k + 8 < end) {
+        const InputSegment& ahead = segments[pending[k + 8]];
+        editor.prefetch(ahead.a, ahead.b, false);
+    }
+    if (k + 3 < end) {
+        const InputSegment& ahead = segments[pending[k + 3]];
+        editor.prefetch(ahead.a, ahead.b, true);
+    }
+}
+
+/// Marks, in parallel, the pending free segments that are already one edge of the mesh, takes
+/// them out of @p pending (the others keep their order) and returns their number. Marking changes
+/// no triangle, and no free segment crosses another, so such an edge exists before and after the
+/// insertion of every other free segment: marking it now gives the result of marking it in its
+/// turn. Short breakline segments between nearby survey points are mostly such edges.
+std::size_t mark_existing_edges(MeshEditor& editor,
+                                const std::vector<InputSegment>& segments,
+                                std::vector<std::uint32_t>& pending) {
+    std::vector<HalfEdge> along(pending.size(), no_half_edge);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pending.size(), 1024),
+                      [&](const tbb::blocked_range<std::size_t>& r) {
+                          MeshEditor::SegmentPlan plan;
+                          for (std::size_t k = r.begin(); k != r.end(); ++k) {
+                              prefetch_ahead(editor, segments, pending, k, r.end());
+                              const InputSegment& s = segments[pending[k]];
+                              editor.plan_segment(s.a, s.b, plan);
+                              if (!plan.crosses_constraint && plan.piece_count == 1 &&
+                                  plan.pieces[0].along != no_half_edge) {
+                                  along[k] = plan.pieces[0].along;
+                              }
+                          }
+                      });
+    // Each edge is one segment's (equal segments are not free), and its two half-edges' bits are
+    // bytes of their own: the writes never meet.
+    tbb::parallel_for(std::size_t{0}, pending.size(), [&](std::size_t k) {
+        if (along[k] == no_half_edge) return;
+        editor.mark_edge(along[k], segments[pending[k]].bits);
+    });
+    std::size_t kept = 0;
+    for (std::size_t k = 0; k < pending.size(); ++k) {
+        if (along[k] == no_half_edge) pending[kept++] = pending[k];
+    }
+    const std::size_t marked = pending.size() - kept;
+    pending.resize(kept);
+    return marked;
+}
+
 }  // namespace
 
 void insert_segments(MeshEditor& editor,
@@ -207,28 +270,22 @@ void insert_segments(MeshEditor& editor,
     keyed = {};
     const std::size_t total = segments.size();
     std::size_t done = 0;
-    // With one thread, plain insertion in priority order gives the very result of the rounds
-    // (that is what the reservations guarantee) without their bookkeeping.
-    if (tbb::this_task_arena::max_concurrency() == 1) {
+    const int threads = tbb::this_task_arena::max_concurrency();
+    if (threads > 1) done += mark_existing_edges(editor, segments, pending);
+    // With one thread (or two, where the rounds' bookkeeping costs more than the second thread
+    // wins), plain insertion in priority order gives the very result of the rounds (that is what
+    // the reservations guarantee).
+    if (threads <= 2) {
         for (std::size_t k = 0; k < pending.size(); ++k) {
-            // The walks start at scattered vertices of the block: their first reads are
-            // requested a few segments ahead.
-            if (k + 8 < pending.size()) {
-                const InputSegment& ahead = segments[pending[k + 8]];
-                editor.prefetch(ahead.a, ahead.b, false);
-            }
-            if (k + 3 < pending.size()) {
-                const InputSegment& ahead = segments[pending[k + 3]];
-                editor.prefetch(ahead.a, ahead.b, true);
-            }
+            prefetch_ahead(editor, segments, pending, k, pending.size());
             const InputSegment& s = segments[pending[k]];
             editor.insert_segment(s.a, s.b, s.bits);
             if ((k & 4095u) == 0) {
-                progress.report(static_cast<double>(k) / static_cast<double>(total),
+                progress.report(static_cast<double>(done + k) / static_cast<double>(total),
                                 "inserting breaklines");
             }
         }
-        done = pending.size();
+        done += pending.size();
         pending.clear();
     }
     if (!pending.empty()) {

@@ -79,6 +79,11 @@ public:
     /// Read-only: plans the insertion of a-b into @p plan. Safe to call from several threads at
     /// once (with different plans).
     void plan_segment(VertexId a, VertexId b, SegmentPlan& plan) const;
+    /// Adds @p bits to the edge of @p h (both half-edges), a segment planned as that one edge.
+    /// Calls on different edges may run concurrently (each half-edge's bits are a byte of its own).
+    void mark_edge(HalfEdge h, std::uint8_t bits) noexcept {
+        mesh_.set_edge_bits(h, mesh_.edge_bits(h) | bits);
+    }
     /// Applies a plan made on the current mesh; the new triangles take the slots of the cavity's.
     /// Plans whose vertex sets are disjoint may be applied concurrently.
     void apply_segment(const SegmentPlan& plan, std::uint8_t bits);

@@ -3,6 +3,10 @@
 // edges for the constrained edges (a hash set of the few constraints, not of all edges).
 #include "tin_checks.hpp"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
+
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <unordered_set>
@@ -22,7 +26,21 @@ std::uint64_t key(VertexIndex a, VertexIndex b) {
 
 void check_tin_from_file(const Tin& tin) {
     const std::size_t nv = tin.vertices.size();
-    for (std::size_t t = 0; t < tin.triangles.size(); ++t) {
+    const auto bad = [&](const Triangle& f) {
+        return f.v[0] >= nv || f.v[1] >= nv || f.v[2] >= nv ||
+               geom::orient2d(tin.vertex(f.v[0]), tin.vertex(f.v[1]), tin.vertex(f.v[2])) <= 0;
+    };
+    // The faces are tested in parallel; the first bad one (the smallest index) is reported.
+    const std::size_t first_bad = tbb::parallel_reduce(
+        tbb::blocked_range<std::size_t>(0, tin.triangles.size(), 1 << 14), tin.triangles.size(),
+        [&](const tbb::blocked_range<std::size_t>& r, std::size_t found) {
+            for (std::size_t t = r.begin(); t < r.end() && t < found; ++t) {
+                if (bad(tin.triangles[t])) return t;
+            }
+            return found;
+        },
+        [](std::size_t a, std::size_t b) { return std::min(a, b); });
+    for (std::size_t t = first_bad; t < tin.triangles.size(); ++t) {
         const Triangle& f = tin.triangles[t];
         if (f.v[0] >= nv || f.v[1] >= nv || f.v[2] >= nv) {
             throw InputError("face " + std::to_string(t) + " refers to a missing vertex");

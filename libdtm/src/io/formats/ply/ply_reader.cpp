@@ -6,7 +6,11 @@
 // are rebuilt from the faces: every directed edge a->b of a counter-clockwise triangle meets the
 // edge b->a of its neighbour (dtm::link_neighbours, O(n)).
 // Reference: Greg Turk, "The PLY Polygon File Format" (1994).
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
+#include <atomic>
 #include <bit>
 #include <charconv>
 #include <cstdint>
@@ -255,6 +259,34 @@ struct BodyReader {
     }
 };
 
+/// Decodes @p count binary faces at @p p into @p out in parallel; false when any is not a
+/// triangle of three distinct, existing vertices (the caller then reads them one by one for the
+/// message, which so names the first bad face whatever the threads).
+bool decode_faces(const char* p,
+                  std::size_t count,
+                  std::size_t vertex_count,
+                  std::vector<Triangle>& out) {
+    out.resize(count);
+    std::atomic<bool> sound{true};
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 1 << 15), [&](const auto& r) {
+        const auto exists = [&](std::int32_t v) {
+            return v >= 0 && static_cast<std::size_t>(v) < vertex_count;
+        };
+        bool ok = true;
+        for (std::size_t f = r.begin(); f < r.end(); ++f) {
+            const char* q = p + 13 * f;
+            const auto a = get_le<std::int32_t>(q + 1);
+            const auto b = get_le<std::int32_t>(q + 5);
+            const auto c = get_le<std::int32_t>(q + 9);
+            ok = ok && *q == 3 && exists(a) && exists(b) && exists(c) && a != b && b != c && a != c;
+            out[f].v = {static_cast<VertexIndex>(a), static_cast<VertexIndex>(b),
+                        static_cast<VertexIndex>(c)};
+        }
+        if (!ok) sound.store(false, std::memory_order_relaxed);
+    });
+    return sound.load();
+}
+
 void read_binary_body(BodyReader& reader, std::string_view body) {
     const Header& h = reader.header;
     const std::size_t edge_size = h.edge_has_kind ? 9 : 8;
@@ -264,22 +296,33 @@ void read_binary_body(BodyReader& reader, std::string_view body) {
     };
     if (body.size() < h.vertex_count * 24) truncated("vertex", body.size() / 24, h.vertex_count);
     reader.tin.vertices.resize(h.vertex_count);
-    const char* p = body.data();
-    for (Point3& v : reader.tin.vertices) {
-        v = {get_le<double>(p), get_le<double>(p + 8), get_le<double>(p + 16)};
-        p += 24;
-    }
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, h.vertex_count, 1 << 15),
+                      [&](const auto& r) {
+                          for (std::size_t i = r.begin(); i < r.end(); ++i) {
+                              const char* q = body.data() + 24 * i;
+                              reader.tin.vertices[i] = {get_le<double>(q), get_le<double>(q + 8),
+                                                        get_le<double>(q + 16)};
+                          }
+                      });
+    const char* p = body.data() + 24 * h.vertex_count;
     const char* const end = body.data() + body.size();
-    reader.tin.triangles.reserve(std::min(h.face_count, static_cast<std::size_t>(end - p) / 13));
-    for (std::size_t f = 0; f < h.face_count; ++f, p += 13) {
-        if (end - p < 13) truncated("face", f, h.face_count);
-        if (*p != 3)
-            reader.fail(0, "face " + std::to_string(f) + " has " +
-                               std::to_string(static_cast<unsigned char>(*p)) +
-                               " vertices; a TIN has triangles only");
-        reader.add_face(
-            {get_le<std::int32_t>(p + 1), get_le<std::int32_t>(p + 5), get_le<std::int32_t>(p + 9)},
-            f, 0);
+    if (static_cast<std::size_t>(end - p) / 13 >= h.face_count &&
+        decode_faces(p, h.face_count, h.vertex_count, reader.tin.triangles)) {
+        p += 13 * h.face_count;
+    } else {
+        reader.tin.triangles.clear();
+        reader.tin.triangles.reserve(
+            std::min(h.face_count, static_cast<std::size_t>(end - p) / 13));
+        for (std::size_t f = 0; f < h.face_count; ++f, p += 13) {
+            if (end - p < 13) truncated("face", f, h.face_count);
+            if (*p != 3)
+                reader.fail(0, "face " + std::to_string(f) + " has " +
+                                   std::to_string(static_cast<unsigned char>(*p)) +
+                                   " vertices; a TIN has triangles only");
+            reader.add_face({get_le<std::int32_t>(p + 1), get_le<std::int32_t>(p + 5),
+                             get_le<std::int32_t>(p + 9)},
+                            f, 0);
+        }
     }
     reader.tin.constraints.reserve(
         std::min(h.edge_count, static_cast<std::size_t>(end - p) / edge_size));
