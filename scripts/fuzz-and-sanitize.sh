@@ -1,18 +1,21 @@
 #!/usr/bin/env bash
-# Hardening run: (a) builds the libFuzzer targets (csv, hpgl, ply, mesh_2dm) with clang (-DDTM_FUZZ=ON: fuzzer coverage +
+# Hardening run: (a) builds the libFuzzer targets (csv, hpgl, ply, mesh_2dm, landxml, jvf, dxf,
+# las, sniff) with clang (-DDTM_FUZZ=ON: fuzzer coverage +
 # ASan + UBSan) and runs each for a bounded time from seeds in tests/data (and the shared real
 # data when present); (b) builds the test suite with -DDTM_SANITIZE=ON in its own build directory
 # and runs ctest (without the `slow` tests and the `crash` kill tests, which test process
 # semantics, not memory safety, and run in the normal build). Exit status is non-zero if a fuzzer finds a crash or a test fails.
 #
 # Usage: scripts/fuzz-and-sanitize.sh [--fuzz-only|--sanitize-only]
-# Environment: FUZZ_SECONDS (default 60 per fuzzer), JOBS (default 2),
+# Environment: FUZZ_SECONDS (default 60 per fuzzer), READER_FUZZ_SECONDS (landxml, jvf, dxf, las,
+#              sniff; default 10, CI time being short), JOBS (default 2),
 #              BUILD_ROOT (default <repo>), DTM_SHARED_DATA_DIR (default <repo>/../shared/data).
 set -euo pipefail
 
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build_root="${BUILD_ROOT:-$repo}"
 fuzz_seconds="${FUZZ_SECONDS:-60}"
+reader_fuzz_seconds="${READER_FUZZ_SECONDS:-10}"
 jobs="${JOBS:-2}"
 shared="${DTM_SHARED_DATA_DIR:-$repo/../shared/data}"
 mode="${1:-all}"
@@ -26,7 +29,7 @@ run_fuzzers() {
     local status=0
     for fuzzer in "$build"/fuzz/*_fuzz; do
         [ -x "$fuzzer" ] || continue
-        local name corpus
+        local name corpus seconds="$fuzz_seconds"
         name="$(basename "$fuzzer" _fuzz)"
         corpus="$build/corpus/$name"
         mkdir -p "$corpus" "$build/artifacts"
@@ -48,9 +51,21 @@ run_fuzzers() {
                 cp -f "$repo"/tests/data/tin/*.ply "$corpus"/ 2>/dev/null || true ;;
             mesh_2dm)
                 cp -f "$repo"/tests/data/tin/*.2dm "$corpus"/ 2>/dev/null || true ;;
+            landxml)
+                cp -f "$repo"/tests/data/landxml/* "$corpus"/ 2>/dev/null || true
+                [ -d "$shared/landxml-surfaces" ] && find "$shared/landxml-surfaces" -type f \
+                    -name '*.xml' -size -200k -exec cp -f {} "$corpus"/ \; ;;
+            sniff)
+                cp -f "$repo"/fuzz/seeds/*/* "$repo"/tests/data/readers/* "$repo"/tests/data/hpgl/* \
+                    "$corpus"/ 2>/dev/null || true ;;
         esac
-        echo "== fuzzing $name for ${fuzz_seconds}s ($(ls "$corpus" | wc -l) seeds)"
-        if ! "$fuzzer" "$corpus" -max_total_time="$fuzz_seconds" -max_len=65536 -timeout=20 \
+        case "$name" in
+            landxml|jvf|dxf|las|sniff)
+                seconds="$reader_fuzz_seconds"
+                cp -f "$repo"/fuzz/seeds/"$name"/* "$corpus"/ 2>/dev/null || true ;;
+        esac
+        echo "== fuzzing $name for ${seconds}s ($(ls "$corpus" | wc -l) seeds)"
+        if ! "$fuzzer" "$corpus" -max_total_time="$seconds" -max_len=65536 -timeout=20 \
                 -rss_limit_mb=2048 -artifact_prefix="$build/artifacts/${name}-" \
                 -print_final_stats=1 2>"$build/$name.log"; then
             echo "!! $name found a problem: see $build/$name.log and $build/artifacts/"

@@ -59,6 +59,15 @@ void print_json(std::ostream& out, const io::LoadedInputs& loaded) {
         }
         json.value("duplicates", s.duplicates);
         json.value("skipped_lines", s.skipped_lines);
+        if (s.cloud) {
+            json.begin_object("point_records", Layout::inline_);
+            json.value("read", s.cloud->records);
+            json.value("withheld", s.cloud->withheld);
+            json.value("filtered_by_class", s.cloud->class_filtered);
+            json.value("thinned", s.cloud->thinned);
+            json.value("kept", s.points);
+            json.end();
+        }
         json.begin_array("warnings", Layout::inline_);
         for (const std::string& w : s.warnings) json.value({}, cli_text(w));
         json.end();
@@ -96,6 +105,11 @@ void print_table(std::ostream& out, const io::LoadedInputs& loaded) {
             << "\n"
             << "  duplicates (xy)    " << s.duplicates << "\n"
             << "  skipped lines      " << s.skipped_lines << "\n";
+        if (s.cloud) {
+            out << "  point records      " << s.cloud->records << " read, " << s.cloud->withheld
+                << " withheld, " << s.cloud->class_filtered << " filtered by class, "
+                << s.cloud->thinned << " thinned, " << s.points << " kept\n";
+        }
         for (const std::string& w : s.warnings)
             out << "  warning            " << cli_text(w) << "\n";
     }

@@ -46,6 +46,15 @@ void add_input_options(CLI::App& app, InputArgs& args) {
                  "instead of keeping their faces");
     app.add_option("--surface", o.surface,
                    "LandXML: the surface of this name (default: the first)");
+    app.add_option("--classes", o.classes,
+                   "LAS point clouds: keep only these classification codes, e.g. 2,9 (ground, "
+                   "water)")
+        ->delimiter(',')
+        ->check(CLI::Range(0, 255));
+    app.add_option("--thin", o.thin,
+                   "LAS point clouds: keep the lowest point of every D x D cell (cells from "
+                   "x = y = 0; default 0: every point)")
+        ->check(CLI::NonNegativeNumber);
     add_hpgl_options(app, o.hpgl);
 }
 

@@ -11,7 +11,7 @@
 namespace dtm::cli {
 namespace {
 
-constexpr std::array<std::pair<std::string_view, std::string_view>, 46> flags{{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 48> flags{{
     // io::LoadOptions: the files of each role (TerrainInput's members)
     {"breaklines", "--breaklines"},
     {"soft_breaklines", "--soft-breaklines"},
@@ -28,6 +28,8 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 46> flags{{
     {"z_field", "--z-field"},
     {"retriangulate", "--retriangulate"},
     {"surface", "--surface"},
+    {"classes", "--classes"},
+    {"thin", "--thin"},
     {"hpgl.pens", "--hpgl-pens"},
     {"hpgl.height_pens", "--hpgl-height-pens"},
     {"hpgl.marker_radius_mm", "--hpgl-marker-radius"},

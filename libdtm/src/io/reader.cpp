@@ -5,7 +5,8 @@
 // at the content comes before the plain row of the same extensions: a text file with a WKT
 // column goes to OGR before the text reader sees it. A new format is one row (and its
 // formats/<name>.hpp/.cpp); a reader may return a TIN (ReadResult::tin) as well as points and
-// lines.
+// lines. A file whose extension no row takes goes to the row its content suggests (sniff.hpp),
+// and content that contradicts the extension is an input error naming what it appears to be.
 #include "dtm/io/reader.hpp"
 
 #include <algorithm>
@@ -20,9 +21,11 @@
 #include "dtm/io/formats/hpgl.hpp"
 #include "dtm/io/formats/jvf.hpp"
 #include "dtm/io/formats/landxml.hpp"
+#include "dtm/io/formats/las.hpp"
 #include "dtm/io/formats/ogr.hpp"
 #include "dtm/io/formats/ply.hpp"
 #include "dtm/io/formats/raster_dem.hpp"
+#include "dtm/io/sniff.hpp"
 
 namespace dtm::io {
 namespace {
@@ -40,7 +43,8 @@ constexpr std::array<std::string_view, 1> xml_ext{"xml"};
 constexpr std::array<std::string_view, 1> grid_asc_ext{"asc"};
 constexpr std::array<std::string_view, 8> raster_ext{"tif", "tiff", "vrt", "img",
                                                      "dem", "bil",  "hgt", "nc"};
-constexpr std::array<ReaderInfo, 10> reader_table{{
+constexpr std::array<std::string_view, 2> las_ext{"las", "laz"};
+constexpr std::array<ReaderInfo, 11> reader_table{{
     {"ply", "dtm PLY TIN (the surface itself: vertices, triangles, constrained edges, CRS)",
      ply_ext, nullptr, &read_ply},
     {"ascii-grid", "ESRI ASCII grid DEM (.asc starting with ncols ...): cells as points",
@@ -59,6 +63,8 @@ constexpr std::array<ReaderInfo, 10> reader_table{{
     {"raster", "Raster DEM read by GDAL (GeoTIFF, ...): cells as points, NoData skipped",
      raster_ext, nullptr, &read_raster_dem},
     {"ogr", "Any OGR vector source: points, lines, polygons", ogr_ext, nullptr, &read_ogr},
+    {"las", "LAS 1.0-1.4 point cloud (uncompressed; LAZ refused with the reason)", las_ext, nullptr,
+     &read_las},
 }};
 
 /// Bytes a sniff may look at.
@@ -69,13 +75,50 @@ bool takes_extension(const ReaderInfo& r, const std::string& ext) {
            std::find(r.extensions.begin(), r.extensions.end(), ext) != r.extensions.end();
 }
 
+const ReaderInfo* by_extension(const FileHead& head) {
+    for (const ReaderInfo& r : reader_table) {
+        if (takes_extension(r, head.extension) && (r.sniff == nullptr || r.sniff(head))) return &r;
+    }
+    return nullptr;
+}
+
+const ReaderInfo& by_name(std::string_view name) {
+    for (const ReaderInfo& r : reader_table) {
+        if (r.name == name) return r;
+    }
+    throw Error("no reader named " + std::string(name));
+}
+
+/// A file whose extension chose @p row but whose content is another format (or binary data for
+/// a text reader): an input error naming what it appears to be. GDAL's rows (ogr, raster) open
+/// their files by content and name their own problems; HP-GL may hold binary PCL.
+void check_content(const ReaderInfo& row, const ContentGuess& guess, const FileHead& head) {
+    using Kind = ContentGuess::Kind;
+    if (row.name == "ogr" || row.name == "raster") return;
+    const bool other_format = guess.kind == Kind::format && guess.reader != row.name;
+    const bool binary = guess.kind == Kind::binary && row.name != "hpgl";
+    if (guess.kind != Kind::foreign && !other_format && !binary) return;
+    throw InputError(head.path, 0, 0,
+                     "this file appears to be " + guess.what + ", not " +
+                         std::string(row.description) + " as its extension '." + head.extension +
+                         "' says");
+}
+
 }  // namespace
 
 std::span<const ReaderInfo> readers() { return reader_table; }
 
 const ReaderInfo& find_reader(const FileHead& head) {
-    for (const ReaderInfo& r : reader_table) {
-        if (takes_extension(r, head.extension) && (r.sniff == nullptr || r.sniff(head))) return r;
+    const ContentGuess guess = guess_content(head.bytes);
+    if (const ReaderInfo* row = by_extension(head)) {
+        check_content(*row, guess, head);
+        return *row;
+    }
+    using Kind = ContentGuess::Kind;
+    if (guess.kind == Kind::text || guess.kind == Kind::format) return by_name(guess.reader);
+    if (guess.kind != Kind::unknown) {
+        throw InputError(head.path, 0, 0,
+                         "this file appears to be " + guess.what + ", which dtm does not read");
     }
     std::vector<std::string_view> known;
     for (const ReaderInfo& r : reader_table) {
@@ -86,17 +129,17 @@ const ReaderInfo& find_reader(const FileHead& head) {
     std::string list;
     for (std::string_view e : known) list += (list.empty() ? "" : ", ") + std::string(e);
     throw InputError(head.path, 0, 0,
-                     "expected a known input extension (" + list + "), found '" +
+                     "expected a known input extension (" + list +
+                         ") or content dtm recognises "
+                         "(text points, LAS, PLY, DXF, LandXML, JVF DTM, HP-GL), found '" +
                          head.path.extension().string() + "'");
 }
 
 const ReaderInfo& find_reader(const std::filesystem::path& file) {
     FileHead head{file, lower_extension(file), {}};
-    const bool sniffs = std::any_of(reader_table.begin(), reader_table.end(), [&](const auto& r) {
-        return r.sniff != nullptr && takes_extension(r, head.extension);
-    });
-    std::string bytes;
-    if (sniffs) {  // an unreadable file reads as empty: its reader then names the problem
+    std::string bytes;  // an unreadable file reads as empty: its reader then names the problem
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(file, ec)) {
         std::ifstream in(file, std::ios::binary);
         bytes.resize(head_size);
         in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()));

@@ -33,6 +33,14 @@ void write_inputs(io::JsonWriter& json, const BuildReport& report) {
         json.value("holes", in.holes);
         json.value("duplicates", in.duplicates);
         json.value("skipped_lines", in.skipped_lines);
+        if (in.cloud) {  // a point cloud: where every record went (points = kept)
+            json.begin_object("point_records");
+            json.value("read", in.cloud->records);
+            json.value("withheld", in.cloud->withheld);
+            json.value("filtered_by_class", in.cloud->class_filtered);
+            json.value("thinned", in.cloud->thinned);
+            json.end();
+        }
         json.begin_array("warnings");
         for (const std::string& warning : in.warnings) {
             json.value({}, warning);

@@ -42,6 +42,20 @@ struct ReadOptions {
     /// Surface files (LandXML, DXF 3DFACE): their points and breaklines instead of their TIN.
     bool retriangulate = false;
     std::string surface;  ///< LandXML: the surface of this name; empty = the first
+    /// Point clouds (LAS): keep only the points of these classification codes (ASPRS: 2 ground,
+    /// 9 water); empty = every class.
+    std::vector<unsigned> classes;
+    /// Point clouds (LAS): keep the lowest point of every thin x thin cell (0: every point).
+    double thin = 0.0;
+};
+
+/// Where every record of a point cloud (LAS) went: records = withheld + class_filtered + thinned
+/// + the points kept (InputSummary::points).
+struct PointCloudCounts {
+    std::size_t records = 0;         ///< point records in the file
+    std::size_t withheld = 0;        ///< flagged withheld (deleted) by the file
+    std::size_t class_filtered = 0;  ///< of a class not in ReadOptions::classes
+    std::size_t thinned = 0;         ///< dropped by ReadOptions::thin
 };
 
 /// What one input file held (the fields of `dtm info`).
@@ -63,6 +77,7 @@ struct InputSummary {
     std::size_t duplicates = 0;
     std::size_t skipped_lines = 0;
     std::vector<std::string> warnings;
+    std::optional<PointCloudCounts> cloud;  ///< of a point cloud input, else empty
 };
 
 /// Identifiers and codes of survey points, parallel to TerrainInput::points (empty strings

@@ -76,9 +76,9 @@ FaceScan scan_faces(const std::filesystem::path& path) {
         if (!in_face || group < 10 || group > 33 || group % 10 > 3) continue;
         double value = 0;
         const auto n = std::from_chars(v.data(), v.data() + v.size(), value);
-        if (n.ec != std::errc{} || n.ptr != v.data() + v.size()) {
+        if (n.ec != std::errc{} || n.ptr != v.data() + v.size() || !std::isfinite(value)) {
             throw InputError(path, line, 1,
-                             "expected a number for group code " + std::to_string(group) +
+                             "expected a finite number for group code " + std::to_string(group) +
                                  " of a 3DFACE, found '" + std::string(v) + "'");
         }
         Point3& p = corners[static_cast<std::size_t>(group % 10)];

@@ -94,9 +94,9 @@ private:
             if (end == at) break;
             double v = 0;
             const auto r = std::from_chars(text.data() + at, text.data() + end, v);
-            if (r.ec != std::errc{} || r.ptr != text.data() + end) {
-                p.fail("expected a coordinate, found '" + std::string(text.substr(at, end - at)) +
-                       "'");
+            if (r.ec != std::errc{} || r.ptr != text.data() + end || !std::isfinite(v)) {
+                p.fail("expected a finite coordinate, found '" +
+                       std::string(text.substr(at, end - at)) + "'");
             }
             record_.coordinates.push_back(v);
             at = end;

@@ -43,9 +43,9 @@ void parse_numbers(xml::Parser& parser, std::string_view text, std::vector<doubl
         while (end < text.size() && !std::isspace(static_cast<unsigned char>(text[end]))) ++end;
         double v = 0;
         const auto r = std::from_chars(text.data() + at, text.data() + end, v);
-        if (r.ec != std::errc{} || r.ptr != text.data() + end) {
-            parser.fail("expected a number, found '" + std::string(text.substr(at, end - at)) +
-                        "'");
+        if (r.ec != std::errc{} || r.ptr != text.data() + end || !std::isfinite(v)) {
+            parser.fail("expected a finite number, found '" +
+                        std::string(text.substr(at, end - at)) + "'");
         }
         out.push_back(v);
         at = end;

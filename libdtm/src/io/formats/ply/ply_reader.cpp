@@ -12,7 +12,6 @@
 #include <algorithm>
 #include <atomic>
 #include <bit>
-#include <cerrno>
 #include <charconv>
 #include <cstdint>
 #include <cstdio>
@@ -22,15 +21,9 @@
 #include <string_view>
 #include <vector>
 
-#if defined(__unix__)
-#include <fcntl.h>
-#include <sys/mman.h>
-#include <sys/stat.h>
-#include <unistd.h>
-#endif
-
 #include "dtm/core/error.hpp"
 #include "dtm/io/formats/ply.hpp"
+#include "io/detail/file_bytes.hpp"
 #include "io/formats/tin_checks.hpp"
 
 namespace dtm::io {
@@ -49,63 +42,6 @@ struct Header {
     bool edge_has_kind = false;
     std::size_t body_offset = 0;  ///< byte offset just after "end_header\n"
     std::size_t line_count = 0;   ///< lines up to and including end_header
-};
-
-/// The bytes of a file: mapped read-only where possible (the page cache's own pages: no copy and
-/// no fresh memory to fault in and zero, which for a TIN of 10^6 points is 50 MB), read into memory
-/// otherwise (a pipe, or a system without mmap).
-class FileBytes {
-public:
-    explicit FileBytes(const fs::path& path) {
-#if defined(__unix__)
-        const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-        if (fd < 0) {
-            throw InputError(path, 0, 0, "cannot open: " + std::string(std::strerror(errno)));
-        }
-        struct stat st {};
-        if (::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0) {
-            const auto size = static_cast<std::size_t>(st.st_size);
-            void* map = ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);
-            if (map != MAP_FAILED) {
-                map_ = map;
-                size_ = size;
-                ::close(fd);
-                return;
-            }
-        }
-        ::close(fd);
-#endif
-        read(path);
-    }
-    ~FileBytes() {
-#if defined(__unix__)
-        if (map_ != nullptr) ::munmap(map_, size_);
-#endif
-    }
-    FileBytes(const FileBytes&) = delete;
-    FileBytes& operator=(const FileBytes&) = delete;
-
-    [[nodiscard]] std::string_view view() const noexcept {
-        return map_ != nullptr ? std::string_view(static_cast<const char*>(map_), size_) : copy_;
-    }
-
-private:
-    void read(const fs::path& path) {
-        std::FILE* file = std::fopen(path.c_str(), "rb");
-        if (file == nullptr) {
-            throw InputError(path, 0, 0, "cannot open: " + std::string(std::strerror(errno)));
-        }
-        char buffer[1 << 16];
-        std::size_t n = 0;
-        while ((n = std::fread(buffer, 1, sizeof buffer, file)) > 0) copy_.append(buffer, n);
-        const bool failed = std::ferror(file) != 0;
-        std::fclose(file);
-        if (failed) throw InputError(path, 0, 0, "read error");
-    }
-
-    void* map_ = nullptr;
-    std::size_t size_ = 0;
-    std::string copy_;
 };
 
 std::vector<std::string_view> split_words(std::string_view line) {
@@ -485,7 +421,7 @@ void read_ascii_body(BodyReader& reader, std::string_view body) {
 }  // namespace
 
 LoadedTin read_tin_ply(const fs::path& path) {
-    const FileBytes file(path);
+    const detail::FileBytes file(path);
     const std::string_view bytes = file.view();
     const Header header = parse_header(path, bytes);
     BodyReader reader{path, header, {}};

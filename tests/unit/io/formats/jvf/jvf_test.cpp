@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: MIT
 // JVF DTM: the CTU sample gives its 893 detail points (with ids, at the coordinates of the
-// derived CSV) and 55 terrain edges as hard 3-D breaklines, in EPSG:5514; a change file warns.
+// derived CSV) and 55 terrain edges as hard 3-D breaklines, in EPSG:5514, and the same TIN as the
+// derived PointZ/PolyLineZ shapefiles (read by OGR); a change file warns.
 #include "dtm/io/formats/jvf.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <fstream>
@@ -12,7 +14,9 @@
 #include <sstream>
 #include <string>
 
+#include "dtm/algo/triangulate.hpp"
 #include "dtm/io/formats/crs.hpp"
+#include "dtm/io/formats/ogr.hpp"
 #include "dtm/io/reader.hpp"
 #include "support/test_support.hpp"
 
@@ -64,6 +68,51 @@ TEST(Jvf, SampleGivesItsPointsAndTerrainEdges) {
         EXPECT_EQ(it->second[2], r.terrain.points[i].z);
     }
     EXPECT_EQ(matched, 893U);
+}
+
+/// The TIN's triangles as sorted corner positions, sorted: equal for equal TINs whatever the
+/// vertex numbering.
+std::vector<std::array<std::array<double, 3>, 3>> triangle_set(const dtm::Tin& tin) {
+    std::vector<std::array<std::array<double, 3>, 3>> out;
+    for (const dtm::Triangle& t : tin.triangles) {
+        std::array<std::array<double, 3>, 3> corners{};
+        for (std::size_t k = 0; k < 3; ++k) {
+            const dtm::Point3& p = tin.vertices[t.v[k]];
+            corners[k] = {p.x, p.y, p.z};
+        }
+        std::sort(corners.begin(), corners.end());
+        out.push_back(corners);
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+TEST(Jvf, SampleGivesTheSameTinAsItsDerivedShapefiles) {
+    constexpr const char* points_shp = "points-cz-sjtsk-jvf-dtm/derived/zps_points_pointz.shp";
+    constexpr const char* lines_shp =
+        "points-cz-sjtsk-jvf-dtm/derived/zps_breaklines_polylinez.shp";
+    if (!test::shared_data_available(sample) || !test::shared_data_available(points_shp)) {
+        GTEST_SKIP();
+    }
+    const io::ReadResult jvf =
+        io::read_jvf({test::shared_data_path(sample), io::InputRole::points}, {});
+    io::ReadOptions detail_points;  // the shapefile also holds 24 small-structure points
+    detail_points.where = "type_code = '0100000218'";
+    const io::ReadResult points =
+        io::read_ogr({test::shared_data_path(points_shp), io::InputRole::points}, detail_points);
+    const io::ReadResult lines =
+        io::read_ogr({test::shared_data_path(lines_shp), io::InputRole::breaklines}, {});
+    ASSERT_EQ(points.terrain.points.size(), 893U);
+    ASSERT_EQ(lines.terrain.breaklines.size(), 55U);
+    dtm::TerrainInput derived;
+    derived.points = points.terrain.points;
+    derived.breaklines = lines.terrain.breaklines;
+    const dtm::TriangulateResult a = dtm::triangulate(jvf.terrain);
+    const dtm::TriangulateResult b = dtm::triangulate(derived);
+    EXPECT_GT(a.tin.triangles.size(), 1000U);
+    EXPECT_EQ(a.tin.vertices.size(), b.tin.vertices.size());
+    EXPECT_EQ(a.tin.constraints.size(), b.tin.constraints.size());
+    EXPECT_TRUE(triangle_set(a.tin) == triangle_set(b.tin));
 }
 
 TEST(Jvf, ChangeFileIsWarnedAbout) {
