@@ -1,0 +1,471 @@
+// SPDX-License-Identifier: MIT
+// Overlay of two TINs: the convex pieces where a top triangle overlaps a base triangle.
+//
+// Both surfaces are piecewise linear, so over each piece the height difference is one linear
+// function: integrating it piece by piece is exact (volume.cpp). Finding the pieces:
+//
+// 1. Candidates. The base triangles are bucketed in a uniform grid (detail/triangle_grid). For a
+//    top triangle, the base triangles listed in the cells its bounding box touches are the
+//    candidates; a pair whose boxes overlap is examined only in the cell that holds the lower-left
+//    corner of the intersection of the two boxes, so it is examined once however many cells both
+//    span (cell lookup is monotone, so both triangles are listed in that cell).
+// 2. Overlap, exactly. Two convex polygons have disjoint interiors exactly when the line of an
+//    edge of one of them has the other on its closed outer side (separating axis theorem); the
+//    18 orient2d signs of each triangle's corners against the other's edges decide it.
+// 3. Corners, exactly decided. The intersection of two triangles is the convex hull of: the
+//    corners of each inside the closed other, and the proper crossings of their edges (the signs
+//    of both edges' ends against the other edge are strictly opposite). All of these come from the
+//    same 18 signs; a top corner at the same place as a base corner is kept once.
+// 4. Coordinates, computed. A crossing of top edge (u, v) with base edge (p, q), both taken from
+//    their smaller vertex index, is u + t (v - u) with t = D(p,q,u) / (D(p,q,u) - D(p,q,v)) from
+//    the floating-point orientation determinants D; its heights are interpolated along each edge.
+//    Every piece that has the crossing computes the same bits. A corner of one TIN on an edge of
+//    the other gets the other's height by interpolation along that edge (again the same from both
+//    triangles of the edge); a corner inside gets it from the triangle's plane; a corner at the
+//    place of a vertex of the other gets that vertex's height exactly.
+// 5. Order. The corners (at most six distinct ones) are sorted by angle around their mean. They
+//    are distinct points of a convex polygon; two that floating point could order wrongly lie
+//    within rounding distance of each other, where the order changes the area only by rounding.
+//
+// Work is split into chunks of consecutive top triangles (spatially coherent in a dtm TIN) run in
+// parallel; each chunk's pieces go to the caller's function, which keeps per-chunk results, so
+// sums combined in chunk order do not depend on the thread count.
+//
+// References: M. de Berg et al., "Computational Geometry", 3rd ed., ch. 2 (map overlay);
+// J. R. Shewchuk, "Adaptive precision floating-point arithmetic and fast robust geometric
+// predicates", 1997; S. Gottschalk, "Separating axis theorem", TR96-024, UNC 1996.
+#include "dtm/algo/overlay.hpp"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <atomic>
+#include <array>
+#include <vector>
+
+#include "algo/detail/triangle_grid.hpp"
+#include "dtm/geom/predicates.hpp"
+
+namespace dtm {
+namespace {
+
+/// One triangle with its corner indices, as the clipper reads it.
+struct Tri {
+    std::array<double, 3> x;
+    std::array<double, 3> y;
+    std::array<double, 3> z;
+    std::array<VertexIndex, 3> v;
+};
+
+constexpr std::size_t next(std::size_t i) { return i == 2 ? 0 : i + 1; }
+
+/// Floating-point orientation determinant, the formula of orient2d's filter.
+inline double det(double ax, double ay, double bx, double by, double cx, double cy) {
+    return (ax - cx) * (by - cy) - (ay - cy) * (bx - cx);
+}
+
+std::array<double, 2> slope(const Tri& t) {
+    const double ux = t.x[1] - t.x[0];
+    const double uy = t.y[1] - t.y[0];
+    const double uz = t.z[1] - t.z[0];
+    const double vx = t.x[2] - t.x[0];
+    const double vy = t.y[2] - t.y[0];
+    const double vz = t.z[2] - t.z[0];
+    const double d = ux * vy - uy * vx;
+    if (d == 0.0) {
+        return {0.0, 0.0};
+    }
+    return {(uz * vy - uy * vz) / d, (ux * vz - uz * vx) / d};
+}
+
+/// Height of triangle @p t's plane at (px, py) (barycentric, relative to its first corner).
+double plane_z(const Tri& t, double px, double py) {
+    const double ux = t.x[1] - t.x[0];
+    const double uy = t.y[1] - t.y[0];
+    const double vx = t.x[2] - t.x[0];
+    const double vy = t.y[2] - t.y[0];
+    const double qx = px - t.x[0];
+    const double qy = py - t.y[0];
+    const double d = ux * vy - uy * vx;
+    if (d == 0.0) {
+        return t.z[0];
+    }
+    const double l1 = (qx * vy - qy * vx) / d;
+    const double l2 = (ux * qy - uy * qx) / d;
+    return t.z[0] + l1 * (t.z[1] - t.z[0]) + l2 * (t.z[2] - t.z[0]);
+}
+
+/// Height along edge k (corner k to corner k+1) of @p t at (px, py), interpolated from the end
+/// with the smaller vertex index so both triangles of the edge agree.
+double edge_z(const Tri& t, std::size_t k, double px, double py) {
+    std::size_t a = k;
+    std::size_t b = next(k);
+    if (t.v[b] < t.v[a]) {
+        std::swap(a, b);
+    }
+    const double ex = t.x[b] - t.x[a];
+    const double ey = t.y[b] - t.y[a];
+    const double len2 = ex * ex + ey * ey;
+    const double s = len2 > 0.0 ? ((px - t.x[a]) * ex + (py - t.y[a]) * ey) / len2 : 0.0;
+    return t.z[a] + std::clamp(s, 0.0, 1.0) * (t.z[b] - t.z[a]);
+}
+
+/// Height of @p t at a point inside it or on its boundary; @p signs are the orientations of the
+/// point against t's edges (edge k: corner k to k+1).
+double height_at(const Tri& t, const std::array<int, 3>& signs, double px, double py) {
+    for (std::size_t k = 0; k < 3; ++k) {
+        if (t.x[k] == px && t.y[k] == py) {
+            return t.z[k];
+        }
+    }
+    for (std::size_t k = 0; k < 3; ++k) {
+        if (signs[k] == 0) {
+            return edge_z(t, k, px, py);
+        }
+    }
+    return plane_z(t, px, py);
+}
+
+/// Parameter along (u -> v) where it crosses the line p -> q.
+double crossing_parameter(double ux, double uy, double vx, double vy, double px, double py,
+                          double qx, double qy) {
+    const double du = det(px, py, qx, qy, ux, uy);
+    const double dv = det(px, py, qx, qy, vx, vy);
+    const double denominator = du - dv;
+    if (denominator == 0.0) {
+        return 0.5;
+    }
+    return std::clamp(du / denominator, 0.0, 1.0);
+}
+
+/// The crossing of top edge k of @p a with base edge j of @p b (a proper crossing).
+OverlayCorner crossing(const Tri& a, std::size_t k, const Tri& b, std::size_t j) {
+    std::size_t au = k;
+    std::size_t av = next(k);
+    if (a.v[av] < a.v[au]) {
+        std::swap(au, av);
+    }
+    std::size_t bu = j;
+    std::size_t bv = next(j);
+    if (b.v[bv] < b.v[bu]) {
+        std::swap(bu, bv);
+    }
+    const double ta =
+        crossing_parameter(a.x[au], a.y[au], a.x[av], a.y[av], b.x[bu], b.y[bu], b.x[bv], b.y[bv]);
+    const double tb =
+        crossing_parameter(b.x[bu], b.y[bu], b.x[bv], b.y[bv], a.x[au], a.y[au], a.x[av], a.y[av]);
+    OverlayCorner c;
+    c.kind = CornerKind::crossing;
+    c.x = a.x[au] + ta * (a.x[av] - a.x[au]);
+    c.y = a.y[au] + ta * (a.y[av] - a.y[au]);
+    c.z_top = a.z[au] + ta * (a.z[av] - a.z[au]);
+    c.z_base = b.z[bu] + tb * (b.z[bv] - b.z[bu]);
+    c.top_u = a.v[au];
+    c.top_v = a.v[av];
+    c.base_u = b.v[bu];
+    c.base_v = b.v[bv];
+    return c;
+}
+
+/// Sorts the corners counter-clockwise by angle around their mean.
+void sort_corners(OverlayCorner* c, std::size_t n) {
+    double mx = 0.0;
+    double my = 0.0;
+    for (std::size_t i = 1; i < n; ++i) {
+        mx += c[i].x - c[0].x;
+        my += c[i].y - c[0].y;
+    }
+    mx = c[0].x + mx / static_cast<double>(n);
+    my = c[0].y + my / static_cast<double>(n);
+    const auto lower = [](double dx, double dy) { return dy < 0.0 || (dy == 0.0 && dx < 0.0); };
+    const auto before = [&](const OverlayCorner& p, const OverlayCorner& q) {
+        const double px = p.x - mx;
+        const double py = p.y - my;
+        const double qx = q.x - mx;
+        const double qy = q.y - my;
+        const bool lp = lower(px, py);
+        const bool lq = lower(qx, qy);
+        if (lp != lq) {
+            return lq;
+        }
+        return px * qy - py * qx > 0.0;
+    };
+    for (std::size_t i = 1; i < n; ++i) {
+        const OverlayCorner key = c[i];
+        std::size_t j = i;
+        while (j > 0 && before(key, c[j - 1])) {
+            c[j] = c[j - 1];
+            --j;
+        }
+        c[j] = key;
+    }
+}
+
+/// The intersection polygon of triangles @p a (top) and @p b (base) into @p out; returns the
+/// number of corners, 0 when the interiors do not overlap.
+std::size_t clip(const Tri& a, const Tri& b, OverlayCorner* out) {
+    // sa[i][j]: orientation of a's corner i against b's edge j; sb[j][k]: b's corner j against
+    // a's edge k.
+    std::array<std::array<int, 3>, 3> sa{};
+    for (std::size_t j = 0; j < 3; ++j) {
+        const std::size_t j1 = next(j);
+        bool all_out = true;
+        for (std::size_t i = 0; i < 3; ++i) {
+            sa[i][j] = geom::orient2d(b.x[j], b.y[j], b.x[j1], b.y[j1], a.x[i], a.y[i]);
+            all_out = all_out && sa[i][j] <= 0;
+        }
+        if (all_out) {
+            return 0;
+        }
+    }
+    std::array<std::array<int, 3>, 3> sb{};
+    for (std::size_t k = 0; k < 3; ++k) {
+        const std::size_t k1 = next(k);
+        bool all_out = true;
+        for (std::size_t j = 0; j < 3; ++j) {
+            sb[j][k] = geom::orient2d(a.x[k], a.y[k], a.x[k1], a.y[k1], b.x[j], b.y[j]);
+            all_out = all_out && sb[j][k] <= 0;
+        }
+        if (all_out) {
+            return 0;
+        }
+    }
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < 3; ++i) {
+        if (sa[i][0] >= 0 && sa[i][1] >= 0 && sa[i][2] >= 0) {
+            OverlayCorner& c = out[n++];
+            c = OverlayCorner{};
+            c.kind = CornerKind::top_vertex;
+            c.x = a.x[i];
+            c.y = a.y[i];
+            c.z_top = a.z[i];
+            c.z_base = height_at(b, sa[i], a.x[i], a.y[i]);
+            c.top_u = a.v[i];
+        }
+    }
+    for (std::size_t j = 0; j < 3; ++j) {
+        if (sb[j][0] < 0 || sb[j][1] < 0 || sb[j][2] < 0) {
+            continue;
+        }
+        bool shared = false;
+        for (std::size_t i = 0; i < 3; ++i) {
+            shared = shared || (a.x[i] == b.x[j] && a.y[i] == b.y[j]);
+        }
+        if (shared) {
+            continue;
+        }
+        OverlayCorner& c = out[n++];
+        c = OverlayCorner{};
+        c.kind = CornerKind::base_vertex;
+        c.x = b.x[j];
+        c.y = b.y[j];
+        c.z_top = height_at(a, sb[j], b.x[j], b.y[j]);
+        c.z_base = b.z[j];
+        c.base_u = b.v[j];
+    }
+    for (std::size_t k = 0; k < 3; ++k) {
+        const std::size_t k1 = next(k);
+        for (std::size_t j = 0; j < 3; ++j) {
+            const std::size_t j1 = next(j);
+            if (sb[j][k] * sb[j1][k] < 0 && sa[k][j] * sa[k1][j] < 0) {
+                out[n++] = crossing(a, k, b, j);
+            }
+        }
+    }
+    sort_corners(out, n);
+    return n;
+}
+
+Tri load(const Tin& tin, TriangleIndex t) {
+    Tri out{};
+    for (std::size_t k = 0; k < 3; ++k) {
+        const VertexIndex v = tin.triangles[t].v[k];
+        const Point3& p = tin.vertices[v];
+        out.x[k] = p.x;
+        out.y[k] = p.y;
+        out.z[k] = p.z;
+        out.v[k] = v;
+    }
+    return out;
+}
+
+Box2 box_of(const Tri& t) {
+    Box2 b;
+    b.xmin = std::min({t.x[0], t.x[1], t.x[2]});
+    b.xmax = std::max({t.x[0], t.x[1], t.x[2]});
+    b.ymin = std::min({t.y[0], t.y[1], t.y[2]});
+    b.ymax = std::max({t.y[0], t.y[1], t.y[2]});
+    return b;
+}
+
+/// Reusable per-chunk buffers.
+struct ChunkBuffer {
+    std::vector<OverlayCorner> corners;
+    std::vector<OverlayPiece> pieces;
+    std::vector<std::size_t> first;  ///< first corner of each piece
+
+    void clear() {
+        corners.clear();
+        pieces.clear();
+        first.clear();
+    }
+    void add(TriangleIndex ta, TriangleIndex tb, const std::array<double, 2>& top_slope,
+             const std::array<double, 2>& base_slope, const OverlayCorner* c, std::size_t n) {
+        first.push_back(corners.size());
+        corners.insert(corners.end(), c, c + n);
+        OverlayPiece piece;
+        piece.top_triangle = ta;
+        piece.base_triangle = tb;
+        piece.top_slope = top_slope;
+        piece.base_slope = base_slope;
+        pieces.push_back(piece);
+    }
+    /// Points the pieces' spans into the (now stable) corner array.
+    std::span<const OverlayPiece> finish() {
+        for (std::size_t i = 0; i < pieces.size(); ++i) {
+            const std::size_t end = i + 1 < pieces.size() ? first[i + 1] : corners.size();
+            pieces[i].corners = std::span<const OverlayCorner>(corners.data() + first[i],
+                                                               end - first[i]);
+        }
+        return pieces;
+    }
+};
+
+}  // namespace
+
+struct TinOverlay::Impl {
+    const Tin* top = nullptr;
+    const Tin* base = nullptr;
+    double base_z = 0.0;
+    OverlayOptions options;
+    detail::TriangleGrid grid;
+
+    [[nodiscard]] std::size_t chunk_count() const {
+        const std::size_t size = std::max<std::size_t>(options.chunk_triangles, 1);
+        return (top->triangles.size() + size - 1) / size;
+    }
+
+    void plane_chunk(std::size_t begin, std::size_t end, ChunkBuffer& buffer) const {
+        std::array<OverlayCorner, 3> corners{};
+        for (std::size_t t = begin; t < end; ++t) {
+            const Tri a = load(*top, static_cast<TriangleIndex>(t));
+            for (std::size_t k = 0; k < 3; ++k) {
+                corners[k] = OverlayCorner{};
+                corners[k].x = a.x[k];
+                corners[k].y = a.y[k];
+                corners[k].z_top = a.z[k];
+                corners[k].z_base = base_z;
+                corners[k].top_u = a.v[k];
+            }
+            if (geom::orient2d(a.x[0], a.y[0], a.x[1], a.y[1], a.x[2], a.y[2]) > 0) {
+                buffer.add(static_cast<TriangleIndex>(t), no_triangle, slope(a), {0.0, 0.0},
+                           corners.data(), 3);
+            }
+        }
+    }
+
+    void tin_chunk(std::size_t begin, std::size_t end, ChunkBuffer& buffer) const {
+        std::array<OverlayCorner, 12> corners{};
+        const Box2& bounds = grid.bounds();
+        for (std::size_t t = begin; t < end; ++t) {
+            const Tri a = load(*top, static_cast<TriangleIndex>(t));
+            const Box2 ba = box_of(a);
+            if (ba.xmax <= bounds.xmin || ba.xmin >= bounds.xmax || ba.ymax <= bounds.ymin ||
+                ba.ymin >= bounds.ymax) {
+                continue;
+            }
+            const std::array<double, 2> top_slope = slope(a);
+            const std::size_t c0 = grid.col(ba.xmin);
+            const std::size_t c1 = grid.col(ba.xmax);
+            const std::size_t r0 = grid.row(ba.ymin);
+            const std::size_t r1 = grid.row(ba.ymax);
+            for (std::size_t r = r0; r <= r1; ++r) {
+                for (std::size_t c = c0; c <= c1; ++c) {
+                    for (const TriangleIndex* it = grid.cell_begin(c, r); it != grid.cell_end(c, r);
+                         ++it) {
+                        const detail::PackedTriangle& pb = grid.triangle(*it);
+                        const Box2 bb = pb.box();
+                        if (!(ba.xmin < bb.xmax && bb.xmin < ba.xmax && ba.ymin < bb.ymax &&
+                              bb.ymin < ba.ymax)) {
+                            continue;
+                        }
+                        if (grid.col(std::max(ba.xmin, bb.xmin)) != c ||
+                            grid.row(std::max(ba.ymin, bb.ymin)) != r) {
+                            continue;  // examined in another cell
+                        }
+                        Tri b{pb.x, pb.y, pb.z, base->triangles[*it].v};
+                        const std::size_t n = clip(a, b, corners.data());
+                        if (n >= 3) {
+                            buffer.add(static_cast<TriangleIndex>(t), *it, top_slope, slope(b),
+                                       corners.data(), n);
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    void run(const OverlayChunkFn& fn, const Progress& progress) const {
+        const std::size_t chunks = chunk_count();
+        const std::size_t size = std::max<std::size_t>(options.chunk_triangles, 1);
+        const std::size_t total = top->triangles.size();
+        std::atomic<std::size_t> done{0};
+        const auto body = [&](const tbb::blocked_range<std::size_t>& range) {
+            ChunkBuffer buffer;
+            for (std::size_t chunk = range.begin(); chunk != range.end(); ++chunk) {
+                progress.check();
+                buffer.clear();
+                const std::size_t begin = chunk * size;
+                const std::size_t end = std::min(total, begin + size);
+                if (base != nullptr) {
+                    tin_chunk(begin, end, buffer);
+                } else {
+                    plane_chunk(begin, end, buffer);
+                }
+                fn(chunk, buffer.finish());
+                const std::size_t finished = done.fetch_add(1) + 1;
+                progress.report(static_cast<double>(finished) / static_cast<double>(chunks),
+                                "overlaying the surfaces");
+            }
+        };
+        const auto run_all = [&] {
+            tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunks, 4), body);
+        };
+        if (options.threads > 0) {
+            tbb::task_arena arena(static_cast<int>(options.threads));
+            arena.execute(run_all);
+        } else {
+            run_all();
+        }
+        progress.report(1.0, "overlaying the surfaces");
+    }
+};
+
+TinOverlay::TinOverlay(const Tin& top, const Tin& base, const OverlayOptions& options)
+    : impl_(std::make_unique<Impl>()) {
+    impl_->top = &top;
+    impl_->base = &base;
+    impl_->options = options;
+    impl_->grid = detail::TriangleGrid(base);
+}
+
+TinOverlay::TinOverlay(const Tin& top, double base_z, const OverlayOptions& options)
+    : impl_(std::make_unique<Impl>()) {
+    impl_->top = &top;
+    impl_->base_z = base_z;
+    impl_->options = options;
+}
+
+TinOverlay::~TinOverlay() = default;
+
+std::size_t TinOverlay::chunk_count() const noexcept { return impl_->chunk_count(); }
+
+void TinOverlay::run(const OverlayChunkFn& fn, const Progress& progress) const {
+    impl_->run(fn, progress);
+}
+
+std::size_t TinOverlay::index_bytes() const noexcept { return impl_->grid.memory_bytes(); }
+
+}  // namespace dtm
