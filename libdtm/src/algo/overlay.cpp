@@ -6,9 +6,8 @@
 //
 // 1. Candidates. The base triangles are bucketed in a uniform grid (detail/triangle_grid). For a
 //    top triangle, the base triangles listed in the cells its bounding box touches are the
-//    candidates; a pair whose boxes overlap is examined only in the cell that holds the lower-left
-//    corner of the intersection of the two boxes, so it is examined once however many cells both
-//    span (cell lookup is monotone, so both triangles are listed in that cell).
+//    candidates, each visited once (the grid keeps every cell's list in groups by where each
+//    triangle's cell range starts); those whose boxes overlap the top triangle's are examined.
 // 2. Overlap, exactly. Two convex polygons have disjoint interiors exactly when the line of an
 //    edge of one of them has the other on its closed outer side (separating axis theorem); the
 //    18 orient2d signs of each triangle's corners against the other's edges decide it.
@@ -52,12 +51,7 @@ namespace dtm {
 namespace {
 
 /// One triangle with its corner indices, as the clipper reads it.
-struct Tri {
-    std::array<double, 3> x;
-    std::array<double, 3> y;
-    std::array<double, 3> z;
-    std::array<VertexIndex, 3> v;
-};
+using Tri = detail::PackedTriangle;
 
 constexpr std::size_t next(std::size_t i) { return i == 2 ? 0 : i + 1; }
 
@@ -278,28 +272,6 @@ std::size_t clip(const Tri& a, const Tri& b, OverlayCorner* out) {
     return n;
 }
 
-Tri load(const Tin& tin, TriangleIndex t) {
-    Tri out{};
-    for (std::size_t k = 0; k < 3; ++k) {
-        const VertexIndex v = tin.triangles[t].v[k];
-        const Point3& p = tin.vertices[v];
-        out.x[k] = p.x;
-        out.y[k] = p.y;
-        out.z[k] = p.z;
-        out.v[k] = v;
-    }
-    return out;
-}
-
-Box2 box_of(const Tri& t) {
-    Box2 b;
-    b.xmin = std::min({t.x[0], t.x[1], t.x[2]});
-    b.xmax = std::max({t.x[0], t.x[1], t.x[2]});
-    b.ymin = std::min({t.y[0], t.y[1], t.y[2]});
-    b.ymax = std::max({t.y[0], t.y[1], t.y[2]});
-    return b;
-}
-
 /// Reusable per-chunk buffers.
 struct ChunkBuffer {
     std::vector<OverlayCorner> corners;
@@ -341,6 +313,7 @@ struct TinOverlay::Impl {
     double base_z = 0.0;
     OverlayOptions options;
     detail::TriangleGrid grid;
+    std::vector<detail::PackedTriangle> packed_top;
 
     [[nodiscard]] std::size_t chunk_count() const {
         const std::size_t size = std::max<std::size_t>(options.chunk_triangles, 1);
@@ -350,7 +323,7 @@ struct TinOverlay::Impl {
     void plane_chunk(std::size_t begin, std::size_t end, ChunkBuffer& buffer) const {
         std::array<OverlayCorner, 3> corners{};
         for (std::size_t t = begin; t < end; ++t) {
-            const Tri a = load(*top, static_cast<TriangleIndex>(t));
+            const Tri& a = packed_top[t];
             for (std::size_t k = 0; k < 3; ++k) {
                 corners[k] = OverlayCorner{};
                 corners[k].x = a.x[k];
@@ -368,42 +341,22 @@ struct TinOverlay::Impl {
 
     void tin_chunk(std::size_t begin, std::size_t end, ChunkBuffer& buffer) const {
         std::array<OverlayCorner, 12> corners{};
-        const Box2& bounds = grid.bounds();
         for (std::size_t t = begin; t < end; ++t) {
-            const Tri a = load(*top, static_cast<TriangleIndex>(t));
-            const Box2 ba = box_of(a);
-            if (ba.xmax <= bounds.xmin || ba.xmin >= bounds.xmax || ba.ymax <= bounds.ymin ||
-                ba.ymin >= bounds.ymax) {
-                continue;
-            }
+            const Tri& a = packed_top[t];
+            const Box2 ba = a.box();
             const std::array<double, 2> top_slope = slope(a);
-            const std::size_t c0 = grid.col(ba.xmin);
-            const std::size_t c1 = grid.col(ba.xmax);
-            const std::size_t r0 = grid.row(ba.ymin);
-            const std::size_t r1 = grid.row(ba.ymax);
-            for (std::size_t r = r0; r <= r1; ++r) {
-                for (std::size_t c = c0; c <= c1; ++c) {
-                    for (const TriangleIndex* it = grid.cell_begin(c, r); it != grid.cell_end(c, r);
-                         ++it) {
-                        const detail::PackedTriangle& pb = grid.triangle(*it);
-                        const Box2 bb = pb.box();
-                        if (!(ba.xmin < bb.xmax && bb.xmin < ba.xmax && ba.ymin < bb.ymax &&
-                              bb.ymin < ba.ymax)) {
-                            continue;
-                        }
-                        if (grid.col(std::max(ba.xmin, bb.xmin)) != c ||
-                            grid.row(std::max(ba.ymin, bb.ymin)) != r) {
-                            continue;  // examined in another cell
-                        }
-                        Tri b{pb.x, pb.y, pb.z, base->triangles[*it].v};
-                        const std::size_t n = clip(a, b, corners.data());
-                        if (n >= 3) {
-                            buffer.add(static_cast<TriangleIndex>(t), *it, top_slope, slope(b),
-                                       corners.data(), n);
-                        }
+            grid.for_each_candidate(ba, [&](TriangleIndex tb) {
+                const detail::PackedTriangle& pb = grid.triangle(tb);
+                const Box2& bb = grid.box(tb);
+                if (ba.xmin < bb.xmax && bb.xmin < ba.xmax && ba.ymin < bb.ymax &&
+                    bb.ymin < ba.ymax) {
+                    const std::size_t n = clip(a, pb, corners.data());
+                    if (n >= 3) {
+                        buffer.add(static_cast<TriangleIndex>(t), tb, top_slope, slope(pb),
+                                   corners.data(), n);
                     }
                 }
-            }
+            });
         }
     }
 
@@ -414,6 +367,9 @@ struct TinOverlay::Impl {
         std::atomic<std::size_t> done{0};
         const auto body = [&](const tbb::blocked_range<std::size_t>& range) {
             ChunkBuffer buffer;
+            buffer.corners.reserve(size * 40);
+            buffer.pieces.reserve(size * 8);
+            buffer.first.reserve(size * 8);
             for (std::size_t chunk = range.begin(); chunk != range.end(); ++chunk) {
                 progress.check();
                 buffer.clear();
@@ -449,6 +405,7 @@ TinOverlay::TinOverlay(const Tin& top, const Tin& base, const OverlayOptions& op
     impl_->base = &base;
     impl_->options = options;
     impl_->grid = detail::TriangleGrid(base);
+    impl_->packed_top = detail::pack_triangles(top);
 }
 
 TinOverlay::TinOverlay(const Tin& top, double base_z, const OverlayOptions& options)
@@ -456,6 +413,7 @@ TinOverlay::TinOverlay(const Tin& top, double base_z, const OverlayOptions& opti
     impl_->top = &top;
     impl_->base_z = base_z;
     impl_->options = options;
+    impl_->packed_top = detail::pack_triangles(top);
 }
 
 TinOverlay::~TinOverlay() = default;
@@ -466,6 +424,9 @@ void TinOverlay::run(const OverlayChunkFn& fn, const Progress& progress) const {
     impl_->run(fn, progress);
 }
 
-std::size_t TinOverlay::index_bytes() const noexcept { return impl_->grid.memory_bytes(); }
+std::size_t TinOverlay::index_bytes() const noexcept {
+    return impl_->grid.memory_bytes() +
+           impl_->packed_top.capacity() * sizeof(detail::PackedTriangle);
+}
 
 }  // namespace dtm

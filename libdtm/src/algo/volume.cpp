@@ -107,7 +107,7 @@ std::size_t half(const Vertex* p, std::size_t n, double sign, Vertex* out) {
 
 void add_piece(const OverlayPiece& piece, Totals& totals) {
     const std::size_t n = piece.corners.size();
-    std::array<Vertex, 12> v{};
+    std::array<Vertex, 12> v;  // NOLINT: filled below
     const OverlayCorner& origin = piece.corners[0];
     bool any_positive = false;
     bool any_negative = false;
@@ -125,14 +125,16 @@ void add_piece(const OverlayPiece& piece, Totals& totals) {
             totals.max_cut_at = {c.x, c.y};
         }
     }
-    const double top_factor = std::hypot(1.0, piece.top_slope[0], piece.top_slope[1]);
-    const double base_factor = std::hypot(1.0, piece.base_slope[0], piece.base_slope[1]);
+    const double top_factor = std::sqrt(1.0 + piece.top_slope[0] * piece.top_slope[0] +
+                                        piece.top_slope[1] * piece.top_slope[1]);
+    const double base_factor = std::sqrt(1.0 + piece.base_slope[0] * piece.base_slope[0] +
+                                         piece.base_slope[1] * piece.base_slope[1]);
     ++totals.pieces;
     if (!any_positive && !any_negative) {
         totals.unchanged_area.add(integrate(v.data(), n).area);
         return;
     }
-    std::array<Vertex, 16> part{};
+    std::array<Vertex, 16> part;  // NOLINT: filled by half()
     if (any_positive) {
         const std::size_t m = any_negative ? half(v.data(), n, 1.0, part.data()) : n;
         const AreaIntegral r = integrate(any_negative ? part.data() : v.data(), m);

@@ -3,25 +3,43 @@
 // sums, fill), each triangle in the cells of its bounding box.
 #include "algo/detail/triangle_grid.hpp"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <limits>
 #include <stdexcept>
 
 namespace dtm::detail {
 
-TriangleGrid::TriangleGrid(const Tin& tin, double cells_per_triangle) {
-    triangles_.resize(tin.triangles.size());
-    for (std::size_t t = 0; t < tin.triangles.size(); ++t) {
-        PackedTriangle& p = triangles_[t];
-        for (std::size_t k = 0; k < 3; ++k) {
-            const Point3& v = tin.vertices[tin.triangles[t].v[k]];
-            p.x[k] = v.x;
-            p.y[k] = v.y;
-            p.z[k] = v.z;
-            bounds_.add(v.x, v.y);
-        }
+std::vector<PackedTriangle> pack_triangles(const Tin& tin) {
+    std::vector<PackedTriangle> out(tin.triangles.size());
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, out.size(), 4096),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+                          for (std::size_t t = range.begin(); t != range.end(); ++t) {
+                              PackedTriangle& p = out[t];
+                              for (std::size_t k = 0; k < 3; ++k) {
+                                  const VertexIndex i = tin.triangles[t].v[k];
+                                  const Point3& v = tin.vertices[i];
+                                  p.x[k] = v.x;
+                                  p.y[k] = v.y;
+                                  p.z[k] = v.z;
+                                  p.v[k] = i;
+                              }
+                          }
+                      });
+    return out;
+}
+
+TriangleGrid::TriangleGrid(const Tin& tin, double cells_per_triangle)
+    : triangles_(pack_triangles(tin)) {
+    boxes_.resize(triangles_.size());
+    for (std::size_t t = 0; t < triangles_.size(); ++t) {
+        boxes_[t] = triangles_[t].box();
+        bounds_.add(boxes_[t].xmin, boxes_[t].ymin);
+        bounds_.add(boxes_[t].xmax, boxes_[t].ymax);
     }
     if (triangles_.empty()) {
-        offsets_.assign(2, 0);
+        offsets_.assign(5, 0);
         return;
     }
     const double width = std::max(bounds_.xmax - bounds_.xmin, 0.0);
@@ -45,17 +63,20 @@ TriangleGrid::TriangleGrid(const Tin& tin, double cells_per_triangle) {
     cols_ = static_cast<std::size_t>(std::floor(width * inv_)) + 1;
     rows_ = static_cast<std::size_t>(std::floor(height * inv_)) + 1;
 
-    std::vector<std::uint32_t> counts(cols_ * rows_ + 1, 0);
+    // Entries of cell k, group g go to [offsets_[4k + g], offsets_[4k + g + 1]).
+    const auto group = [](std::size_t c, std::size_t r, std::size_t c0, std::size_t r0) {
+        return c == c0 ? (r == r0 ? 1U : 0U) : (r == r0 ? 2U : 3U);
+    };
+    std::vector<std::uint32_t> counts(4 * cols_ * rows_ + 1, 0);
     std::size_t total = 0;
-    for (const PackedTriangle& p : triangles_) {
-        const Box2 b = p.box();
+    for (const Box2& b : boxes_) {
         const std::size_t c0 = col(b.xmin);
         const std::size_t c1 = col(b.xmax);
         const std::size_t r0 = row(b.ymin);
         const std::size_t r1 = row(b.ymax);
         for (std::size_t r = r0; r <= r1; ++r) {
             for (std::size_t c = c0; c <= c1; ++c) {
-                ++counts[r * cols_ + c + 1];
+                ++counts[4 * (r * cols_ + c) + group(c, r, c0, r0) + 1];
             }
         }
         total += (c1 - c0 + 1) * (r1 - r0 + 1);
@@ -69,14 +90,15 @@ TriangleGrid::TriangleGrid(const Tin& tin, double cells_per_triangle) {
     offsets_ = counts;
     items_.resize(total);
     for (std::size_t t = 0; t < triangles_.size(); ++t) {
-        const Box2 b = triangles_[t].box();
+        const Box2& b = boxes_[t];
         const std::size_t c0 = col(b.xmin);
         const std::size_t c1 = col(b.xmax);
         const std::size_t r0 = row(b.ymin);
         const std::size_t r1 = row(b.ymax);
         for (std::size_t r = r0; r <= r1; ++r) {
             for (std::size_t c = c0; c <= c1; ++c) {
-                items_[counts[r * cols_ + c]++] = static_cast<TriangleIndex>(t);
+                items_[counts[4 * (r * cols_ + c) + group(c, r, c0, r0)]++] =
+                    static_cast<TriangleIndex>(t);
             }
         }
     }

@@ -28,6 +28,7 @@ struct PackedTriangle {
     std::array<double, 3> x;
     std::array<double, 3> y;
     std::array<double, 3> z;
+    std::array<VertexIndex, 3> v;
     [[nodiscard]] Box2 box() const noexcept {
         Box2 b;
         b.xmin = std::min({x[0], x[1], x[2]});
@@ -37,6 +38,9 @@ struct PackedTriangle {
         return b;
     }
 };
+
+/// The triangles of @p tin with their corners copied in (parallel).
+[[nodiscard]] std::vector<PackedTriangle> pack_triangles(const Tin& tin);
 
 class TriangleGrid {
 public:
@@ -48,6 +52,8 @@ public:
     [[nodiscard]] bool empty() const noexcept { return triangles_.empty(); }
     [[nodiscard]] const PackedTriangle& triangle(TriangleIndex t) const { return triangles_[t]; }
     [[nodiscard]] std::size_t triangle_count() const noexcept { return triangles_.size(); }
+    /// Bounding box of triangle @p t.
+    [[nodiscard]] const Box2& box(TriangleIndex t) const { return boxes_[t]; }
     /// Bounding box of every triangle.
     [[nodiscard]] const Box2& bounds() const noexcept { return bounds_; }
 
@@ -56,17 +62,14 @@ public:
     /// Column of @p x, clamped to the grid (monotone in x).
     [[nodiscard]] std::size_t col(double x) const noexcept { return clamp_cell((x - x0_) * inv_, cols_); }
     [[nodiscard]] std::size_t row(double y) const noexcept { return clamp_cell((y - y0_) * inv_, rows_); }
-    /// The triangles listed in cell (col, row).
-    [[nodiscard]] const TriangleIndex* cell_begin(std::size_t c, std::size_t r) const noexcept {
-        return items_.data() + offsets_[r * cols_ + c];
-    }
-    [[nodiscard]] const TriangleIndex* cell_end(std::size_t c, std::size_t r) const noexcept {
-        return items_.data() + offsets_[r * cols_ + c + 1];
-    }
-    /// Calls fn(t) for every triangle listed in a cell that @p box touches (a triangle listed in
-    /// several such cells is passed several times).
+    /// Calls fn(t) once for every triangle whose cell range overlaps the cell range of @p box
+    /// (a superset of the triangles whose boxes overlap it). Each cell keeps its triangles in four
+    /// groups by whether the cell is the first column and/or the first row of the triangle's
+    /// range; a pair of ranges overlaps in exactly one cell that is the first column of one of
+    /// them and the first row of one of them, so scanning the right groups visits each
+    /// triangle once, with no duplicate test.
     template <class Fn>
-    void for_each_in_box(const Box2& box, Fn&& fn) const {
+    void for_each_candidate(const Box2& box, Fn&& fn) const {
         if (empty() || box.xmax < bounds_.xmin || box.xmin > bounds_.xmax ||
             box.ymax < bounds_.ymin || box.ymin > bounds_.ymax) {
             return;
@@ -77,7 +80,15 @@ public:
         const std::size_t r1 = row(box.ymax);
         for (std::size_t r = r0; r <= r1; ++r) {
             for (std::size_t c = c0; c <= c1; ++c) {
-                for (const TriangleIndex* it = cell_begin(c, r); it != cell_end(c, r); ++it) {
+                const std::uint32_t* off = offsets_.data() + 4 * (r * cols_ + c);
+                // Groups: 0 first column only, 1 first column and first row, 2 first row only,
+                // 3 neither. Beyond the box's first column the triangle must start in this
+                // column (groups 0, 1); beyond its first row, in this row (groups 1, 2).
+                const std::size_t first = r == r0 ? 0 : 1;
+                const std::size_t last = c == c0 ? (r == r0 ? 4 : 3) : 2;
+                const std::uint32_t* begin = items_.data() + off[first];
+                const std::uint32_t* end = items_.data() + off[last];
+                for (const std::uint32_t* it = begin; it < end; ++it) {
                     fn(*it);
                 }
             }
@@ -85,7 +96,7 @@ public:
     }
     /// Approximate heap bytes held.
     [[nodiscard]] std::size_t memory_bytes() const noexcept {
-        return triangles_.capacity() * sizeof(PackedTriangle) +
+        return triangles_.capacity() * sizeof(PackedTriangle) + boxes_.capacity() * sizeof(Box2) +
                (offsets_.capacity() + items_.capacity()) * sizeof(std::uint32_t);
     }
 
@@ -99,6 +110,7 @@ private:
     }
 
     std::vector<PackedTriangle> triangles_;
+    std::vector<Box2> boxes_;
     Box2 bounds_;
     double x0_ = 0.0;
     double y0_ = 0.0;
