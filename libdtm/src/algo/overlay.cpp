@@ -37,10 +37,13 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_pipeline.h>
 #include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <atomic>
+#include <memory>
+#include <utility>
 #include <array>
 #include <vector>
 
@@ -360,10 +363,68 @@ struct TinOverlay::Impl {
         }
     }
 
+    void compute(std::size_t chunk, ChunkBuffer& buffer) const {
+        const std::size_t size = std::max<std::size_t>(options.chunk_triangles, 1);
+        const std::size_t begin = chunk * size;
+        const std::size_t end = std::min(top->triangles.size(), begin + size);
+        buffer.clear();
+        if (base != nullptr) {
+            tin_chunk(begin, end, buffer);
+        } else {
+            plane_chunk(begin, end, buffer);
+        }
+    }
+
+    template <class Fn>
+    void in_arena(Fn&& fn) const {
+        if (options.threads > 0) {
+            tbb::task_arena arena(static_cast<int>(options.threads));
+            arena.execute(fn);
+        } else {
+            fn();
+        }
+    }
+
+    void run_ordered(const OverlayChunkFn& fn, const Progress& progress) const {
+        const std::size_t chunks = chunk_count();
+        std::size_t next_chunk = 0;
+        in_arena([&] {
+            const auto tokens =
+                static_cast<std::size_t>(2 * tbb::this_task_arena::max_concurrency());
+            tbb::parallel_pipeline(
+                tokens,
+                tbb::make_filter<void, std::size_t>(
+                    tbb::filter_mode::serial_in_order,
+                    [&](tbb::flow_control& control) -> std::size_t {
+                        if (next_chunk == chunks) {
+                            control.stop();
+                            return 0;
+                        }
+                        return next_chunk++;
+                    }) &
+                    tbb::make_filter<std::size_t, std::pair<std::size_t, std::shared_ptr<ChunkBuffer>>>(
+                        tbb::filter_mode::parallel,
+                        [&](std::size_t chunk) {
+                            progress.check();
+                            auto buffer = std::make_shared<ChunkBuffer>();
+                            compute(chunk, *buffer);
+                            return std::pair{chunk, buffer};
+                        }) &
+                    tbb::make_filter<std::pair<std::size_t, std::shared_ptr<ChunkBuffer>>, void>(
+                        tbb::filter_mode::serial_in_order,
+                        [&](const std::pair<std::size_t, std::shared_ptr<ChunkBuffer>>& item) {
+                            fn(item.first, item.second->finish());
+                            progress.report(static_cast<double>(item.first + 1) /
+                                                static_cast<double>(std::max<std::size_t>(chunks, 1)),
+                                            "overlaying the surfaces");
+                        }));
+        });
+        progress.report(1.0, "overlaying the surfaces");
+    }
+
     void run(const OverlayChunkFn& fn, const Progress& progress) const {
         const std::size_t chunks = chunk_count();
         const std::size_t size = std::max<std::size_t>(options.chunk_triangles, 1);
-        const std::size_t total = top->triangles.size();
         std::atomic<std::size_t> done{0};
         const auto body = [&](const tbb::blocked_range<std::size_t>& range) {
             ChunkBuffer buffer;
@@ -372,29 +433,14 @@ struct TinOverlay::Impl {
             buffer.first.reserve(size * 8);
             for (std::size_t chunk = range.begin(); chunk != range.end(); ++chunk) {
                 progress.check();
-                buffer.clear();
-                const std::size_t begin = chunk * size;
-                const std::size_t end = std::min(total, begin + size);
-                if (base != nullptr) {
-                    tin_chunk(begin, end, buffer);
-                } else {
-                    plane_chunk(begin, end, buffer);
-                }
+                compute(chunk, buffer);
                 fn(chunk, buffer.finish());
                 const std::size_t finished = done.fetch_add(1) + 1;
                 progress.report(static_cast<double>(finished) / static_cast<double>(chunks),
                                 "overlaying the surfaces");
             }
         };
-        const auto run_all = [&] {
-            tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunks, 4), body);
-        };
-        if (options.threads > 0) {
-            tbb::task_arena arena(static_cast<int>(options.threads));
-            arena.execute(run_all);
-        } else {
-            run_all();
-        }
+        in_arena([&] { tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunks, 4), body); });
         progress.report(1.0, "overlaying the surfaces");
     }
 };
@@ -422,6 +468,15 @@ std::size_t TinOverlay::chunk_count() const noexcept { return impl_->chunk_count
 
 void TinOverlay::run(const OverlayChunkFn& fn, const Progress& progress) const {
     impl_->run(fn, progress);
+}
+
+void TinOverlay::run_ordered(const OverlayChunkFn& fn, const Progress& progress) const {
+    impl_->run_ordered(fn, progress);
+}
+
+void TinOverlay::vertex_counts(std::size_t& top, std::size_t& base) const noexcept {
+    top = impl_->top->vertices.size();
+    base = impl_->base != nullptr ? impl_->base->vertices.size() : 0;
 }
 
 std::size_t TinOverlay::index_bytes() const noexcept {

@@ -77,6 +77,11 @@ public:
     [[nodiscard]] std::size_t chunk_count() const noexcept;
     /// Computes every piece and passes them chunk by chunk to @p fn. @throws Cancelled
     void run(const OverlayChunkFn& fn, const Progress& progress = {}) const;
+    /// Same, but @p fn is called on one thread at a time in chunk order (pieces are still
+    /// computed in parallel, a few chunks ahead): for consumers that number what they see.
+    void run_ordered(const OverlayChunkFn& fn, const Progress& progress = {}) const;
+    /// Vertex counts of the two TINs (base 0 for a plane).
+    void vertex_counts(std::size_t& top, std::size_t& base) const noexcept;
     /// Heap bytes of the index over the base.
     [[nodiscard]] std::size_t index_bytes() const noexcept;
 
