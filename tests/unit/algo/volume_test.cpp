@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "dtm/algo/volume.hpp"
+#include "dtm/algo/validate.hpp"
+#include "dtm/algo/volume_surfaces.hpp"
 
 #include <gtest/gtest.h>
 
@@ -151,6 +153,65 @@ TEST(Volume, DisjointSurfacesHaveNoOverlap) {
     EXPECT_EQ(r.overlap_area, 0.0);
     EXPECT_EQ(r.pieces, 0U);
     expect_rel(r.top_only_area, 100.0);
+}
+
+}  // namespace
+
+namespace {
+
+TEST(VolumeSurfaces, StockpileOverItsSpannedFootIsThePyramid) {
+    // A pyramid standing on a tilted plane: its foot spans the tilted plane exactly.
+    const dtm::test::Square sq{-750000.0, -1050000.0, 40.0};
+    const double h = 6.0;
+    const auto z = [&](double x, double y) {
+        return 200.0 + 0.05 * (x - sq.x0) - 0.02 * (y - sq.y0) +
+               dtm::test::frustum_z(sq, h, 0.0, x, y);
+    };
+    const double cx = sq.x0 + 20.0;
+    const double cy = sq.y0 + 20.0;
+    const dtm::Tin pile = dtm::test::sampled_tin(
+        sq, 200, 21, z,
+        {{{sq.x0, sq.y0}, {cx, cy}}, {{sq.x0 + 40.0, sq.y0}, {cx, cy}},
+         {{sq.x0 + 40.0, sq.y0 + 40.0}, {cx, cy}}, {{sq.x0, sq.y0 + 40.0}, {cx, cy}}});
+    const dtm::Tin floor = dtm::spanned_base(pile);
+    const dtm::VolumeResult r = dtm::volume(pile, floor);
+    expect_rel(r.fill, 1600.0 * h / 3.0);
+    EXPECT_NEAR(r.cut, 0.0, 1e-9);
+    expect_rel(r.overlap_area, 1600.0);
+}
+
+TEST(VolumeSurfaces, ClippedToAPolygonKeepsTheSurfaceInsideIt) {
+    const dtm::test::Square sq{-750000.0, -1050000.0, 40.0};
+    const dtm::Tin pyramid = dtm::test::frustum_tin(sq, 8.0, 0.0, 300, 22);
+    // The inner square of half the side, as the area, with a 4 x 4 hole in it.
+    dtm::TerrainInput area;
+    dtm::Polyline ring;
+    for (const auto& [u, v] : std::vector<std::pair<double, double>>{{10, 10}, {30, 10}, {30, 30}, {10, 30}, {10, 10}}) {
+        ring.points.push_back({sq.x0 + u, sq.y0 + v, 0.0});
+    }
+    area.boundaries.push_back(ring);
+    dtm::Polyline hole;
+    for (const auto& [u, v] : std::vector<std::pair<double, double>>{{12, 12}, {16, 12}, {16, 16}, {12, 16}, {12, 12}}) {
+        hole.points.push_back({sq.x0 + u, sq.y0 + v, 0.0});
+    }
+    area.holes.push_back(hole);
+    const dtm::Tin inner = dtm::clip_tin(pyramid, area);
+    expect_rel(dtm::tin_area(inner), 400.0 - 16.0);
+    // Above the level h / 2 = 4 the pyramid is the inner pyramid of volume 400 * 4 / 3; the hole
+    // removes the part of it over [12, 16]^2, where the height is 8 (20 - r) / 20 with the
+    // Chebyshev radius r from the centre (20, 20): between 4 and 6.4.
+    const dtm::VolumeResult r = dtm::volume(inner, 4.0);
+    const dtm::VolumeResult whole = dtm::volume(pyramid, 4.0);
+    const dtm::VolumeResult hole_part = dtm::volume(
+        dtm::clip_tin(pyramid, [&] {
+            dtm::TerrainInput h;
+            h.boundaries.push_back(hole);
+            return h;
+        }()),
+        4.0);
+    expect_rel(whole.fill, 400.0 * 4.0 / 3.0);
+    expect_rel(r.fill, whole.fill - hole_part.fill);
+    expect_rel(r.fill_area + r.cut_area, 384.0);
 }
 
 }  // namespace
