@@ -55,6 +55,7 @@ namespace {
 
 /// One triangle with its corner indices, as the clipper reads it.
 using Tri = detail::PackedTriangle;
+using detail::height_at;
 
 constexpr std::size_t next(std::size_t i) { return i == 2 ? 0 : i + 1; }
 
@@ -75,54 +76,6 @@ std::array<double, 2> slope(const Tri& t) {
         return {0.0, 0.0};
     }
     return {(uz * vy - uy * vz) / d, (ux * vz - uz * vx) / d};
-}
-
-/// Height of triangle @p t's plane at (px, py) (barycentric, relative to its first corner).
-double plane_z(const Tri& t, double px, double py) {
-    const double ux = t.x[1] - t.x[0];
-    const double uy = t.y[1] - t.y[0];
-    const double vx = t.x[2] - t.x[0];
-    const double vy = t.y[2] - t.y[0];
-    const double qx = px - t.x[0];
-    const double qy = py - t.y[0];
-    const double d = ux * vy - uy * vx;
-    if (d == 0.0) {
-        return t.z[0];
-    }
-    const double l1 = (qx * vy - qy * vx) / d;
-    const double l2 = (ux * qy - uy * qx) / d;
-    return t.z[0] + l1 * (t.z[1] - t.z[0]) + l2 * (t.z[2] - t.z[0]);
-}
-
-/// Height along edge k (corner k to corner k+1) of @p t at (px, py), interpolated from the end
-/// with the smaller vertex index so both triangles of the edge agree.
-double edge_z(const Tri& t, std::size_t k, double px, double py) {
-    std::size_t a = k;
-    std::size_t b = next(k);
-    if (t.v[b] < t.v[a]) {
-        std::swap(a, b);
-    }
-    const double ex = t.x[b] - t.x[a];
-    const double ey = t.y[b] - t.y[a];
-    const double len2 = ex * ex + ey * ey;
-    const double s = len2 > 0.0 ? ((px - t.x[a]) * ex + (py - t.y[a]) * ey) / len2 : 0.0;
-    return t.z[a] + std::clamp(s, 0.0, 1.0) * (t.z[b] - t.z[a]);
-}
-
-/// Height of @p t at a point inside it or on its boundary; @p signs are the orientations of the
-/// point against t's edges (edge k: corner k to k+1).
-double height_at(const Tri& t, const std::array<int, 3>& signs, double px, double py) {
-    for (std::size_t k = 0; k < 3; ++k) {
-        if (t.x[k] == px && t.y[k] == py) {
-            return t.z[k];
-        }
-    }
-    for (std::size_t k = 0; k < 3; ++k) {
-        if (signs[k] == 0) {
-            return edge_z(t, k, px, py);
-        }
-    }
-    return plane_z(t, px, py);
 }
 
 /// Parameter along (u -> v) where it crosses the line p -> q.

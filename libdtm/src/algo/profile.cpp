@@ -41,6 +41,8 @@ namespace dtm {
 namespace {
 
 using detail::PackedTriangle;
+using detail::edge_height;
+using detail::height_at;
 
 inline double det(double ax, double ay, double bx, double by, double cx, double cy) {
     return (ax - cx) * (by - cy) - (ay - cy) * (bx - cx);
@@ -53,50 +55,6 @@ struct Interval {
     double z1 = 0.0;
     TriangleIndex triangle = no_triangle;
 };
-
-/// Height along edge (a, b) of @p t at parameter s measured from the smaller vertex index.
-double edge_height(const PackedTriangle& t, std::size_t a, std::size_t b, double px, double py) {
-    if (t.v[b] < t.v[a]) {
-        std::swap(a, b);
-    }
-    const double ex = t.x[b] - t.x[a];
-    const double ey = t.y[b] - t.y[a];
-    const double len2 = ex * ex + ey * ey;
-    const double s = len2 > 0.0 ? ((px - t.x[a]) * ex + (py - t.y[a]) * ey) / len2 : 0.0;
-    return t.z[a] + std::clamp(s, 0.0, 1.0) * (t.z[b] - t.z[a]);
-}
-
-double plane_height(const PackedTriangle& t, double px, double py) {
-    const double ux = t.x[1] - t.x[0];
-    const double uy = t.y[1] - t.y[0];
-    const double vx = t.x[2] - t.x[0];
-    const double vy = t.y[2] - t.y[0];
-    const double qx = px - t.x[0];
-    const double qy = py - t.y[0];
-    const double d = ux * vy - uy * vx;
-    if (d == 0.0) {
-        return t.z[0];
-    }
-    const double l1 = (qx * vy - qy * vx) / d;
-    const double l2 = (ux * qy - uy * qx) / d;
-    return t.z[0] + l1 * (t.z[1] - t.z[0]) + l2 * (t.z[2] - t.z[0]);
-}
-
-/// Height of @p t at a point with orientation signs @p s against its edges (edge k: corner k to
-/// corner k + 1); the point is in the closed triangle.
-double height_at(const PackedTriangle& t, const std::array<int, 3>& s, double px, double py) {
-    for (std::size_t k = 0; k < 3; ++k) {
-        if (t.x[k] == px && t.y[k] == py) {
-            return t.z[k];
-        }
-    }
-    for (std::size_t k = 0; k < 3; ++k) {
-        if (s[k] == 0) {
-            return edge_height(t, k, (k + 1) % 3, px, py);
-        }
-    }
-    return plane_height(t, px, py);
-}
 
 struct Segment {
     double px, py, qx, qy;

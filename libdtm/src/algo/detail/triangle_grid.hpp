@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "dtm/core/point.hpp"
@@ -38,6 +39,55 @@ struct PackedTriangle {
         return b;
     }
 };
+
+/// Height of @p t's plane at (px, py) (barycentric, relative to its first corner).
+inline double plane_height(const PackedTriangle& t, double px, double py) {
+    const double ux = t.x[1] - t.x[0];
+    const double uy = t.y[1] - t.y[0];
+    const double vx = t.x[2] - t.x[0];
+    const double vy = t.y[2] - t.y[0];
+    const double qx = px - t.x[0];
+    const double qy = py - t.y[0];
+    const double d = ux * vy - uy * vx;
+    if (d == 0.0) {
+        return t.z[0];
+    }
+    const double l1 = (qx * vy - qy * vx) / d;
+    const double l2 = (ux * qy - uy * qx) / d;
+    return t.z[0] + l1 * (t.z[1] - t.z[0]) + l2 * (t.z[2] - t.z[0]);
+}
+
+/// Height along the edge between corners @p a and @p b of @p t at (px, py), interpolated from
+/// the end with the smaller vertex index, so both triangles of the edge give the same bits.
+inline double edge_height(const PackedTriangle& t, std::size_t a, std::size_t b, double px,
+                          double py) {
+    if (t.v[b] < t.v[a]) {
+        std::swap(a, b);
+    }
+    const double ex = t.x[b] - t.x[a];
+    const double ey = t.y[b] - t.y[a];
+    const double len2 = ex * ex + ey * ey;
+    const double s = len2 > 0.0 ? ((px - t.x[a]) * ex + (py - t.y[a]) * ey) / len2 : 0.0;
+    return t.z[a] + std::clamp(s, 0.0, 1.0) * (t.z[b] - t.z[a]);
+}
+
+/// Height of @p t at a point of the closed triangle whose orientations against t's edges (edge
+/// k: corner k to corner k + 1) are @p signs: a corner's own height, interpolation along an edge
+/// the point lies on, or the plane inside. The same bits from every triangle sharing the place.
+inline double height_at(const PackedTriangle& t, const std::array<int, 3>& signs, double px,
+                        double py) {
+    for (std::size_t k = 0; k < 3; ++k) {
+        if (t.x[k] == px && t.y[k] == py) {
+            return t.z[k];
+        }
+    }
+    for (std::size_t k = 0; k < 3; ++k) {
+        if (signs[k] == 0) {
+            return edge_height(t, k, (k + 1) % 3, px, py);
+        }
+    }
+    return plane_height(t, px, py);
+}
 
 /// The triangles of @p tin with their corners copied in (parallel).
 [[nodiscard]] std::vector<PackedTriangle> pack_triangles(const Tin& tin);
