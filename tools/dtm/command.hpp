@@ -25,5 +25,6 @@ Command grid_command();
 Command contour_command();
 Command build_command();
 Command methods_command();
+Command volume_command();
 
 }  // namespace dtm::cli

@@ -40,6 +40,21 @@ void add_input_options(CLI::App& app, InputArgs& args)
     add_hpgl_options(app, o.hpgl);
 }
 
+void add_surface_options(CLI::App& app, const std::string& name, InputArgs& args)
+{
+    const auto files = [&app](const std::string& flag, std::vector<std::string>& into,
+                              const std::string& what) {
+        app.add_option(flag, into, what)->check(CLI::ExistingPath);
+    };
+    files("--" + name, args.inputs,
+          "The " + name + " surface: a dtm .ply TIN, or points (and lines) to triangulate");
+    files("--" + name + "-breaklines", args.breaklines, "Hard breaklines of the " + name + " surface");
+    files("--" + name + "-soft-breaklines", args.soft_breaklines,
+          "Soft breaklines of the " + name + " surface");
+    files("--" + name + "-boundary", args.boundaries, "Outer boundary of the " + name + " surface");
+    files("--" + name + "-holes", args.holes, "Holes of the " + name + " surface");
+}
+
 io::LoadOptions to_load_options(const InputArgs& args)
 {
     io::LoadOptions options = args.load;

@@ -25,6 +25,11 @@ struct InputArgs {
 /// Declares the positional INPUTS and the reader options on @p app.
 void add_input_options(CLI::App& app, InputArgs& args);
 
+/// Declares a second surface's files: --NAME FILE... (points, lines or a dtm .ply TIN) and
+/// --NAME-breaklines, --NAME-soft-breaklines, --NAME-boundary, --NAME-holes. The reader options
+/// (--crs, --columns, --layer, ...) are the command's.
+void add_surface_options(CLI::App& app, const std::string& name, InputArgs& args);
+
 /// The LoadOptions for io::load_inputs.
 [[nodiscard]] io::LoadOptions to_load_options(const InputArgs& args);
 
