@@ -26,5 +26,6 @@ Command contour_command();
 Command build_command();
 Command methods_command();
 Command volume_command();
+Command profile_command();
 
 }  // namespace dtm::cli

@@ -24,7 +24,11 @@ void add_input_options(CLI::App& app, InputArgs& args)
           "Outer boundary: polygons (inner rings are holes) or closed lines; repeatable");
     files("--holes", args.holes,
           "Holes: polygons or closed lines, or points as hole seeds; repeatable");
-    io::LoadOptions& o = args.load;
+    add_reader_options(app, args.load);
+}
+
+void add_reader_options(CLI::App& app, io::LoadOptions& o)
+{
     app.add_option("--crs", o.crs, "CRS of inputs that carry none (EPSG:5514, WKT, PROJ)");
     app.add_option("--target-crs", o.target_crs,
                    "Transform every input into this CRS (default: the first input's CRS; "
