@@ -47,7 +47,7 @@ void write_csv(const fs::path& path, const std::vector<Polyline>& lines,
             const Profile& p = sections[s][l];
             for (std::size_t r = 0; r < p.runs.size(); ++r) {
                 for (const ProfilePoint& q : p.runs[r].points) {
-                    std::snprintf(row, sizeof row, "%zu,%s,%zu,%.4f,%.4f,%.4f,%.4f\n", l + 1,
+                    std::snprintf(row, sizeof row, "%zu,%s,%zu,%.6f,%.6f,%.6f,%.6f\n", l + 1,
                                   names[s].c_str(), r + 1, q.chainage, q.x, q.y, q.z);
                     out << row;
                     ++report.breakpoints;
