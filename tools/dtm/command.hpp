@@ -27,5 +27,6 @@ Command build_command();
 Command methods_command();
 Command volume_command();
 Command profile_command();
+Command check_command();
 
 }  // namespace dtm::cli
