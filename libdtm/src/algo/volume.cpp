@@ -3,10 +3,8 @@
 //
 // Over every overlay piece (overlay.cpp: a convex polygon inside one top and one base triangle)
 // the difference d = z_top - z_base is a linear function. The piece is cut at d = 0 into the part
-// where d >= 0 and the part where d <= 0 (each convex: a half-plane of a convex polygon); over a
-// convex polygon a linear function integrates exactly as the sum over the fan triangles
-// (q0, qi, qi+1) of area x mean of the three corner values (the value at the centroid). The zero
-// crossing on an edge with corner values of opposite sign is at t = d_i / (d_i - d_j).
+// where d >= 0 and the part where d <= 0 and each is integrated in closed form
+// (detail/piece_integral.hpp: fan triangles, area x mean of the corner values, exact for degree 1).
 // Coordinates are taken relative to the piece's first corner (large S-JTSK offsets cancel
 // exactly), and every total is a Neumaier compensated sum, kept per chunk and combined in chunk
 // order, so results do not depend on the thread count.
@@ -25,6 +23,7 @@
 #include <vector>
 
 #include "algo/detail/compensated_sum.hpp"
+#include "algo/detail/piece_integral.hpp"
 #include "dtm/algo/validate.hpp"
 
 namespace dtm {
@@ -63,59 +62,13 @@ struct Totals {
     }
 };
 
-struct Vertex {
-    double x;
-    double y;
-    double d;
-};
-
-/// Area and integral of d over the convex polygon @p p (counter-clockwise).
-struct AreaIntegral {
-    double area = 0.0;
-    double integral = 0.0;
-};
-
-AreaIntegral integrate(const Vertex* p, std::size_t n) {
-    AreaIntegral r;
-    for (std::size_t i = 1; i + 1 < n; ++i) {
-        const double a = 0.5 * ((p[i].x - p[0].x) * (p[i + 1].y - p[0].y) -
-                                (p[i].y - p[0].y) * (p[i + 1].x - p[0].x));
-        r.area += a;
-        r.integral += a * (p[0].d + p[i].d + p[i + 1].d) / 3.0;
-    }
-    return r;
-}
-
-/// The part of polygon @p p where sign * d >= 0, into @p out; returns its corner count.
-std::size_t half(const Vertex* p, std::size_t n, double sign, Vertex* out) {
-    std::size_t m = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-        const Vertex& a = p[i];
-        const Vertex& b = p[i + 1 == n ? 0 : i + 1];
-        const double da = sign * a.d;
-        const double db = sign * b.d;
-        if (da >= 0.0) {
-            out[m++] = a;
-        }
-        if ((da > 0.0 && db < 0.0) || (da < 0.0 && db > 0.0)) {
-            const double t = da / (da - db);
-            out[m++] = {a.x + t * (b.x - a.x), a.y + t * (b.y - a.y), 0.0};
-        }
-    }
-    return m;
-}
-
 void add_piece(const OverlayPiece& piece, Totals& totals) {
     const std::size_t n = piece.corners.size();
-    std::array<Vertex, 12> v;  // NOLINT: filled below
+    std::array<detail::LinearCorner, 12> v;  // NOLINT: filled below
     const OverlayCorner& origin = piece.corners[0];
-    bool any_positive = false;
-    bool any_negative = false;
     for (std::size_t i = 0; i < n; ++i) {
         const OverlayCorner& c = piece.corners[i];
         v[i] = {c.x - origin.x, c.y - origin.y, c.z_top - c.z_base};
-        any_positive = any_positive || v[i].d > 0.0;
-        any_negative = any_negative || v[i].d < 0.0;
         if (v[i].d > totals.max_fill) {
             totals.max_fill = v[i].d;
             totals.max_fill_at = {c.x, c.y};
@@ -130,26 +83,21 @@ void add_piece(const OverlayPiece& piece, Totals& totals) {
     const double base_factor = std::sqrt(1.0 + piece.base_slope[0] * piece.base_slope[0] +
                                          piece.base_slope[1] * piece.base_slope[1]);
     ++totals.pieces;
-    if (!any_positive && !any_negative) {
-        totals.unchanged_area.add(integrate(v.data(), n).area);
-        return;
+    const detail::SignedParts parts = detail::split_polygon(v.data(), n);
+    if (parts.unchanged_area > 0.0) {
+        totals.unchanged_area.add(parts.unchanged_area);
     }
-    std::array<Vertex, 16> part;  // NOLINT: filled by half()
-    if (any_positive) {
-        const std::size_t m = any_negative ? half(v.data(), n, 1.0, part.data()) : n;
-        const AreaIntegral r = integrate(any_negative ? part.data() : v.data(), m);
-        totals.fill.add(r.integral);
-        totals.fill_area.add(r.area);
-        totals.fill_top_3d.add(r.area * top_factor);
-        totals.fill_base_3d.add(r.area * base_factor);
+    if (parts.fill.area != 0.0) {
+        totals.fill.add(parts.fill.integral);
+        totals.fill_area.add(parts.fill.area);
+        totals.fill_top_3d.add(parts.fill.area * top_factor);
+        totals.fill_base_3d.add(parts.fill.area * base_factor);
     }
-    if (any_negative) {
-        const std::size_t m = any_positive ? half(v.data(), n, -1.0, part.data()) : n;
-        const AreaIntegral r = integrate(any_positive ? part.data() : v.data(), m);
-        totals.cut.add(-r.integral);
-        totals.cut_area.add(r.area);
-        totals.cut_top_3d.add(r.area * top_factor);
-        totals.cut_base_3d.add(r.area * base_factor);
+    if (parts.cut.area != 0.0) {
+        totals.cut.add(parts.cut.integral);
+        totals.cut_area.add(parts.cut.area);
+        totals.cut_top_3d.add(parts.cut.area * top_factor);
+        totals.cut_base_3d.add(parts.cut.area * base_factor);
     }
 }
 
