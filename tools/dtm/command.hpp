@@ -28,5 +28,6 @@ Command methods_command();
 Command volume_command();
 Command profile_command();
 Command check_command();
+Command sections_command();
 
 }  // namespace dtm::cli

@@ -82,8 +82,9 @@ void draw_profile(io::draw::Canvas& canvas, const ProfilePlot& plot, Point2 top_
     title.size_pt = 8.0;
     title.bold = true;
     char heading[256];
-    std::snprintf(heading, sizeof heading, "%s   (vertical exaggeration %gx)", plot.title.c_str(),
-                  plot.exaggeration);
+    std::snprintf(heading, sizeof heading,
+                  width < 120.0 ? "%s   (%gx)" : "%s   (vertical exaggeration %gx)",
+                  plot.title.c_str(), plot.exaggeration);
     canvas.text({left, top_left.y + 5.0}, heading, title);
     // Height grid.
     small.h = HAlign::right;
