@@ -207,3 +207,45 @@ TEST(CliVolume, BadInputIsAnErrorNamingTheFile) {
 }
 
 }  // namespace
+
+namespace {
+
+fs::path sample(const char* name) {
+    return fs::path(DTM_TEST_DATA_DIR) / ".." / ".." / "samples" / "sjtsk" / name;
+}
+
+TEST(CliBuildBase, AddsTheVolumeProductsAndACutFillMapToTheProject) {
+    const dtm::test::ScratchDir dir;
+    auto r = dtm::test::run_dtm({"tin", sample("natural_points.csv").string(), "--breaklines",
+                                 sample("natural_breaklines.shp").string(), "--boundary",
+                                 sample("natural_boundary.shp").string(), "--holes",
+                                 sample("natural_building.shp").string(), "--crs", "EPSG:5514",
+                                 "-o", (dir / "natural.ply").string(), "-q"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    r = dtm::test::run_dtm({"build", sample("points.csv").string(), "--breaklines",
+                            sample("breaklines.shp").string(), "--boundary",
+                            sample("boundary.shp").string(), "--holes",
+                            sample("building.shp").string(), "--crs", "EPSG:5514",
+                            "--skip-bad-lines", "--base", (dir / "natural.ply").string(), "-o",
+                            (dir / "out").string()});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("against the base: fill"), std::string::npos) << r.out;
+    for (const char* f : {"volume/volume.json", "volume/volume.txt", "volume/cut_fill.gpkg",
+                          "volume/difference.tif", "volume/zero_lines.dxf"}) {
+        EXPECT_TRUE(fs::exists(dir / "out" / f)) << f;
+    }
+    const std::string project = dtm::test::read_file(dir / "out" / "dtm.qgs");
+    EXPECT_NE(project.find("./volume/cut_fill.gpkg|layername=cut_fill"), std::string::npos);
+    EXPECT_NE(project.find("categorizedSymbol"), std::string::npos);
+    if (std::system("/usr/bin/python3 -c 'import qgis.core' >/dev/null 2>&1") != 0) {
+        GTEST_SKIP() << "PyQGIS not installed (apt-get install python3-qgis)";
+    }
+    const fs::path check = fs::path(DTM_TEST_DATA_DIR) / ".." / "support" / "qgis_open_check.py";
+    const std::string command = "QT_QPA_PLATFORM=offscreen /usr/bin/python3 '" + check.string() +
+                                "' '" + (dir / "out" / "dtm.qgs").string() + "' > '" +
+                                (dir / "qgis.log").string() + "' 2>&1";
+    EXPECT_EQ(std::system(command.c_str()), 0) << dtm::test::read_file(dir / "qgis.log");
+    EXPECT_NE(dtm::test::read_file(dir / "qgis.log").find("Cut and fill"), std::string::npos);
+}
+
+}  // namespace

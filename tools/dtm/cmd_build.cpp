@@ -2,6 +2,9 @@
 // dtm build INPUTS... -o OUTDIR: the main job. Reads every input, triangulates, and writes the
 // whole product set into OUTDIR:
 //   tin.ply  tin.2dm  surface.vtp  dem.tif  hillshade.tif  contours.gpkg  dtm.qgs  report.json
+// and with --base BASE the volume products of the TIN against BASE in volume/ (products::
+// write_volume_products: volume.json, volume.txt, difference TIN and GeoTIFF, cut_fill.gpkg,
+// zero_lines.dxf), shown as a cut/fill map in dtm.qgs.
 // Everything is written into a temporary sibling folder first (".OUTDIR.tmp-<pid>"); only when
 // every product is complete are the files moved into OUTDIR, so a failed or cancelled run leaves
 // no partial file and never replaces a good product from an earlier run.
@@ -37,6 +40,7 @@
 #include "dtm/io/grid_writer.hpp"
 #include "dtm/io/inputs.hpp"
 #include "dtm/io/tin_file.hpp"
+#include "dtm/products/volume.hpp"
 #include "input_args.hpp"
 #include "terminal_progress.hpp"
 #include "tin_args.hpp"
@@ -48,6 +52,7 @@ namespace fs = std::filesystem;
 
 struct BuildArgs {
     InputArgs input;
+    InputArgs base;  ///< --base BASE...: compare the TIN with this surface
     std::string out_dir;
     double cell = 0.0;
     double interval = 0.0;
@@ -169,7 +174,34 @@ struct BuildState {
     io::BuildReport report;
     std::vector<std::string> files;  ///< written into the staging folder, in order
     std::size_t survey_points = 0;   ///< survey points given to the triangulator
+    products::VolumeReport volume;   ///< with --base
 };
+
+/// With --base: the volume products of the TIN against the base, into volume/.
+void write_volume(const BuildArgs& args, BuildState& state, const Staging& staging,
+                  const Progress& progress) {
+    if (args.base.inputs.empty()) {
+        return;
+    }
+    products::VolumeJob job;
+    InputArgs base = args.base;
+    base.load = args.input.load;
+    job.base = {"base", to_load_options(base), args.tin};
+    job.threads = args.tin.threads;
+    const products::Surface surface =
+        products::load_surface(job.base, state.inputs.crs_wkt, progress.sub(0.0, 0.3));
+    state.volume.crs_wkt = state.inputs.crs_wkt;
+    state.volume.top = "the built TIN";
+    state.volume.base = surface.description();
+    if (!surface.transformed_from.empty()) {
+        state.volume.notes.push_back("the base was reprojected from " + surface.transformed_from);
+    }
+    std::error_code ec;
+    fs::create_directory(staging / "volume", ec);
+    products::write_volume_products(state.result.tin, &surface.tin, job, staging / "volume",
+                                    state.volume, progress.sub(0.3, 1.0));
+    state.files.emplace_back("volume");
+}
 
 void triangulate_inputs(const BuildArgs& args, BuildState& state, const Progress& progress) {
     if (state.inputs.tin) {
@@ -265,6 +297,9 @@ void write_project(const BuildState& state, const Staging& staging) {
         state.report.contour_interval *
         static_cast<double>(std::max<std::size_t>(state.report.index_every, 1));
     project.mesh = "tin.2dm";
+    if (!state.volume.files.empty()) {
+        project.cut_fill = "volume/cut_fill.gpkg";
+    }
     io::write_qgis_project(project, staging / "dtm.qgs");
 }
 
@@ -316,8 +351,12 @@ int run_build(const BuildArgs& args) {
     clock.lap("write_tin");
     state.report.dem = write_dem(args, state, staging, progress.sub(0.6, 0.8));
     clock.lap("dem");
-    write_contours(args, state, staging, progress.sub(0.8, 0.95));
+    write_contours(args, state, staging, progress.sub(0.8, 0.9));
     clock.lap("contours");
+    write_volume(args, state, staging, progress.sub(0.9, 0.95));
+    if (!args.base.inputs.empty()) {
+        clock.lap("volume");
+    }
     write_project(state, staging);
     state.files.emplace_back("dtm.qgs");
     clock.lap("project");
@@ -333,6 +372,11 @@ int run_build(const BuildArgs& args) {
     progress.report(1.0, "done");
     if (!args.quiet) {
         print_summary(state, args.out_dir);
+        if (!state.volume.files.empty()) {
+            const VolumeResult& v = state.volume.volume;
+            std::printf("dtm build: against the base: fill %.3f, cut %.3f, net %.3f (volume/)\n",
+                        v.fill, v.cut, v.net());
+        }
     }
     if (state.inputs.crs_wkt.empty()) {
         std::fprintf(stderr,
@@ -347,10 +391,11 @@ int run_build(const BuildArgs& args) {
 Command build_command() {
     return {"build",
             "The main job: TIN, DEM, hillshade, contours, VTK surface, 2DM mesh, QGIS project "
-            "and report into one folder",
+            "and report into one folder (with --base: volumes and a cut/fill map too)",
             [](CLI::App& app) {
                 auto args = std::make_shared<BuildArgs>();
                 add_input_options(app, args->input);
+                add_surface_options(app, "base", args->base);
                 app.add_option("-o,--output", args->out_dir, "Output folder (created if needed)")
                     ->required();
                 app.add_option("--cell", args->cell,

@@ -212,6 +212,12 @@ struct TreeEntry {
 /// The layers present in @p project, top of the drawing order first.
 std::vector<TreeEntry> tree_entries(const QgisProject& project) {
     std::vector<TreeEntry> entries;
+    if (!project.cut_fill.empty()) {
+        entries.push_back({qgis::zero_lines_id, "Zero lines",
+                           qgis::cut_fill_source(project, "zero_lines"), "ogr", true});
+        entries.push_back({qgis::cut_fill_id, "Cut and fill",
+                           qgis::cut_fill_source(project, "cut_fill"), "ogr", true});
+    }
     if (!project.contours.empty()) {
         entries.push_back(
             {qgis::contours_id, "Contours", qgis::contours_source(project), "ogr", true});
@@ -309,6 +315,10 @@ std::string qgis_project_xml(const QgisProject& project) {
     write_layer_tree(xml, entries);
     write_canvas(xml, project, crs);
     xml.open("projectlayers");
+    if (!project.cut_fill.empty()) {
+        qgis::write_zero_lines_layer(xml, project, crs);
+        qgis::write_cut_fill_layer(xml, project, crs);
+    }
     if (!project.contours.empty()) {
         qgis::write_contours_layer(xml, project, crs);
     }

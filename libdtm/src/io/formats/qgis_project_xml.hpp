@@ -56,6 +56,8 @@ inline constexpr std::string_view dem_id = "dtm_dem_layer";
 inline constexpr std::string_view hillshade_id = "dtm_hillshade_layer";
 inline constexpr std::string_view contours_id = "dtm_contours_layer";
 inline constexpr std::string_view mesh_id = "dtm_tin_mesh_layer";
+inline constexpr std::string_view cut_fill_id = "dtm_cut_fill_layer";
+inline constexpr std::string_view zero_lines_id = "dtm_zero_lines_layer";
 
 /// A layer path as QGIS reads it: a relative path gets a leading "./" (QgsPathResolver resolves
 /// only "./" and "../" paths against the project folder; a bare name would be taken relative to
@@ -80,5 +82,9 @@ void write_dem_layer(XmlWriter& xml, const QgisProject& project, const CrsInfo& 
 void write_hillshade_layer(XmlWriter& xml, const QgisProject& project, const CrsInfo& crs);
 void write_contours_layer(XmlWriter& xml, const QgisProject& project, const CrsInfo& crs);
 void write_mesh_layer(XmlWriter& xml, const QgisProject& project, const CrsInfo& crs);
+void write_cut_fill_layer(XmlWriter& xml, const QgisProject& project, const CrsInfo& crs);
+void write_zero_lines_layer(XmlWriter& xml, const QgisProject& project, const CrsInfo& crs);
+/// The `datasource` of a layer of the cut/fill GeoPackage.
+[[nodiscard]] std::string cut_fill_source(const QgisProject& project, std::string_view layer);
 
 }  // namespace dtm::io::qgis

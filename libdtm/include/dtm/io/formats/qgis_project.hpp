@@ -2,7 +2,8 @@
 /// @file
 /// @brief A QGIS project (.qgs, XML) that opens the products of `dtm build` ready to look at:
 /// the DEM in a terrain colour ramp multiplied over its hillshade, contours labelled by
-/// elevation with index contours emphasised, and the TIN as a mesh layer (2DM through MDAL).
+/// elevation with index contours emphasised, the TIN as a mesh layer (2DM through MDAL), and a
+/// cut/fill map when the build compared the surface with a base.
 #pragma once
 
 #include <filesystem>
@@ -31,6 +32,9 @@ struct QgisProject {
     std::string index_field;
     double index_interval = 5.0;
     std::filesystem::path mesh;  ///< 2DM TIN (mdal provider)
+    /// GeoPackage of a volume comparison (`dtm build --base`): layer cut_fill (polygons with a
+    /// `kind` of "cut" or "fill", drawn red and blue) and layer zero_lines. Empty: no layers.
+    std::filesystem::path cut_fill;
     bool mesh_visible = false;   ///< the wireframe starts hidden: it hides the DEM at small scales
 };
 
