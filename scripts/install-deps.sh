@@ -9,6 +9,8 @@ packages=(
     libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev libcgal-dev
     clang libclang-rt-14-dev python3
     libcairo2-dev fonts-dejavu-core poppler-utils
+    # test-only oracles: DXF reader, numpy statistics, QGIS processing (headless)
+    python3-ezdxf python3-numpy python3-qgis qgis-providers
 )
 
 missing=()

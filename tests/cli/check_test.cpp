@@ -6,28 +6,21 @@
 #include <cstdlib>
 #include <string>
 
+#include "support/analysis_fixtures.hpp"
 #include "support/test_support.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-fs::path sample(const char* name) {
-    return fs::path(DTM_TEST_DATA_DIR) / ".." / ".." / "samples" / "sjtsk" / name;
-}
-
 TEST(CliCheck, StatisticsEqualAnIndependentNumpyComputationAndOutsidePointsAreListed) {
     const dtm::test::ScratchDir dir;
     for (const char* out : {"tin.ply", "tin.2dm"}) {
-        const auto r = dtm::test::run_dtm(
-            {"tin", sample("points.csv").string(), "--breaklines", sample("breaklines.shp").string(),
-             "--boundary", sample("boundary.shp").string(), "--holes",
-             sample("building.shp").string(), "--crs", "EPSG:5514", "--skip-bad-lines", "-o",
-             (dir / out).string(), "-q"});
+        const auto r = dtm::test::build_sample_tin(dir / out, false);
         ASSERT_EQ(r.exit_code, 0) << r.err;
     }
     // The sample's check points, one west of the boundary and one in the building (a hole).
-    std::string points = dtm::test::read_file(sample("checkpoints.csv"));
+    std::string points = dtm::test::read_file(dtm::test::sample_file("checkpoints.csv"));
     points += "OUT1,-750320.000,-1050100.000,300.0\nHOLE1,-750230.000,-1050065.000,330.0\n";
     dtm::test::write_file(dir / "points.csv", points);
     const auto r = dtm::test::run_dtm({"check", (dir / "tin.ply").string(),
@@ -53,8 +46,8 @@ TEST(CliCheck, StatisticsEqualAnIndependentNumpyComputationAndOutsidePointsAreLi
 
 TEST(CliCheck, UnknownInterpolationIsABadUsage) {
     const dtm::test::ScratchDir dir;
-    const auto r = dtm::test::run_dtm({"check", sample("points.csv").string(),
-                                       sample("checkpoints.csv").string(), "-o",
+    const auto r = dtm::test::run_dtm({"check", dtm::test::sample_file("points.csv").string(),
+                                       dtm::test::sample_file("checkpoints.csv").string(), "-o",
                                        (dir / "r.csv").string(), "--interpolation", "spline",
                                        "--crs", "EPSG:5514", "--skip-bad-lines", "-q"});
     EXPECT_EQ(r.exit_code, 2);

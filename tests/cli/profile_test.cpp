@@ -8,15 +8,12 @@
 #include <cstdlib>
 #include <string>
 
+#include "support/analysis_fixtures.hpp"
 #include "support/test_support.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
-
-fs::path sample(const char* name) {
-    return fs::path(DTM_TEST_DATA_DIR) / ".." / ".." / "samples" / "sjtsk" / name;
-}
 
 const char* lines_geojson =
     "{\"type\":\"FeatureCollection\",\"crs\":{\"type\":\"name\",\"properties\":{\"name\":"
@@ -34,11 +31,7 @@ protected:
     void SetUp() override {
         dtm::test::write_file(dir / "lines.geojson", lines_geojson);
         for (const char* out : {"tin.ply", "tin.2dm"}) {
-            const auto r = dtm::test::run_dtm(
-                {"tin", sample("points.csv").string(), "--breaklines",
-                 sample("breaklines.shp").string(), "--boundary", sample("boundary.shp").string(),
-                 "--holes", sample("building.shp").string(), "--crs", "EPSG:5514",
-                 "--skip-bad-lines", "-o", (dir / out).string(), "-q"});
+            const auto r = dtm::test::build_sample_tin(dir / out, false);
             ASSERT_EQ(r.exit_code, 0) << r.err;
         }
     }

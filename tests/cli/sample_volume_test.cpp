@@ -11,21 +11,12 @@
 #include <string>
 
 #include "dtm/io/tin_file.hpp"
+#include "support/analysis_fixtures.hpp"
 #include "support/test_support.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
-
-fs::path sample(const char* name) {
-    return fs::path(DTM_TEST_DATA_DIR) / ".." / ".." / "samples" / "sjtsk" / name;
-}
-
-double json_value(const std::string& json, const std::string& section, const std::string& key) {
-    const std::size_t s = json.find("\"" + section + "\": {");
-    const std::size_t k = json.find("\"" + key + "\": ", s);
-    return std::strtod(json.c_str() + k + key.size() + 4, nullptr);
-}
 
 /// Integral of max(d, 0) over a triangle of plan area a with corner values d: the part where
 /// d > 0 is a triangle (one positive corner p: a d_p^3 / (3 (d_p - d_q)(d_p - d_r))) or the
@@ -52,17 +43,9 @@ double positive_integral(double a, double d0, double d1, double d2) {
 
 TEST(CliSampleVolume, RoadCutAndEmbankmentMatchTheClosedFormTriangleByTriangle) {
     const dtm::test::ScratchDir dir;
-    auto r = dtm::test::run_dtm({"tin", sample("points.csv").string(), "--breaklines",
-                                 sample("breaklines.shp").string(), "--boundary",
-                                 sample("boundary.shp").string(), "--holes",
-                                 sample("building.shp").string(), "--crs", "EPSG:5514",
-                                 "--skip-bad-lines", "-o", (dir / "built.ply").string(), "-q"});
+    auto r = dtm::test::build_sample_tin(dir / "built.ply", false);
     ASSERT_EQ(r.exit_code, 0) << r.err;
-    r = dtm::test::run_dtm({"tin", sample("natural_points.csv").string(), "--breaklines",
-                            sample("natural_breaklines.shp").string(), "--boundary",
-                            sample("natural_boundary.shp").string(), "--holes",
-                            sample("natural_building.shp").string(), "--crs", "EPSG:5514", "-o",
-                            (dir / "natural.ply").string(), "-q"});
+    r = dtm::test::build_sample_tin(dir / "natural.ply", true);
     ASSERT_EQ(r.exit_code, 0) << r.err;
     r = dtm::test::run_dtm({"volume", (dir / "built.ply").string(), "--base",
                             (dir / "natural.ply").string(), "-o", (dir / "out").string(), "-q",
@@ -92,10 +75,10 @@ TEST(CliSampleVolume, RoadCutAndEmbankmentMatchTheClosedFormTriangleByTriangle) 
     }
     EXPECT_GT(fill, 100.0);  // the embankment
     EXPECT_GT(cut, 100.0);   // the side-hill cut and the ditch
-    EXPECT_NEAR(json_value(json, "volume", "fill"), fill, 1e-9 * fill);
-    EXPECT_NEAR(json_value(json, "volume", "cut"), cut, 1e-9 * cut);
-    const double compared = json_value(json, "area", "overlap");
-    EXPECT_NEAR(compared - json_value(json, "area", "unchanged"), changed, 1e-6 * changed);
+    EXPECT_NEAR(dtm::test::json_number(json, "volume", "fill"), fill, 1e-9 * fill);
+    EXPECT_NEAR(dtm::test::json_number(json, "volume", "cut"), cut, 1e-9 * cut);
+    const double compared = dtm::test::json_number(json, "area", "overlap");
+    EXPECT_NEAR(compared - dtm::test::json_number(json, "area", "unchanged"), changed, 1e-6 * changed);
 }
 
 }  // namespace

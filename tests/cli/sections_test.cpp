@@ -8,21 +8,12 @@
 #include <cstdio>
 #include <string>
 
+#include "support/analysis_fixtures.hpp"
 #include "support/test_support.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
-
-fs::path sample(const char* name) {
-    return fs::path(DTM_TEST_DATA_DIR) / ".." / ".." / "samples" / "sjtsk" / name;
-}
-
-double json_value(const std::string& json, const std::string& section, const std::string& key) {
-    const std::size_t s = json.find("\"" + section + "\": {");
-    const std::size_t k = json.find("\"" + key + "\": ", s);
-    return std::strtod(json.c_str() + k + key.size() + 4, nullptr);
-}
 
 std::string feature_collection(const std::string& geometry) {
     return "{\"type\":\"FeatureCollection\",\"crs\":{\"type\":\"name\",\"properties\":{\"name\":"
@@ -32,17 +23,9 @@ std::string feature_collection(const std::string& geometry) {
 
 TEST(CliSections, ExactSlabVolumesEqualTheVolumeWithinTheCorridor) {
     const dtm::test::ScratchDir dir;
-    auto r = dtm::test::run_dtm({"tin", sample("points.csv").string(), "--breaklines",
-                                 sample("breaklines.shp").string(), "--boundary",
-                                 sample("boundary.shp").string(), "--holes",
-                                 sample("building.shp").string(), "--crs", "EPSG:5514",
-                                 "--skip-bad-lines", "-o", (dir / "built.ply").string(), "-q"});
+    auto r = dtm::test::build_sample_tin(dir / "built.ply", false);
     ASSERT_EQ(r.exit_code, 0) << r.err;
-    r = dtm::test::run_dtm({"tin", sample("natural_points.csv").string(), "--breaklines",
-                            sample("natural_breaklines.shp").string(), "--boundary",
-                            sample("natural_boundary.shp").string(), "--holes",
-                            sample("natural_building.shp").string(), "--crs", "EPSG:5514", "-o",
-                            (dir / "natural.ply").string(), "-q"});
+    r = dtm::test::build_sample_tin(dir / "natural.ply", true);
     ASSERT_EQ(r.exit_code, 0) << r.err;
     // Along the road's centre line (tools/dtm-sample: from local (-10, 55) to (250, 82)), from
     // station 30 to 230, sections every 10 m, 30 m wide.
@@ -88,14 +71,14 @@ TEST(CliSections, ExactSlabVolumesEqualTheVolumeWithinTheCorridor) {
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const std::string sections = dtm::test::read_file(dir / "sec" / "sections.json");
     const std::string volume = dtm::test::read_file(dir / "vol" / "volume.json");
-    const double fill = json_value(volume, "volume", "fill");
-    const double cut = json_value(volume, "volume", "cut");
+    const double fill = dtm::test::json_number(volume, "volume", "fill");
+    const double cut = dtm::test::json_number(volume, "volume", "cut");
     EXPECT_GT(fill, 100.0);
-    EXPECT_NEAR(json_value(sections, "exact", "fill"), fill, 1e-6 * fill);
-    EXPECT_NEAR(json_value(sections, "exact", "cut"), cut, 1e-6 * cut);
+    EXPECT_NEAR(dtm::test::json_number(sections, "exact", "fill"), fill, 1e-6 * fill);
+    EXPECT_NEAR(dtm::test::json_number(sections, "exact", "cut"), cut, 1e-6 * cut);
     // End areas on a nearly prismatic road: within 1 %.
-    EXPECT_NEAR(json_value(sections, "end_area", "fill"), fill, 0.01 * fill);
-    EXPECT_NEAR(json_value(sections, "end_area", "cut"), cut, 0.01 * cut);
+    EXPECT_NEAR(dtm::test::json_number(sections, "end_area", "fill"), fill, 0.01 * fill);
+    EXPECT_NEAR(dtm::test::json_number(sections, "end_area", "cut"), cut, 0.01 * cut);
 }
 
 TEST(CliSections, AnAlignmentOutsideTheSurfacesIsAnError) {
@@ -103,7 +86,7 @@ TEST(CliSections, AnAlignmentOutsideTheSurfacesIsAnError) {
     dtm::test::write_file(dir / "far.geojson",
                           feature_collection("{\"type\":\"LineString\",\"coordinates\":"
                                              "[[-740000,-1040000],[-739000,-1040000]]}"));
-    const auto r = dtm::test::run_dtm({"sections", sample("natural_points.csv").string(),
+    const auto r = dtm::test::run_dtm({"sections", dtm::test::sample_file("natural_points.csv").string(),
                                        "--alignment", (dir / "far.geojson").string(), "--interval",
                                        "10", "--width", "20", "--crs", "EPSG:5514", "-o",
                                        (dir / "sec").string(), "-q"});

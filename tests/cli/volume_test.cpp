@@ -12,6 +12,7 @@
 
 #include "dtm/io/tin_file.hpp"
 #include "support/solid_fixtures.hpp"
+#include "support/analysis_fixtures.hpp"
 #include "support/test_support.hpp"
 
 namespace {
@@ -39,17 +40,6 @@ fs::path write_tin(const dtm::test::ScratchDir& dir, const std::string& name, co
     return path;
 }
 
-/// The number after "key": inside the object "section": { ... } of a volume.json.
-double json_value(const std::string& json, const std::string& section, const std::string& key) {
-    const std::size_t s = json.find("\"" + section + "\": {");
-    const std::size_t k = json.find("\"" + key + "\": ", s);
-    if (s == std::string::npos || k == std::string::npos) {
-        ADD_FAILURE() << "no " << section << "." << key << " in " << json;
-        return NAN;
-    }
-    return std::strtod(json.c_str() + k + key.size() + 4, nullptr);
-}
-
 void expect_rel(double actual, double expected) {
     EXPECT_NEAR(actual, expected, 1e-9 * std::fabs(expected)) << "expected " << expected;
 }
@@ -63,9 +53,9 @@ TEST(CliVolume, PyramidAgainstALevelAndAgainstAnotherTinIsExact) {
                                  (dir / "out").string(), "-q"});
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const std::string json = dtm::test::read_file(dir / "out" / "volume.json");
-    expect_rel(json_value(json, "volume", "fill"), expected);
-    EXPECT_EQ(json_value(json, "volume", "cut"), 0.0);
-    expect_rel(json_value(json, "area", "overlap"), site.side * site.side);
+    expect_rel(dtm::test::json_number(json, "volume", "fill"), expected);
+    EXPECT_EQ(dtm::test::json_number(json, "volume", "cut"), 0.0);
+    expect_rel(dtm::test::json_number(json, "area", "overlap"), site.side * site.side);
     for (const char* f : {"volume.txt", "difference.ply", "difference.tif", "cut_fill.gpkg",
                           "zero_lines.dxf"}) {
         EXPECT_TRUE(fs::exists(dir / "out" / f)) << f;
@@ -74,7 +64,7 @@ TEST(CliVolume, PyramidAgainstALevelAndAgainstAnotherTinIsExact) {
     r = dtm::test::run_dtm({"volume", pyramid.string(), "--plane", "0", "-o", (dir / "plane").string(),
                             "-q", "--no-products"});
     ASSERT_EQ(r.exit_code, 0) << r.err;
-    expect_rel(json_value(dtm::test::read_file(dir / "plane" / "volume.json"), "volume", "fill"), expected);
+    expect_rel(dtm::test::json_number(dtm::test::read_file(dir / "plane" / "volume.json"), "volume", "fill"), expected);
     EXPECT_FALSE(fs::exists(dir / "plane" / "difference.tif"));
 }
 
@@ -142,7 +132,7 @@ TEST(CliVolume, StockpileOnTiltedGroundIsThePyramid) {
                                        "--stockpile", "-o", (dir / "out").string(), "-q"});
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const std::string json = dtm::test::read_file(dir / "out" / "volume.json");
-    expect_rel(json_value(json, "volume", "fill"), 1600.0 * height / 3.0);
+    expect_rel(dtm::test::json_number(json, "volume", "fill"), 1600.0 * height / 3.0);
 }
 
 TEST(CliVolume, WithinAPolygonAndABaseInAnotherCrs) {
@@ -179,8 +169,8 @@ TEST(CliVolume, WithinAPolygonAndABaseInAnotherCrs) {
     EXPECT_NE(r.err.find("reprojected"), std::string::npos) << r.err;
     const std::string json = dtm::test::read_file(dir / "out" / "volume.json");
     // Inside [10, 30]^2 the pyramid rises from 4 on the square's edge to 8: a pyramid of 400 x 4 / 3.
-    EXPECT_NEAR(json_value(json, "volume", "fill"), 400.0 * 4.0 / 3.0, 1e-6);
-    EXPECT_NEAR(json_value(json, "area", "overlap"), 400.0, 1e-6);
+    EXPECT_NEAR(dtm::test::json_number(json, "volume", "fill"), 400.0 * 4.0 / 3.0, 1e-6);
+    EXPECT_NEAR(dtm::test::json_number(json, "area", "overlap"), 400.0, 1e-6);
 }
 
 TEST(CliVolume, BadInputIsAnErrorNamingTheFile) {
@@ -210,22 +200,14 @@ TEST(CliVolume, BadInputIsAnErrorNamingTheFile) {
 
 namespace {
 
-fs::path sample(const char* name) {
-    return fs::path(DTM_TEST_DATA_DIR) / ".." / ".." / "samples" / "sjtsk" / name;
-}
-
 TEST(CliBuildBase, AddsTheVolumeProductsAndACutFillMapToTheProject) {
     const dtm::test::ScratchDir dir;
-    auto r = dtm::test::run_dtm({"tin", sample("natural_points.csv").string(), "--breaklines",
-                                 sample("natural_breaklines.shp").string(), "--boundary",
-                                 sample("natural_boundary.shp").string(), "--holes",
-                                 sample("natural_building.shp").string(), "--crs", "EPSG:5514",
-                                 "-o", (dir / "natural.ply").string(), "-q"});
+    auto r = dtm::test::build_sample_tin(dir / "natural.ply", true);
     ASSERT_EQ(r.exit_code, 0) << r.err;
-    r = dtm::test::run_dtm({"build", sample("points.csv").string(), "--breaklines",
-                            sample("breaklines.shp").string(), "--boundary",
-                            sample("boundary.shp").string(), "--holes",
-                            sample("building.shp").string(), "--crs", "EPSG:5514",
+    r = dtm::test::run_dtm({"build", dtm::test::sample_file("points.csv").string(), "--breaklines",
+                            dtm::test::sample_file("breaklines.shp").string(), "--boundary",
+                            dtm::test::sample_file("boundary.shp").string(), "--holes",
+                            dtm::test::sample_file("building.shp").string(), "--crs", "EPSG:5514",
                             "--skip-bad-lines", "--base", (dir / "natural.ply").string(), "-o",
                             (dir / "out").string()});
     ASSERT_EQ(r.exit_code, 0) << r.err;

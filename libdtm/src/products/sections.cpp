@@ -21,14 +21,6 @@ namespace dtm::products {
 namespace fs = std::filesystem;
 namespace {
 
-void write_text(const fs::path& path, const std::string& text) {
-    std::ofstream out(path, std::ios::binary);
-    out << text;
-    if (!out) {
-        throw Error("cannot write " + path.string());
-    }
-}
-
 std::string summary_csv(const SectionsReport& r) {
     std::string out =
         "station,x,y,fill_area,cut_area,width,end_area_fill,end_area_cut,exact_fill,exact_cut\n";
@@ -212,7 +204,7 @@ SectionsReport run_sections(const SectionsJob& job, const fs::path& out_dir,
             r.exact_cut += r.exact[k].cut;
         }
     }
-    write_text(staging.path() / "sections.csv", summary_csv(r));
+    detail::write_text_file(staging.path() / "sections.csv", summary_csv(r));
     std::string points = "station,surface,run,offset,x,y,z\n";
     char row[256];
     io::VectorFile gpkg(staging.path() / "sections.gpkg", surfaces.front().crs_wkt);
@@ -238,8 +230,8 @@ SectionsReport run_sections(const SectionsJob& job, const fs::path& out_dir,
         }
     }
     gpkg.commit();
-    write_text(staging.path() / "section_points.csv", points);
-    write_text(staging.path() / "sections.json", summary_json(r, job));
+    detail::write_text_file(staging.path() / "section_points.csv", points);
+    detail::write_text_file(staging.path() / "sections.json", summary_json(r, job));
     r.files = {"sections.csv", "section_points.csv", "sections.gpkg", "sections.json"};
     progress.report(0.9, "drawing the sections");
     if (!job.plot_format.empty()) {

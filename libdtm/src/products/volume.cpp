@@ -30,14 +30,6 @@ namespace dtm::products {
 namespace fs = std::filesystem;
 namespace {
 
-void write_text(const fs::path& path, const std::string& text) {
-    std::ofstream out(path, std::ios::binary);
-    out << text;
-    if (!out) {
-        throw Error("cannot write " + path.string());
-    }
-}
-
 /// Largest of 1, 2, 2.5, 5 x 10^k not above @p value.
 double nice_floor(double value) {
     const double power = std::pow(10.0, std::floor(std::log10(value)));
@@ -137,8 +129,8 @@ void write_volume_products(const Tin& top, const Tin* base, const VolumeJob& job
         progress.report(0.8, "tracing cut and fill");
         write_map(cut_fill_map(diff, progress.sub(0.8, 0.95)), report.crs_wkt, folder, report);
     }
-    write_text(folder / "volume.json", volume_json(report));
-    write_text(folder / "volume.txt", volume_protocol(report));
+    detail::write_text_file(folder / "volume.json", volume_json(report));
+    detail::write_text_file(folder / "volume.txt", volume_protocol(report));
     report.files.insert(report.files.end(), {"volume.json", "volume.txt"});
     progress.report(1.0, "volume products written");
 }

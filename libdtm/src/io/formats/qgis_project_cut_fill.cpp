@@ -21,14 +21,7 @@ void write_fill_symbol(XmlWriter& xml, std::string_view name, const std::string&
         {"color", color},           {"joinstyle", "bevel"},      {"offset", "0,0"},
         {"offset_unit", "MM"},      {"outline_color", outline},  {"outline_style", "solid"},
         {"outline_width", "0.2"},   {"outline_width_unit", "MM"}, {"style", "solid"}};
-    xml.open("Option", {{"type", "Map"}});
-    for (const auto& [key, value] : props) {
-        xml.option(key, value);
-    }
-    xml.close("Option");
-    for (const auto& [key, value] : props) {
-        xml.leaf("prop", {{"k", std::string(key)}, {"v", value}});
-    }
+    write_symbol_properties(xml, props);
     xml.close("layer");
     xml.close("symbol");
 }
@@ -43,14 +36,7 @@ void write_zero_symbol(XmlWriter& xml) {
     const std::pair<std::string_view, std::string> props[] = {
         {"line_color", "0,0,0,255"}, {"line_style", "solid"}, {"line_width", "0.35"},
         {"line_width_unit", "MM"},   {"capstyle", "round"},   {"joinstyle", "round"}};
-    xml.open("Option", {{"type", "Map"}});
-    for (const auto& [key, value] : props) {
-        xml.option(key, value);
-    }
-    xml.close("Option");
-    for (const auto& [key, value] : props) {
-        xml.leaf("prop", {{"k", std::string(key)}, {"v", value}});
-    }
+    write_symbol_properties(xml, props);
     xml.close("layer");
     xml.close("symbol");
 }

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <initializer_list>
+#include <span>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -77,6 +78,11 @@ void write_layer_head(XmlWriter& xml,
                       const std::string& source,
                       std::string_view name,
                       std::string_view provider);
+
+/// A symbol layer's properties, written both as the Option map (QGIS >= 3.26) and as the prop
+/// list older 3.x read; they say the same.
+void write_symbol_properties(XmlWriter& xml,
+                             std::span<const std::pair<std::string_view, std::string>> props);
 
 void write_dem_layer(XmlWriter& xml, const QgisProject& project, const CrsInfo& crs);
 void write_hillshade_layer(XmlWriter& xml, const QgisProject& project, const CrsInfo& crs);

@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <system_error>
 #include <utility>
@@ -65,5 +66,14 @@ private:
     std::filesystem::path out_;
     std::filesystem::path temp_;
 };
+
+/// Writes @p text to @p path (inside a staged folder: no atomicity of its own).
+inline void write_text_file(const std::filesystem::path& path, const std::string& text) {
+    std::ofstream out(path, std::ios::binary);
+    out << text;
+    if (!out) {
+        throw Error("cannot write " + path.string());
+    }
+}
 
 }  // namespace dtm::products::detail
