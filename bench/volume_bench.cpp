@@ -24,14 +24,16 @@ dtm::Tin random_tin(unsigned seed) {
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> u(0.0, 2000.0);
     dtm::TerrainInput in;
-    for (const auto& [x, y] : {std::pair{0.0, 0.0}, {2000.0, 0.0}, {2000.0, 2000.0}, {0.0, 2000.0}}) {
+    for (const auto& [x, y] :
+         {std::pair{0.0, 0.0}, {2000.0, 0.0}, {2000.0, 2000.0}, {0.0, 2000.0}}) {
         in.points.push_back({-750'000.0 + x, -1'050'000.0 + y, 300.0});
     }
     for (int i = 0; i < 500'000; ++i) {
         const double x = u(rng);
         const double y = u(rng);
-        in.points.push_back({-750'000.0 + x, -1'050'000.0 + y,
-                             300.0 + 0.01 * x + (seed == 1 ? 1.0 : -1.0) * 0.5 * std::sin(y / 50.0)});
+        in.points.push_back(
+            {-750'000.0 + x, -1'050'000.0 + y,
+             300.0 + 0.01 * x + (seed == 1 ? 1.0 : -1.0) * 0.5 * std::sin(y / 50.0)});
     }
     return dtm::triangulate(in).tin;
 }

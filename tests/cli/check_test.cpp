@@ -23,10 +23,10 @@ TEST(CliCheck, StatisticsEqualAnIndependentNumpyComputationAndOutsidePointsAreLi
     std::string points = dtm::test::read_file(dtm::test::sample_file("checkpoints.csv"));
     points += "OUT1,-750320.000,-1050100.000,300.0\nHOLE1,-750230.000,-1050065.000,330.0\n";
     dtm::test::write_file(dir / "points.csv", points);
-    const auto r = dtm::test::run_dtm({"check", (dir / "tin.ply").string(),
-                                       (dir / "points.csv").string(), "-o",
-                                       (dir / "residuals.csv").string(), "--stats",
-                                       (dir / "stats.json").string(), "--crs", "EPSG:5514", "-q"});
+    const auto r =
+        dtm::test::run_dtm({"check", (dir / "tin.ply").string(), (dir / "points.csv").string(),
+                            "-o", (dir / "residuals.csv").string(), "--stats",
+                            (dir / "stats.json").string(), "--crs", "EPSG:5514", "-q"});
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NE(r.out.find("2 outside"), std::string::npos) << r.out;
     const std::string csv = dtm::test::read_file(dir / "residuals.csv");
@@ -35,12 +35,12 @@ TEST(CliCheck, StatisticsEqualAnIndependentNumpyComputationAndOutsidePointsAreLi
     if (std::system("/usr/bin/python3 -c 'import numpy' >/dev/null 2>&1") != 0) {
         GTEST_SKIP() << "numpy not installed (apt-get install python3-numpy)";
     }
-    const fs::path oracle = fs::path(DTM_TEST_DATA_DIR) / ".." / "support" / "check_stats_oracle.py";
-    const std::string command = "/usr/bin/python3 '" + oracle.string() + "' '" +
-                                (dir / "tin.2dm").string() + "' '" + (dir / "points.csv").string() +
-                                "' '" + (dir / "residuals.csv").string() + "' '" +
-                                (dir / "stats.json").string() + "' > '" +
-                                (dir / "oracle.log").string() + "' 2>&1";
+    const fs::path oracle =
+        fs::path(DTM_TEST_DATA_DIR) / ".." / "support" / "check_stats_oracle.py";
+    const std::string command =
+        "/usr/bin/python3 '" + oracle.string() + "' '" + (dir / "tin.2dm").string() + "' '" +
+        (dir / "points.csv").string() + "' '" + (dir / "residuals.csv").string() + "' '" +
+        (dir / "stats.json").string() + "' > '" + (dir / "oracle.log").string() + "' 2>&1";
     EXPECT_EQ(std::system(command.c_str()), 0) << dtm::test::read_file(dir / "oracle.log");
 }
 

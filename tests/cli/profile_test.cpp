@@ -39,9 +39,9 @@ protected:
 };
 
 TEST_F(CliProfile, WritesCsvGeoPackageDxfAndPlotWithGapsOutsideTheSurface) {
-    const auto r = dtm::test::run_dtm({"profile", (dir / "tin.ply").string(), "--line",
-                                       (dir / "lines.geojson").string(), "-o",
-                                       (dir / "out").string(), "-q"});
+    const auto r =
+        dtm::test::run_dtm({"profile", (dir / "tin.ply").string(), "--line",
+                            (dir / "lines.geojson").string(), "-o", (dir / "out").string(), "-q"});
     ASSERT_EQ(r.exit_code, 0) << r.err;
     for (const char* f : {"profile.csv", "profile.gpkg", "profile.dxf", "profile.pdf"}) {
         EXPECT_TRUE(fs::exists(dir / "out" / f)) << f;
@@ -62,14 +62,15 @@ TEST_F(CliProfile, WritesCsvGeoPackageDxfAndPlotWithGapsOutsideTheSurface) {
 }
 
 TEST_F(CliProfile, ALineOutsideEverySurfaceIsAnErrorNamingTheFeature) {
-    dtm::test::write_file(dir / "far.geojson",
-                          "{\"type\":\"FeatureCollection\",\"crs\":{\"type\":\"name\",\"properties\":"
-                          "{\"name\":\"EPSG:5514\"}},\"features\":[{\"type\":\"Feature\","
-                          "\"properties\":{},\"geometry\":{\"type\":\"LineString\",\"coordinates\":"
-                          "[[-740000,-1040000],[-739000,-1040000]]}}]}");
-    const auto r = dtm::test::run_dtm({"profile", (dir / "tin.ply").string(), "--line",
-                                       (dir / "far.geojson").string(), "-o",
-                                       (dir / "out").string(), "-q"});
+    dtm::test::write_file(
+        dir / "far.geojson",
+        "{\"type\":\"FeatureCollection\",\"crs\":{\"type\":\"name\",\"properties\":"
+        "{\"name\":\"EPSG:5514\"}},\"features\":[{\"type\":\"Feature\","
+        "\"properties\":{},\"geometry\":{\"type\":\"LineString\",\"coordinates\":"
+        "[[-740000,-1040000],[-739000,-1040000]]}}]}");
+    const auto r =
+        dtm::test::run_dtm({"profile", (dir / "tin.ply").string(), "--line",
+                            (dir / "far.geojson").string(), "-o", (dir / "out").string(), "-q"});
     EXPECT_EQ(r.exit_code, 2);
     EXPECT_NE(r.err.find("far.geojson"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("outside every surface"), std::string::npos) << r.err;
@@ -84,14 +85,12 @@ TEST_F(CliProfile, EqualsQgisMeshCrossSectionAtItsSamplePoints) {
                                        (dir / "lines.geojson").string(), "-o",
                                        (dir / "out").string(), "-q", "--plot", "none"});
     ASSERT_EQ(r.exit_code, 0) << r.err;
-    const fs::path check =
-        fs::path(DTM_TEST_DATA_DIR) / ".." / "support" / "qgis_profile_check.py";
-    const std::string command = "QT_QPA_PLATFORM=offscreen /usr/bin/python3 '" + check.string() +
-                                "' '" + (dir / "tin.2dm").string() + "' '" +
-                                (dir / "lines.geojson").string() + "' '" +
-                                (dir / "out" / "profile.csv").string() + "' tin 0.5 '" +
-                                (dir / "qgis.csv").string() + "' > '" +
-                                (dir / "qgis.log").string() + "' 2>&1";
+    const fs::path check = fs::path(DTM_TEST_DATA_DIR) / ".." / "support" / "qgis_profile_check.py";
+    const std::string command =
+        "QT_QPA_PLATFORM=offscreen /usr/bin/python3 '" + check.string() + "' '" +
+        (dir / "tin.2dm").string() + "' '" + (dir / "lines.geojson").string() + "' '" +
+        (dir / "out" / "profile.csv").string() + "' tin 0.5 '" + (dir / "qgis.csv").string() +
+        "' > '" + (dir / "qgis.log").string() + "' 2>&1";
     EXPECT_EQ(std::system(command.c_str()), 0) << dtm::test::read_file(dir / "qgis.log");
     std::printf("%s", dtm::test::read_file(dir / "qgis.log").c_str());
 }

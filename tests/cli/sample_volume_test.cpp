@@ -78,7 +78,8 @@ TEST(CliSampleVolume, RoadCutAndEmbankmentMatchTheClosedFormTriangleByTriangle) 
     EXPECT_NEAR(dtm::test::json_number(json, "volume", "fill"), fill, 1e-9 * fill);
     EXPECT_NEAR(dtm::test::json_number(json, "volume", "cut"), cut, 1e-9 * cut);
     const double compared = dtm::test::json_number(json, "area", "overlap");
-    EXPECT_NEAR(compared - dtm::test::json_number(json, "area", "unchanged"), changed, 1e-6 * changed);
+    EXPECT_NEAR(compared - dtm::test::json_number(json, "area", "unchanged"), changed,
+                1e-6 * changed);
 }
 
 }  // namespace

@@ -43,8 +43,8 @@ TEST(CliSections, ExactSlabVolumesEqualTheVolumeWithinTheCorridor) {
     const auto [ax, ay] = at(30.0, 0.0);
     const auto [bx, by] = at(230.0, 0.0);
     std::snprintf(text, sizeof text,
-                  "{\"type\":\"LineString\",\"coordinates\":[[%.6f,%.6f],[%.6f,%.6f]]}", ax, ay,
-                  bx, by);
+                  "{\"type\":\"LineString\",\"coordinates\":[[%.6f,%.6f],[%.6f,%.6f]]}", ax, ay, bx,
+                  by);
     dtm::test::write_file(dir / "alignment.geojson", feature_collection(text));
     const auto [p0x, p0y] = at(30.0, 15.0);
     const auto [p1x, p1y] = at(230.0, 15.0);
@@ -56,18 +56,19 @@ TEST(CliSections, ExactSlabVolumesEqualTheVolumeWithinTheCorridor) {
                   p0x, p0y, p3x, p3y, p2x, p2y, p1x, p1y, p0x, p0y);
     dtm::test::write_file(dir / "corridor.geojson", feature_collection(text));
 
-    r = dtm::test::run_dtm({"sections", (dir / "built.ply").string(), (dir / "natural.ply").string(),
-                            "--alignment", (dir / "alignment.geojson").string(), "--interval",
-                            "10", "--width", "30", "-o", (dir / "sec").string(), "-q"});
+    r = dtm::test::run_dtm({"sections", (dir / "built.ply").string(),
+                            (dir / "natural.ply").string(), "--alignment",
+                            (dir / "alignment.geojson").string(), "--interval", "10", "--width",
+                            "30", "-o", (dir / "sec").string(), "-q"});
     ASSERT_EQ(r.exit_code, 0) << r.err;
-    for (const char* f : {"sections.csv", "section_points.csv", "sections.gpkg", "sections.json",
-                          "sections.pdf"}) {
+    for (const char* f :
+         {"sections.csv", "section_points.csv", "sections.gpkg", "sections.json", "sections.pdf"}) {
         EXPECT_TRUE(fs::exists(dir / "sec" / f)) << f;
     }
     r = dtm::test::run_dtm({"volume", (dir / "built.ply").string(), "--base",
                             (dir / "natural.ply").string(), "--within",
-                            (dir / "corridor.geojson").string(), "-o", (dir / "vol").string(),
-                            "-q", "--no-products"});
+                            (dir / "corridor.geojson").string(), "-o", (dir / "vol").string(), "-q",
+                            "--no-products"});
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const std::string sections = dtm::test::read_file(dir / "sec" / "sections.json");
     const std::string volume = dtm::test::read_file(dir / "vol" / "volume.json");
@@ -86,10 +87,10 @@ TEST(CliSections, AnAlignmentOutsideTheSurfacesIsAnError) {
     dtm::test::write_file(dir / "far.geojson",
                           feature_collection("{\"type\":\"LineString\",\"coordinates\":"
                                              "[[-740000,-1040000],[-739000,-1040000]]}"));
-    const auto r = dtm::test::run_dtm({"sections", dtm::test::sample_file("natural_points.csv").string(),
-                                       "--alignment", (dir / "far.geojson").string(), "--interval",
-                                       "10", "--width", "20", "--crs", "EPSG:5514", "-o",
-                                       (dir / "sec").string(), "-q"});
+    const auto r = dtm::test::run_dtm(
+        {"sections", dtm::test::sample_file("natural_points.csv").string(), "--alignment",
+         (dir / "far.geojson").string(), "--interval", "10", "--width", "20", "--crs", "EPSG:5514",
+         "-o", (dir / "sec").string(), "-q"});
     EXPECT_EQ(r.exit_code, 2);
     EXPECT_NE(r.err.find("far.geojson"), std::string::npos) << r.err;
 }

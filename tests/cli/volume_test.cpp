@@ -11,8 +11,8 @@
 #include <string>
 
 #include "dtm/io/tin_file.hpp"
-#include "support/solid_fixtures.hpp"
 #include "support/analysis_fixtures.hpp"
+#include "support/solid_fixtures.hpp"
 #include "support/test_support.hpp"
 
 namespace {
@@ -33,7 +33,9 @@ std::string epsg_wkt(int code) {
     return out;
 }
 
-fs::path write_tin(const dtm::test::ScratchDir& dir, const std::string& name, const dtm::Tin& tin,
+fs::path write_tin(const dtm::test::ScratchDir& dir,
+                   const std::string& name,
+                   const dtm::Tin& tin,
                    int epsg = 5514) {
     const fs::path path = dir / name;
     dtm::io::write_tin(tin, path, {.crs_wkt = epsg_wkt(epsg)});
@@ -46,8 +48,10 @@ void expect_rel(double actual, double expected) {
 
 TEST(CliVolume, PyramidAgainstALevelAndAgainstAnotherTinIsExact) {
     const dtm::test::ScratchDir dir;
-    const fs::path pyramid = write_tin(dir, "pyramid.ply", dtm::test::frustum_tin(site, height, 0.0, 300, 1));
-    const fs::path ground = write_tin(dir, "ground.ply", dtm::test::plane_tin(site, 0.0, 0.0, 0.0, 200, 2));
+    const fs::path pyramid =
+        write_tin(dir, "pyramid.ply", dtm::test::frustum_tin(site, height, 0.0, 300, 1));
+    const fs::path ground =
+        write_tin(dir, "ground.ply", dtm::test::plane_tin(site, 0.0, 0.0, 0.0, 200, 2));
     const double expected = site.side * site.side * height / 3.0;
     auto r = dtm::test::run_dtm({"volume", pyramid.string(), "--base", ground.string(), "-o",
                                  (dir / "out").string(), "-q"});
@@ -56,30 +60,34 @@ TEST(CliVolume, PyramidAgainstALevelAndAgainstAnotherTinIsExact) {
     expect_rel(dtm::test::json_number(json, "volume", "fill"), expected);
     EXPECT_EQ(dtm::test::json_number(json, "volume", "cut"), 0.0);
     expect_rel(dtm::test::json_number(json, "area", "overlap"), site.side * site.side);
-    for (const char* f : {"volume.txt", "difference.ply", "difference.tif", "cut_fill.gpkg",
-                          "zero_lines.dxf"}) {
+    for (const char* f :
+         {"volume.txt", "difference.ply", "difference.tif", "cut_fill.gpkg", "zero_lines.dxf"}) {
         EXPECT_TRUE(fs::exists(dir / "out" / f)) << f;
     }
-    EXPECT_NE(dtm::test::read_file(dir / "out" / "volume.txt").find("Signature"), std::string::npos);
-    r = dtm::test::run_dtm({"volume", pyramid.string(), "--plane", "0", "-o", (dir / "plane").string(),
-                            "-q", "--no-products"});
+    EXPECT_NE(dtm::test::read_file(dir / "out" / "volume.txt").find("Signature"),
+              std::string::npos);
+    r = dtm::test::run_dtm({"volume", pyramid.string(), "--plane", "0", "-o",
+                            (dir / "plane").string(), "-q", "--no-products"});
     ASSERT_EQ(r.exit_code, 0) << r.err;
-    expect_rel(dtm::test::json_number(dtm::test::read_file(dir / "plane" / "volume.json"), "volume", "fill"), expected);
+    expect_rel(dtm::test::json_number(dtm::test::read_file(dir / "plane" / "volume.json"), "volume",
+                                      "fill"),
+               expected);
     EXPECT_FALSE(fs::exists(dir / "plane" / "difference.tif"));
 }
 
 TEST(CliVolume, ZeroLineIsAClosed3dPolylineInGeoPackageAndDxf) {
     const dtm::test::ScratchDir dir;
-    const fs::path pyramid = write_tin(dir, "pyramid.ply", dtm::test::frustum_tin(site, height, 0.0, 300, 3));
-    const auto r = dtm::test::run_dtm({"volume", pyramid.string(), "--plane", "4", "-o",
-                                       (dir / "out").string(), "-q"});
+    const fs::path pyramid =
+        write_tin(dir, "pyramid.ply", dtm::test::frustum_tin(site, height, 0.0, 300, 3));
+    const auto r = dtm::test::run_dtm(
+        {"volume", pyramid.string(), "--plane", "4", "-o", (dir / "out").string(), "-q"});
     ASSERT_EQ(r.exit_code, 0) << r.err;
     GDALAllRegister();
     for (const char* name : {"cut_fill.gpkg", "zero_lines.dxf"}) {
         GDALDataset* ds = GDALDataset::Open((dir / "out" / name).c_str(), GDAL_OF_VECTOR);
         ASSERT_NE(ds, nullptr) << name;
         OGRLayer* layer = std::string(name) == "cut_fill.gpkg" ? ds->GetLayerByName("zero_lines")
-                                                              : ds->GetLayer(0);
+                                                               : ds->GetLayer(0);
         ASSERT_NE(layer, nullptr);
         EXPECT_EQ(layer->GetFeatureCount(), 1);
         for (auto& f : *layer) {
@@ -124,10 +132,11 @@ TEST(CliVolume, StockpileOnTiltedGroundIsThePyramid) {
     };
     const double cx = site.x0 + 20.0;
     const double cy = site.y0 + 20.0;
-    const dtm::Tin pile = dtm::test::sampled_tin(
-        site, 300, 4, z,
-        {{{site.x0, site.y0}, {cx, cy}}, {{site.x0 + 40.0, site.y0}, {cx, cy}},
-         {{site.x0 + 40.0, site.y0 + 40.0}, {cx, cy}}, {{site.x0, site.y0 + 40.0}, {cx, cy}}});
+    const dtm::Tin pile = dtm::test::sampled_tin(site, 300, 4, z,
+                                                 {{{site.x0, site.y0}, {cx, cy}},
+                                                  {{site.x0 + 40.0, site.y0}, {cx, cy}},
+                                                  {{site.x0 + 40.0, site.y0 + 40.0}, {cx, cy}},
+                                                  {{site.x0, site.y0 + 40.0}, {cx, cy}}});
     const auto r = dtm::test::run_dtm({"volume", write_tin(dir, "pile.ply", pile).string(),
                                        "--stockpile", "-o", (dir / "out").string(), "-q"});
     ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -161,14 +170,15 @@ TEST(CliVolume, WithinAPolygonAndABaseInAnotherCrs) {
                   site.x0 + 10, site.y0 + 10, site.x0 + 30, site.y0 + 10, site.x0 + 30,
                   site.y0 + 30, site.x0 + 10, site.y0 + 30, site.x0 + 10, site.y0 + 10);
     dtm::test::write_file(dir / "inner.geojson", polygon);
-    const auto r = dtm::test::run_dtm(
-        {"volume", write_tin(dir, "pyramid.ply", pyramid).string(), "--base",
-         write_tin(dir, "level.ply", level, 32633).string(), "--within",
-         (dir / "inner.geojson").string(), "-o", (dir / "out").string(), "-q"});
+    const auto r =
+        dtm::test::run_dtm({"volume", write_tin(dir, "pyramid.ply", pyramid).string(), "--base",
+                            write_tin(dir, "level.ply", level, 32633).string(), "--within",
+                            (dir / "inner.geojson").string(), "-o", (dir / "out").string(), "-q"});
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NE(r.err.find("reprojected"), std::string::npos) << r.err;
     const std::string json = dtm::test::read_file(dir / "out" / "volume.json");
-    // Inside [10, 30]^2 the pyramid rises from 4 on the square's edge to 8: a pyramid of 400 x 4 / 3.
+    // Inside [10, 30]^2 the pyramid rises from 4 on the square's edge to 8: a pyramid of 400 x 4
+    // / 3.
     EXPECT_NEAR(dtm::test::json_number(json, "volume", "fill"), 400.0 * 4.0 / 3.0, 1e-6);
     EXPECT_NEAR(dtm::test::json_number(json, "area", "overlap"), 400.0, 1e-6);
 }
@@ -176,12 +186,14 @@ TEST(CliVolume, WithinAPolygonAndABaseInAnotherCrs) {
 TEST(CliVolume, BadInputIsAnErrorNamingTheFile) {
     const dtm::test::ScratchDir dir;
     const fs::path a = write_tin(dir, "a.ply", dtm::test::plane_tin(site, 1.0, 0.0, 0.0, 20, 7));
-    const fs::path far = write_tin(
-        dir, "far.ply", dtm::test::plane_tin({site.x0 + 1000.0, site.y0, 10.0}, 0.0, 0.0, 0.0, 20, 8));
+    const fs::path far =
+        write_tin(dir, "far.ply",
+                  dtm::test::plane_tin({site.x0 + 1000.0, site.y0, 10.0}, 0.0, 0.0, 0.0, 20, 8));
     auto r = dtm::test::run_dtm({"volume", a.string(), "-o", (dir / "o1").string(), "-q"});
     EXPECT_EQ(r.exit_code, 2);
     EXPECT_NE(r.err.find("exactly one base"), std::string::npos) << r.err;
-    r = dtm::test::run_dtm({"volume", a.string(), "--base", far.string(), "-o", (dir / "o2").string(), "-q"});
+    r = dtm::test::run_dtm(
+        {"volume", a.string(), "--base", far.string(), "-o", (dir / "o2").string(), "-q"});
     EXPECT_EQ(r.exit_code, 2);
     EXPECT_NE(r.err.find("do not overlap"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("far.ply"), std::string::npos) << r.err;

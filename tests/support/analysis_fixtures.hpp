@@ -22,7 +22,8 @@ inline std::filesystem::path sample_file(const char* name) {
 
 /// The number after "key": inside the object "section": { ... } of a JSON report (NaN, and a
 /// test failure, when absent).
-inline double json_number(const std::string& json, const std::string& section,
+inline double json_number(const std::string& json,
+                          const std::string& section,
                           const std::string& key) {
     const std::size_t s = json.find("\"" + section + "\": {");
     const std::size_t k = s == std::string::npos ? s : json.find("\"" + key + "\": ", s);

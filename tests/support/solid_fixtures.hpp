@@ -40,11 +40,14 @@ inline double frustum_z(const Square& sq, double h, double top_half, double x, d
 
 /// A TIN of @p z over @p sq from the square's corners, @p count random inner points and the
 /// given breaklines (x, y pairs; z taken from @p z).
-inline Tin sampled_tin(const Square& sq, std::size_t count, std::uint32_t seed,
+inline Tin sampled_tin(const Square& sq,
+                       std::size_t count,
+                       std::uint32_t seed,
                        const std::function<double(double, double)>& z,
                        const std::vector<std::vector<std::pair<double, double>>>& lines = {}) {
     TerrainInput input;
-    for (const auto& [u, v] : std::vector<std::pair<double, double>>{{0, 0}, {1, 0}, {1, 1}, {0, 1}}) {
+    for (const auto& [u, v] :
+         std::vector<std::pair<double, double>>{{0, 0}, {1, 0}, {1, 1}, {0, 1}}) {
         const double x = sq.x0 + u * sq.side;
         const double y = sq.y0 + v * sq.side;
         input.points.push_back({x, y, z(x, y)});
@@ -67,15 +70,16 @@ inline Tin sampled_tin(const Square& sq, std::size_t count, std::uint32_t seed,
 }
 
 /// The pyramid (top_half = 0) or frustum over @p sq as an exact TIN.
-inline Tin frustum_tin(const Square& sq, double h, double top_half, std::size_t count,
-                       std::uint32_t seed) {
+inline Tin frustum_tin(
+    const Square& sq, double h, double top_half, std::size_t count, std::uint32_t seed) {
     const double half = sq.side / 2.0;
     const double cx = sq.x0 + half;
     const double cy = sq.y0 + half;
     std::vector<std::vector<std::pair<double, double>>> lines;
     const double c[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
     for (const auto& k : c) {
-        lines.push_back({{cx + k[0] * half, cy + k[1] * half}, {cx + k[0] * top_half, cy + k[1] * top_half}});
+        lines.push_back(
+            {{cx + k[0] * half, cy + k[1] * half}, {cx + k[0] * top_half, cy + k[1] * top_half}});
     }
     if (top_half > 0.0) {
         std::vector<std::pair<double, double>> ring;
@@ -85,13 +89,14 @@ inline Tin frustum_tin(const Square& sq, double h, double top_half, std::size_t 
         ring.push_back(ring.front());
         lines.push_back(ring);
     }
-    return sampled_tin(sq, count, seed,
-                       [&](double x, double y) { return frustum_z(sq, h, top_half, x, y); }, lines);
+    return sampled_tin(
+        sq, count, seed, [&](double x, double y) { return frustum_z(sq, h, top_half, x, y); },
+        lines);
 }
 
 /// A plane z = z0 + gx (x - sq.x0) + gy (y - sq.y0) over @p sq as a TIN of random points.
-inline Tin plane_tin(const Square& sq, double z0, double gx, double gy, std::size_t count,
-                     std::uint32_t seed) {
+inline Tin plane_tin(
+    const Square& sq, double z0, double gx, double gy, std::size_t count, std::uint32_t seed) {
     return sampled_tin(sq, count, seed, [&](double x, double y) {
         return z0 + gx * (x - sq.x0) + gy * (y - sq.y0);
     });

@@ -40,10 +40,11 @@ int run_check(const CheckArgs& args) {
     const CheckStatistics& s = r.stats;
     std::printf("check: %zu points, %zu on the surface, %zu outside (listed in %s)\n", s.points,
                 s.inside, s.outside, args.output.c_str());
-    std::printf("check: residual (point - surface): mean %.4f, std dev %.4f, RMSE %.4f, "
-                "max |r| %.4f at %s, NSSDA 95 %% %.4f, |r| p50 %.4f p90 %.4f p95 %.4f\n",
-                s.mean, s.std_dev, s.rmse, s.max_abs, r.max_abs_id.c_str(), s.nssda_95, s.p50,
-                s.p90, s.p95);
+    std::printf(
+        "check: residual (point - surface): mean %.4f, std dev %.4f, RMSE %.4f, "
+        "max |r| %.4f at %s, NSSDA 95 %% %.4f, |r| p50 %.4f p90 %.4f p95 %.4f\n",
+        s.mean, s.std_dev, s.rmse, s.max_abs, r.max_abs_id.c_str(), s.nssda_95, s.p50, s.p90,
+        s.p95);
     return 0;
 }
 

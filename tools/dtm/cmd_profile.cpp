@@ -84,8 +84,9 @@ Command profile_command() {
                 app.add_option("--stations", args->stations,
                                "Label stations every D along the line (default: automatic)")
                     ->check(CLI::PositiveNumber);
-                app.add_option("--plot", args->plot, "Plot format: pdf (one page per line), svg, "
-                                                     "png (one file per line) or none")
+                app.add_option("--plot", args->plot,
+                               "Plot format: pdf (one page per line), svg, "
+                               "png (one file per line) or none")
                     ->check(CLI::IsMember({"pdf", "svg", "png", "none"}));
                 add_reader_options(app, args->reader);
                 add_tin_options(app, args->tin);

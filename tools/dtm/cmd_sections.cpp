@@ -48,12 +48,12 @@ int run_sections(const SectionsArgs& args) {
     std::printf("sections: %zu sections every %g across %g -> %s\n", r.sections.size(),
                 args.options.interval, args.options.width, args.out_dir.c_str());
     if (!r.exact.empty()) {
-        std::printf("sections: fill: end-area %.3f, exact %.3f (%+.2f %%); cut: end-area %.3f, "
-                    "exact %.3f (%+.2f %%)\n",
-                    r.end_area_fill, r.exact_fill,
-                    r.exact_fill > 0 ? 100.0 * (r.end_area_fill / r.exact_fill - 1.0) : 0.0,
-                    r.end_area_cut, r.exact_cut,
-                    r.exact_cut > 0 ? 100.0 * (r.end_area_cut / r.exact_cut - 1.0) : 0.0);
+        std::printf(
+            "sections: fill: end-area %.3f, exact %.3f (%+.2f %%); cut: end-area %.3f, "
+            "exact %.3f (%+.2f %%)\n",
+            r.end_area_fill, r.exact_fill,
+            r.exact_fill > 0 ? 100.0 * (r.end_area_fill / r.exact_fill - 1.0) : 0.0, r.end_area_cut,
+            r.exact_cut, r.exact_cut > 0 ? 100.0 * (r.end_area_cut / r.exact_cut - 1.0) : 0.0);
     }
     for (const std::string& n : r.notes) {
         std::fprintf(stderr, "sections: note: %s\n", n.c_str());

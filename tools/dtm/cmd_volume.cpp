@@ -34,8 +34,8 @@ struct VolumeArgs {
 };
 
 int run_volume(const VolumeArgs& args) {
-    const int bases = (args.base.inputs.empty() ? 0 : 1) + (args.has_plane ? 1 : 0) +
-                      (args.stockpile ? 1 : 0);
+    const int bases =
+        (args.base.inputs.empty() ? 0 : 1) + (args.has_plane ? 1 : 0) + (args.stockpile ? 1 : 0);
     if (bases != 1) {
         throw UsageError("volume: give exactly one base: --base BASE, --plane Z or --stockpile");
     }
@@ -60,9 +60,10 @@ int run_volume(const VolumeArgs& args) {
     const Progress progress = terminal_progress("volume", args.quiet);
     const products::VolumeReport r = products::run_volume(job, args.out_dir, progress);
     const VolumeResult& v = r.volume;
-    std::printf("volume: fill %.3f, cut %.3f, net %.3f (fill %.3f / cut %.3f / unchanged %.3f of "
-                "%.3f compared area)\n",
-                v.fill, v.cut, v.net(), v.fill_area, v.cut_area, v.unchanged_area, v.overlap_area);
+    std::printf(
+        "volume: fill %.3f, cut %.3f, net %.3f (fill %.3f / cut %.3f / unchanged %.3f of "
+        "%.3f compared area)\n",
+        v.fill, v.cut, v.net(), v.fill_area, v.cut_area, v.unchanged_area, v.overlap_area);
     if (v.top_only_area > 0.0 || v.base_only_area > 0.0) {
         std::printf("volume: not compared: %.3f top only, %.3f base only\n", v.top_only_area,
                     v.base_only_area);

@@ -18,7 +18,8 @@
 
 namespace dtm {
 
-std::vector<CheckResult> check_points(const SurfaceHeight& surface, std::span<const Point3> points,
+std::vector<CheckResult> check_points(const SurfaceHeight& surface,
+                                      std::span<const Point3> points,
                                       const Progress& progress) {
     std::vector<CheckResult> out(points.size());
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, points.size(), 1024),

@@ -35,9 +35,7 @@ namespace {
 using Key = std::uint64_t;
 
 Key vertex_key(VertexIndex v) { return (Key{v} << 32) | 0xFFFFFFFFULL; }
-Key zero_key(VertexIndex a, VertexIndex b) {
-    return (Key{std::min(a, b)} << 32) | std::max(a, b);
-}
+Key zero_key(VertexIndex a, VertexIndex b) { return (Key{std::min(a, b)} << 32) | std::max(a, b); }
 
 struct Point {
     Key key;
@@ -58,7 +56,9 @@ struct Side {
 
 class UnionFind {
 public:
-    explicit UnionFind(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0U); }
+    explicit UnionFind(std::size_t n) : parent_(n) {
+        std::iota(parent_.begin(), parent_.end(), 0U);
+    }
     std::uint32_t find(std::uint32_t x) {
         while (parent_[x] != x) {
             parent_[x] = parent_[parent_[x]];
@@ -127,9 +127,12 @@ private:
         const Point3& a = s_.tin.vertices[u];
         const Point3& b = s_.tin.vertices[v];
         const double t = a.z / (a.z - b.z);
-        return {zero_key(u, v),          a.x + t * (b.x - a.x),
-                a.y + t * (b.y - a.y),   s_.top_z[u] + t * (s_.top_z[v] - s_.top_z[u]),
-                0.0,                     -1,
+        return {zero_key(u, v),
+                a.x + t * (b.x - a.x),
+                a.y + t * (b.y - a.y),
+                s_.top_z[u] + t * (s_.top_z[v] - s_.top_z[u]),
+                0.0,
+                -1,
                 j};
     }
 
@@ -322,9 +325,8 @@ private:
             if (c.outers.empty()) {
                 continue;
             }
-            std::sort(c.outers.begin(), c.outers.end(), [](const auto& a, const auto& b) {
-                return ring_area(a) > ring_area(b);
-            });
+            std::sort(c.outers.begin(), c.outers.end(),
+                      [](const auto& a, const auto& b) { return ring_area(a) > ring_area(b); });
             for (std::size_t i = 0; i < c.outers.size(); ++i) {
                 CutFillRegion region;
                 region.fill = (root % 2) == 0;
@@ -354,7 +356,8 @@ private:
         }
         std::sort(ends.begin(), ends.end());
         const auto range = [&](Key k) {
-            const auto lo = std::lower_bound(ends.begin(), ends.end(), std::pair<Key, std::uint32_t>{k, 0});
+            const auto lo =
+                std::lower_bound(ends.begin(), ends.end(), std::pair<Key, std::uint32_t>{k, 0});
             auto hi = lo;
             while (hi != ends.end() && hi->first == k) {
                 ++hi;

@@ -135,9 +135,9 @@ private:
                 break;
             case CornerKind::crossing: {
                 bool inserted = false;
-                slot = crossings_.find_or_insert(
-                    (std::uint64_t{c.top_u} << 32) | c.top_v,
-                    (std::uint64_t{c.base_u} << 32) | c.base_v, inserted);
+                slot =
+                    crossings_.find_or_insert((std::uint64_t{c.top_u} << 32) | c.top_v,
+                                              (std::uint64_t{c.base_u} << 32) | c.base_v, inserted);
                 break;
             }
         }

@@ -41,10 +41,10 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <memory>
 #include <utility>
-#include <array>
 #include <vector>
 
 #include "algo/detail/triangle_grid.hpp"
@@ -79,8 +79,8 @@ std::array<double, 2> slope(const Tri& t) {
 }
 
 /// Parameter along (u -> v) where it crosses the line p -> q.
-double crossing_parameter(double ux, double uy, double vx, double vy, double px, double py,
-                          double qx, double qy) {
+double crossing_parameter(
+    double ux, double uy, double vx, double vy, double px, double py, double qx, double qy) {
     const double du = det(px, py, qx, qy, ux, uy);
     const double dv = det(px, py, qx, qy, vx, vy);
     const double denominator = du - dv;
@@ -239,8 +239,12 @@ struct ChunkBuffer {
         pieces.clear();
         first.clear();
     }
-    void add(TriangleIndex ta, TriangleIndex tb, const std::array<double, 2>& top_slope,
-             const std::array<double, 2>& base_slope, const OverlayCorner* c, std::size_t n) {
+    void add(TriangleIndex ta,
+             TriangleIndex tb,
+             const std::array<double, 2>& top_slope,
+             const std::array<double, 2>& base_slope,
+             const OverlayCorner* c,
+             std::size_t n) {
         first.push_back(corners.size());
         corners.insert(corners.end(), c, c + n);
         OverlayPiece piece;
@@ -254,8 +258,8 @@ struct ChunkBuffer {
     std::span<const OverlayPiece> finish() {
         for (std::size_t i = 0; i < pieces.size(); ++i) {
             const std::size_t end = i + 1 < pieces.size() ? first[i + 1] : corners.size();
-            pieces[i].corners = std::span<const OverlayCorner>(corners.data() + first[i],
-                                                               end - first[i]);
+            pieces[i].corners =
+                std::span<const OverlayCorner>(corners.data() + first[i], end - first[i]);
         }
         return pieces;
     }
@@ -346,16 +350,16 @@ struct TinOverlay::Impl {
                 static_cast<std::size_t>(2 * tbb::this_task_arena::max_concurrency());
             tbb::parallel_pipeline(
                 tokens,
-                tbb::make_filter<void, std::size_t>(
-                    tbb::filter_mode::serial_in_order,
-                    [&](tbb::flow_control& control) -> std::size_t {
-                        if (next_chunk == chunks) {
-                            control.stop();
-                            return 0;
-                        }
-                        return next_chunk++;
-                    }) &
-                    tbb::make_filter<std::size_t, std::pair<std::size_t, std::shared_ptr<ChunkBuffer>>>(
+                tbb::make_filter<void, std::size_t>(tbb::filter_mode::serial_in_order,
+                                                    [&](tbb::flow_control& control) -> std::size_t {
+                                                        if (next_chunk == chunks) {
+                                                            control.stop();
+                                                            return 0;
+                                                        }
+                                                        return next_chunk++;
+                                                    }) &
+                    tbb::make_filter<std::size_t,
+                                     std::pair<std::size_t, std::shared_ptr<ChunkBuffer>>>(
                         tbb::filter_mode::parallel,
                         [&](std::size_t chunk) {
                             progress.check();
@@ -367,9 +371,10 @@ struct TinOverlay::Impl {
                         tbb::filter_mode::serial_in_order,
                         [&](const std::pair<std::size_t, std::shared_ptr<ChunkBuffer>>& item) {
                             fn(item.first, item.second->finish());
-                            progress.report(static_cast<double>(item.first + 1) /
-                                                static_cast<double>(std::max<std::size_t>(chunks, 1)),
-                                            "overlaying the surfaces");
+                            progress.report(
+                                static_cast<double>(item.first + 1) /
+                                    static_cast<double>(std::max<std::size_t>(chunks, 1)),
+                                "overlaying the surfaces");
                         }));
         });
         progress.report(1.0, "overlaying the surfaces");

@@ -40,9 +40,9 @@
 namespace dtm {
 namespace {
 
-using detail::PackedTriangle;
 using detail::edge_height;
 using detail::height_at;
+using detail::PackedTriangle;
 
 inline double det(double ax, double ay, double bx, double by, double cx, double cy) {
     return (ax - cx) * (by - cy) - (ay - cy) * (bx - cx);
@@ -75,8 +75,10 @@ struct Bound {
 };
 
 /// The interval of segment @p g inside triangle @p t, if their intersection has positive length.
-bool clip_segment(const PackedTriangle& t, const std::array<TriangleIndex, 3>& neighbours,
-                  const Segment& g, Interval& out) {
+bool clip_segment(const PackedTriangle& t,
+                  const std::array<TriangleIndex, 3>& neighbours,
+                  const Segment& g,
+                  Interval& out) {
     std::array<int, 3> sp{};
     std::array<int, 3> sq{};
     for (std::size_t k = 0; k < 3; ++k) {
@@ -186,9 +188,9 @@ bool profile_height(const Profile& profile, double chainage, double& z) {
             chainage > run.points.back().chainage) {
             continue;
         }
-        const auto it = std::lower_bound(
-            run.points.begin(), run.points.end(), chainage,
-            [](const ProfilePoint& p, double c) { return p.chainage < c; });
+        const auto it =
+            std::lower_bound(run.points.begin(), run.points.end(), chainage,
+                             [](const ProfilePoint& p, double c) { return p.chainage < c; });
         if (it == run.points.begin()) {
             z = it->z;
             return true;
@@ -282,11 +284,11 @@ struct TinSection::Impl {
             bool first = true;
             for (const Interval& iv : intervals) {
                 const bool joins =
-                    open && (first ? iv.t0 == 0.0
-                                   : (iv.t0 == last_t ||
-                                      (std::fabs(iv.t0 - last_t) <= 1e-9 &&
-                                       share_corner(grid.triangle(last_triangle),
-                                                    grid.triangle(iv.triangle)))));
+                    open &&
+                    (first ? iv.t0 == 0.0
+                           : (iv.t0 == last_t || (std::fabs(iv.t0 - last_t) <= 1e-9 &&
+                                                  share_corner(grid.triangle(last_triangle),
+                                                               grid.triangle(iv.triangle)))));
                 if (!joins) {
                     close_run();
                     run.points.push_back(point(iv.t0, iv.z0));
@@ -321,7 +323,8 @@ TinSection::~TinSection() = default;
 Profile TinSection::cut(std::span<const Point3> line) const { return impl_->cut(line); }
 
 std::vector<Profile> TinSection::cut_all(std::span<const std::vector<Point3>> lines,
-                                         unsigned threads, const Progress& progress) const {
+                                         unsigned threads,
+                                         const Progress& progress) const {
     std::vector<Profile> out(lines.size());
     std::atomic<std::size_t> done{0};
     const auto body = [&] {
@@ -332,9 +335,9 @@ std::vector<Profile> TinSection::cut_all(std::span<const std::vector<Point3>> li
                                   out[i] = impl_->cut(lines[i]);
                               }
                               const std::size_t finished = done.fetch_add(r.size()) + r.size();
-                              progress.report(static_cast<double>(finished) /
-                                                  static_cast<double>(lines.size()),
-                                              "cutting sections");
+                              progress.report(
+                                  static_cast<double>(finished) / static_cast<double>(lines.size()),
+                                  "cutting sections");
                           });
     };
     if (threads > 0) {

@@ -65,7 +65,8 @@ std::vector<SectionLine> section_lines(std::span<const Point3> alignment,
     }
     const double length = at.back();
     std::vector<double> stations;
-    for (std::size_t k = 0; static_cast<double>(k) * options.interval <= length * (1 + 1e-12); ++k) {
+    for (std::size_t k = 0; static_cast<double>(k) * options.interval <= length * (1 + 1e-12);
+         ++k) {
         stations.push_back(std::min(static_cast<double>(k) * options.interval, length));
     }
     if (options.include_end && length - stations.back() > 1e-9 * length) {
@@ -74,8 +75,8 @@ std::vector<SectionLine> section_lines(std::span<const Point3> alignment,
     std::vector<SectionLine> out;
     const double half = options.width / 2.0;
     for (const double s : stations) {
-        std::size_t i = static_cast<std::size_t>(
-            std::upper_bound(at.begin(), at.end(), s) - at.begin());
+        std::size_t i =
+            static_cast<std::size_t>(std::upper_bound(at.begin(), at.end(), s) - at.begin());
         i = std::clamp<std::size_t>(i, 1, alignment.size() - 1);  // segment i-1 -> i holds s
         const Point3& a = alignment[i - 1];
         const Point3& b = alignment[i];
@@ -86,7 +87,8 @@ std::vector<SectionLine> section_lines(std::span<const Point3> alignment,
         const bool at_vertex_start = s == at[i - 1] && i >= 2;
         if (at_vertex_end || at_vertex_start) {
             const Point3& c = at_vertex_end ? alignment[i + 1] : alignment[i - 2];
-            const Point2 other = at_vertex_end ? unit(c.x - b.x, c.y - b.y) : unit(a.x - c.x, a.y - c.y);
+            const Point2 other =
+                at_vertex_end ? unit(c.x - b.x, c.y - b.y) : unit(a.x - c.x, a.y - c.y);
             dir = unit(dir.x + other.x, dir.y + other.y);
         }
         SectionLine line;
@@ -153,7 +155,8 @@ std::vector<SlabVolume> slab_volumes(const DifferenceSurface& difference,
     ring.points.push_back(ring.points.front());
     corridor.boundaries.push_back(ring);
     for (const SectionLine& s : sections) {
-        corridor.breaklines.push_back({{{s.left.x, s.left.y, 0.0}, {s.right.x, s.right.y, 0.0}}, false, {}});
+        corridor.breaklines.push_back(
+            {{{s.left.x, s.left.y, 0.0}, {s.right.x, s.right.y, 0.0}}, false, {}});
     }
     const Tin slabs = triangulate(corridor, {}, progress.sub(0.0, 0.2)).tin;
     // The slab of every corridor triangle: between section k (on its forward side) and k + 1.
@@ -190,7 +193,8 @@ std::vector<SlabVolume> slab_volumes(const DifferenceSurface& difference,
                     const OverlayCorner& c = piece.corners[i];
                     v[i] = {c.x - o.x, c.y - o.y, c.z_top};
                 }
-                const detail::SignedParts parts = detail::split_polygon(v.data(), piece.corners.size());
+                const detail::SignedParts parts =
+                    detail::split_polygon(v.data(), piece.corners.size());
                 sums[k][0].add(parts.fill.integral);
                 sums[k][1].add(parts.cut.integral);
                 sums[k][2].add(parts.fill.area + parts.cut.area + parts.unchanged_area);

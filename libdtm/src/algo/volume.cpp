@@ -103,7 +103,9 @@ void add_piece(const OverlayPiece& piece, Totals& totals) {
 
 }  // namespace
 
-VolumeResult volume(const TinOverlay& overlay, const Tin& top, const Tin* base,
+VolumeResult volume(const TinOverlay& overlay,
+                    const Tin& top,
+                    const Tin* base,
                     const Progress& progress) {
     std::vector<Totals> chunks(overlay.chunk_count());
     overlay.run(
@@ -154,13 +156,17 @@ VolumeResult volume(const TinOverlay& overlay, const Tin& top, const Tin* base,
     return r;
 }
 
-VolumeResult volume(const Tin& top, const Tin& base, const VolumeOptions& options,
+VolumeResult volume(const Tin& top,
+                    const Tin& base,
+                    const VolumeOptions& options,
                     const Progress& progress) {
     const TinOverlay overlay(top, base, {.threads = options.threads});
     return volume(overlay, top, &base, progress);
 }
 
-VolumeResult volume(const Tin& top, double base_z, const VolumeOptions& options,
+VolumeResult volume(const Tin& top,
+                    double base_z,
+                    const VolumeOptions& options,
                     const Progress& progress) {
     const TinOverlay overlay(top, base_z, {.threads = options.threads});
     return volume(overlay, top, nullptr, progress);

@@ -71,8 +71,10 @@ std::string check_json(const CheckReport& r) {
 CheckReport run_check(const CheckJob& job, const fs::path& csv, const Progress& progress) {
     const Surface surface = load_surface(job.surface, {}, progress.sub(0.0, 0.6));
     const ControlPoints points = load_points(job.points, job.point_reader, surface.crs_wkt);
-    const std::unique_ptr<SurfaceHeight> height = make_surface_height(job.interpolation, surface.tin);
-    const std::vector<CheckResult> results = check_points(*height, points.points, progress.sub(0.6, 0.9));
+    const std::unique_ptr<SurfaceHeight> height =
+        make_surface_height(job.interpolation, surface.tin);
+    const std::vector<CheckResult> results =
+        check_points(*height, points.points, progress.sub(0.6, 0.9));
     CheckReport report;
     report.stats = check_statistics(results);
     std::string text = "id,x,y,z,surface_z,residual,status\n";

@@ -7,11 +7,11 @@
 #include <fstream>
 
 #include "dtm/core/error.hpp"
+#include "dtm/io/atomic_file.hpp"
 #include "dtm/io/draw/canvas.hpp"
 #include "dtm/io/formats/crs.hpp"
 #include "dtm/io/formats/dxf_writer.hpp"
 #include "dtm/io/formats/vector_file.hpp"
-#include "dtm/io/atomic_file.hpp"
 #include "dtm/products/profile_plot.hpp"
 #include "products/detail/staged_folder.hpp"
 
@@ -19,7 +19,8 @@ namespace dtm::products {
 namespace fs = std::filesystem;
 
 std::vector<Surface> load_surfaces(const std::vector<SurfaceSource>& sources,
-                                   std::vector<std::string>& notes, const Progress& progress) {
+                                   std::vector<std::string>& notes,
+                                   const Progress& progress) {
     std::vector<Surface> out;
     const double n = static_cast<double>(sources.size());
     for (std::size_t i = 0; i < sources.size(); ++i) {
@@ -36,9 +37,11 @@ std::vector<Surface> load_surfaces(const std::vector<SurfaceSource>& sources,
 
 namespace {
 
-void write_csv(const fs::path& path, const std::vector<Polyline>& lines,
+void write_csv(const fs::path& path,
+               const std::vector<Polyline>& lines,
                const std::vector<std::string>& names,
-               const std::vector<std::vector<Profile>>& sections, ProfileReport& report) {
+               const std::vector<std::vector<Profile>>& sections,
+               ProfileReport& report) {
     std::ofstream out(path, std::ios::binary);
     out << "line,surface,run,chainage,x,y,z\n";
     char row[256];
@@ -70,15 +73,18 @@ std::vector<Point3> run_points(const ProfileRun& run) {
     return pts;
 }
 
-void write_vectors(const fs::path& folder, const std::string& crs,
+void write_vectors(const fs::path& folder,
+                   const std::string& crs,
                    const std::vector<std::string>& names,
                    const std::vector<std::vector<Profile>>& sections) {
     io::VectorFile gpkg(folder / "profile.gpkg", crs);
     using T = io::VectorField::Type;
-    const std::size_t layer = gpkg.add_layer(
-        "profiles", io::VectorGeometry::line_3d,
-        {{"line", T::integer}, {"surface", T::text}, {"run", T::integer}, {"chainage_from", T::real},
-         {"chainage_to", T::real}});
+    const std::size_t layer = gpkg.add_layer("profiles", io::VectorGeometry::line_3d,
+                                             {{"line", T::integer},
+                                              {"surface", T::text},
+                                              {"run", T::integer},
+                                              {"chainage_from", T::real},
+                                              {"chainage_to", T::real}});
     io::DxfWriter dxf(folder / "profile.dxf");
     for (std::size_t s = 0; s < names.size(); ++s) {
         dxf.add_layer({"PROFILE_" + names[s], static_cast<int>(1 + s % 6)});
@@ -88,9 +94,10 @@ void write_vectors(const fs::path& folder, const std::string& crs,
             const Profile& p = sections[s][l];
             for (std::size_t r = 0; r < p.runs.size(); ++r) {
                 const std::vector<Point3> pts = run_points(p.runs[r]);
-                gpkg.add_line(layer, pts,
-                              {static_cast<long long>(l + 1), names[s], static_cast<long long>(r + 1),
-                               p.runs[r].points.front().chainage, p.runs[r].points.back().chainage});
+                gpkg.add_line(
+                    layer, pts,
+                    {static_cast<long long>(l + 1), names[s], static_cast<long long>(r + 1),
+                     p.runs[r].points.front().chainage, p.runs[r].points.back().chainage});
                 dxf.polyline_3d("PROFILE_" + names[s], pts);
             }
         }
@@ -99,7 +106,8 @@ void write_vectors(const fs::path& folder, const std::string& crs,
     dxf.commit();
 }
 
-std::vector<std::string> write_plots(const fs::path& folder, const ProfileJob& job,
+std::vector<std::string> write_plots(const fs::path& folder,
+                                     const ProfileJob& job,
                                      const std::vector<Polyline>& lines,
                                      const std::vector<std::string>& names,
                                      const std::vector<std::vector<Profile>>& sections) {
@@ -142,7 +150,9 @@ std::vector<std::string> write_plots(const fs::path& folder, const ProfileJob& j
 
 }  // namespace
 
-ProfileReport run_profile(const ProfileJob& job, const fs::path& out_dir, const Progress& progress) {
+ProfileReport run_profile(const ProfileJob& job,
+                          const fs::path& out_dir,
+                          const Progress& progress) {
     if (job.surfaces.empty()) {
         throw UsageError("profile: give at least one surface");
     }
@@ -152,7 +162,8 @@ ProfileReport run_profile(const ProfileJob& job, const fs::path& out_dir, const 
     }
     detail::StagedFolder staging(out_dir);
     ProfileReport report;
-    const std::vector<Surface> surfaces = load_surfaces(job.surfaces, report.notes, progress.sub(0.0, 0.5));
+    const std::vector<Surface> surfaces =
+        load_surfaces(job.surfaces, report.notes, progress.sub(0.0, 0.5));
     const std::string crs = surfaces.front().crs_wkt;
     const std::vector<Polyline> lines = load_lines(job.lines, job.line_reader, crs);
     std::vector<std::vector<Point3>> points;
@@ -174,9 +185,10 @@ ProfileReport run_profile(const ProfileJob& job, const fs::path& out_dir, const 
             any = any || !s[l].runs.empty();
         }
         if (!any) {
-            throw InputError(job.lines, 0, 0,
-                             (lines[l].source.empty() ? "line " + std::to_string(l + 1) : lines[l].source) +
-                                 ": the line lies outside every surface");
+            throw InputError(
+                job.lines, 0, 0,
+                (lines[l].source.empty() ? "line " + std::to_string(l + 1) : lines[l].source) +
+                    ": the line lies outside every surface");
         }
     }
     report.lines = lines.size();
@@ -186,7 +198,8 @@ ProfileReport run_profile(const ProfileJob& job, const fs::path& out_dir, const 
     report.files.insert(report.files.end(), {"profile.gpkg", "profile.dxf"});
     progress.report(0.8, "drawing the profiles");
     if (!job.plot_format.empty()) {
-        const std::vector<std::string> plots = write_plots(staging.path(), job, lines, report.surfaces, sections);
+        const std::vector<std::string> plots =
+            write_plots(staging.path(), job, lines, report.surfaces, sections);
         report.files.insert(report.files.end(), plots.begin(), plots.end());
     }
     staging.commit(report.files);

@@ -34,7 +34,10 @@ std::string station_label(double chainage) {
     return text;
 }
 
-void draw_profile(io::draw::Canvas& canvas, const ProfilePlot& plot, Point2 top_left, double width,
+void draw_profile(io::draw::Canvas& canvas,
+                  const ProfilePlot& plot,
+                  Point2 top_left,
+                  double width,
                   double height) {
     double x_lo = 0.0;
     double x_hi = 0.0;
@@ -113,8 +116,9 @@ void draw_profile(io::draw::Canvas& canvas, const ProfilePlot& plot, Point2 top_
         const std::vector<Point2> line{{a.x, top}, {a.x, bottom}};
         canvas.polyline(line, grid);
         canvas.text({a.x, bottom + 1.0},
-                    plot.chainage_offset != 0.0 ? (std::to_string(static_cast<long>(std::lround(s))))
-                                                : station_label(s),
+                    plot.chainage_offset != 0.0
+                        ? (std::to_string(static_cast<long>(std::lround(s))))
+                        : station_label(s),
                     small);
     }
     small.v = VAlign::bottom;

@@ -80,9 +80,8 @@ std::string summary_json(const SectionsReport& r, const SectionsJob& job) {
         json.open('{', "largest_difference");
         json.value("from_station", r.sections[worst].line.station);
         json.value("to_station", r.sections[worst + 1].line.station);
-        json.value("end_area_minus_exact",
-                   (r.end_area[worst].fill - r.exact[worst].fill) -
-                       (r.end_area[worst].cut - r.exact[worst].cut));
+        json.value("end_area_minus_exact", (r.end_area[worst].fill - r.exact[worst].fill) -
+                                               (r.end_area[worst].cut - r.exact[worst].cut));
         json.value("absolute", worst_diff);
         json.close('}');
     }
@@ -95,8 +94,11 @@ std::string summary_json(const SectionsReport& r, const SectionsJob& job) {
     return json.str();
 }
 
-void write_sheet(const fs::path& folder, const SectionsJob& job, const SectionsReport& r,
-                 const std::vector<std::vector<Profile>>& sections, std::vector<std::string>& files) {
+void write_sheet(const fs::path& folder,
+                 const SectionsJob& job,
+                 const SectionsReport& r,
+                 const std::vector<std::vector<Profile>>& sections,
+                 std::vector<std::string>& files) {
     // A4 portrait sheets of 2 x 4 sections.
     const double page_w = 210.0;
     const double page_h = 297.0;
@@ -111,8 +113,8 @@ void write_sheet(const fs::path& folder, const SectionsJob& job, const SectionsR
         ProfilePlot plot;
         char title[160];
         std::snprintf(title, sizeof title, "%s   fill %.2f m2   cut %.2f m2",
-                      station_label(r.sections[i].line.station).c_str(),
-                      r.sections[i].areas.fill, r.sections[i].areas.cut);
+                      station_label(r.sections[i].line.station).c_str(), r.sections[i].areas.fill,
+                      r.sections[i].areas.cut);
         plot.title = title;
         plot.names = r.surfaces;
         plot.exaggeration = job.exaggeration;
@@ -149,15 +151,18 @@ void write_sheet(const fs::path& folder, const SectionsJob& job, const SectionsR
 
 }  // namespace
 
-SectionsReport run_sections(const SectionsJob& job, const fs::path& out_dir,
+SectionsReport run_sections(const SectionsJob& job,
+                            const fs::path& out_dir,
                             const Progress& progress) {
     if (job.surfaces.empty()) {
         throw UsageError("sections: give at least one surface");
     }
     detail::StagedFolder staging(out_dir);
     SectionsReport r;
-    const std::vector<Surface> surfaces = load_surfaces(job.surfaces, r.notes, progress.sub(0.0, 0.4));
-    const std::vector<Polyline> lines = load_lines(job.alignment, job.reader, surfaces.front().crs_wkt);
+    const std::vector<Surface> surfaces =
+        load_surfaces(job.surfaces, r.notes, progress.sub(0.0, 0.4));
+    const std::vector<Polyline> lines =
+        load_lines(job.alignment, job.reader, surfaces.front().crs_wkt);
     if (lines.size() > 1) {
         r.notes.push_back(job.alignment.generic_string() + " has " + std::to_string(lines.size()) +
                           " lines: the first is the alignment");
@@ -184,9 +189,10 @@ SectionsReport run_sections(const SectionsJob& job, const fs::path& out_dir,
         r.sections.push_back(row);
     }
     if (!any) {
-        throw InputError(job.alignment, 0, 0,
-                         (lines.front().source.empty() ? std::string("the alignment") : lines.front().source) +
-                             ": no section meets a surface (the alignment lies outside them)");
+        throw InputError(
+            job.alignment, 0, 0,
+            (lines.front().source.empty() ? std::string("the alignment") : lines.front().source) +
+                ": no section meets a surface (the alignment lies outside them)");
     }
     if (surfaces.size() >= 2) {
         const TinOverlay overlay(surfaces[0].tin, surfaces[1].tin, {.threads = job.threads});
@@ -209,9 +215,9 @@ SectionsReport run_sections(const SectionsJob& job, const fs::path& out_dir,
     char row[256];
     io::VectorFile gpkg(staging.path() / "sections.gpkg", surfaces.front().crs_wkt);
     using T = io::VectorField::Type;
-    const std::size_t layer = gpkg.add_layer(
-        "sections", io::VectorGeometry::line_3d,
-        {{"station", T::real}, {"surface", T::text}, {"run", T::integer}});
+    const std::size_t layer =
+        gpkg.add_layer("sections", io::VectorGeometry::line_3d,
+                       {{"station", T::real}, {"surface", T::text}, {"run", T::integer}});
     for (std::size_t i = 0; i < cuts.size(); ++i) {
         for (std::size_t s = 0; s < sections.size(); ++s) {
             const Profile& p = sections[s][i];

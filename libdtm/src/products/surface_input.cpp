@@ -13,8 +13,10 @@ namespace {
 
 /// Loads @p options; when @p crs_wkt is set and the files carry a different CRS, loads them
 /// again reprojected into it. @p transformed receives the files' own CRS label then.
-io::LoadedInputs load_in(io::LoadOptions options, const std::string& crs_wkt,
-                         std::string& transformed, const Progress& progress) {
+io::LoadedInputs load_in(io::LoadOptions options,
+                         const std::string& crs_wkt,
+                         std::string& transformed,
+                         const Progress& progress) {
     io::LoadedInputs in = io::load_inputs(options, progress);
     if (!crs_wkt.empty() && !in.crs_wkt.empty() && !io::crs_equivalent(in.crs_wkt, crs_wkt)) {
         transformed = io::crs_label(in.crs_wkt);
@@ -27,7 +29,8 @@ io::LoadedInputs load_in(io::LoadOptions options, const std::string& crs_wkt,
     return in;
 }
 
-io::LoadOptions with_file(const io::LoadOptions& reader, const std::filesystem::path& path,
+io::LoadOptions with_file(const io::LoadOptions& reader,
+                          const std::filesystem::path& path,
                           io::InputRole role) {
     io::LoadOptions options = reader;
     options.files = {{path, role}};
@@ -53,7 +56,8 @@ std::string Surface::description() const {
     return out;
 }
 
-Surface load_surface(const SurfaceSource& source, const std::string& crs_wkt,
+Surface load_surface(const SurfaceSource& source,
+                     const std::string& crs_wkt,
                      const Progress& progress) {
     Surface s;
     s.name = source.name;
@@ -65,7 +69,8 @@ Surface load_surface(const SurfaceSource& source, const std::string& crs_wkt,
         s.tin = std::move(*in.tin);
         s.from_tin = true;
     } else {
-        s.tin = triangulate(std::move(in.terrain), source.triangulation, progress.sub(0.3, 1.0)).tin;
+        s.tin =
+            triangulate(std::move(in.terrain), source.triangulation, progress.sub(0.3, 1.0)).tin;
     }
     if (s.tin.triangles.empty()) {
         throw InputError(source.load.files.front().path, 0, 0,
@@ -75,7 +80,8 @@ Surface load_surface(const SurfaceSource& source, const std::string& crs_wkt,
     return s;
 }
 
-std::vector<Polyline> load_lines(const std::filesystem::path& path, const io::LoadOptions& reader,
+std::vector<Polyline> load_lines(const std::filesystem::path& path,
+                                 const io::LoadOptions& reader,
                                  const std::string& crs_wkt) {
     std::string transformed;
     io::LoadedInputs in =
@@ -92,7 +98,8 @@ std::vector<Polyline> load_lines(const std::filesystem::path& path, const io::Lo
     return lines;
 }
 
-TerrainInput load_area(const std::filesystem::path& path, const io::LoadOptions& reader,
+TerrainInput load_area(const std::filesystem::path& path,
+                       const io::LoadOptions& reader,
                        const std::string& crs_wkt) {
     std::string transformed;
     io::LoadOptions options = with_file(reader, path, io::InputRole::boundary);
@@ -124,7 +131,8 @@ TerrainInput load_area(const std::filesystem::path& path, const io::LoadOptions&
     return area;
 }
 
-ControlPoints load_points(const std::filesystem::path& path, const io::LoadOptions& reader,
+ControlPoints load_points(const std::filesystem::path& path,
+                          const io::LoadOptions& reader,
                           const std::string& crs_wkt) {
     std::string transformed;
     io::LoadOptions options = with_file(reader, path, io::InputRole::points);

@@ -43,7 +43,8 @@ double nice_floor(double value) {
 }
 
 double default_cell(const Tin& tin, double area) {
-    const double spacing = std::sqrt(area / static_cast<double>(std::max<std::size_t>(tin.vertices.size(), 1)));
+    const double spacing =
+        std::sqrt(area / static_cast<double>(std::max<std::size_t>(tin.vertices.size(), 1)));
     double cell = nice_floor(std::max(spacing, 1e-3));
     const Box2 b = tin_bounds(tin);
     while ((b.xmax - b.xmin) / cell * (b.ymax - b.ymin) / cell > 25e6) {
@@ -61,7 +62,9 @@ double line_length(const ZeroLine& line) {
     return sum;
 }
 
-void write_map(const CutFillMap& map, const std::string& crs, const fs::path& folder,
+void write_map(const CutFillMap& map,
+               const std::string& crs,
+               const fs::path& folder,
                VolumeReport& report) {
     io::VectorFile gpkg(folder / "cut_fill.gpkg", crs);
     using T = io::VectorField::Type;
@@ -80,8 +83,9 @@ void write_map(const CutFillMap& map, const std::string& crs, const fs::path& fo
     for (const ZeroLine& z : map.zero_lines) {
         const double length = line_length(z);
         gpkg.add_line(lines, z.points, {length, static_cast<long long>(z.closed ? 1 : 0)});
-        dxf.polyline_3d("ZERO_LINE", z.closed ? std::span(z.points).first(z.points.size() - 1)
-                                              : std::span<const Point3>(z.points),
+        dxf.polyline_3d("ZERO_LINE",
+                        z.closed ? std::span(z.points).first(z.points.size() - 1)
+                                 : std::span<const Point3>(z.points),
                         z.closed);
         report.zero_line_length += length;
     }
@@ -93,11 +97,15 @@ void write_map(const CutFillMap& map, const std::string& crs, const fs::path& fo
 
 }  // namespace
 
-void write_volume_products(const Tin& top, const Tin* base, const VolumeJob& job,
-                           const fs::path& folder, VolumeReport& report, const Progress& progress) {
+void write_volume_products(const Tin& top,
+                           const Tin* base,
+                           const VolumeJob& job,
+                           const fs::path& folder,
+                           VolumeReport& report,
+                           const Progress& progress) {
     const OverlayOptions options{.threads = job.threads};
-    const TinOverlay overlay = base != nullptr ? TinOverlay(top, *base, options)
-                                               : TinOverlay(top, job.plane_z, options);
+    const TinOverlay overlay =
+        base != nullptr ? TinOverlay(top, *base, options) : TinOverlay(top, job.plane_z, options);
     report.volume = volume(overlay, top, base, progress.sub(0.0, 0.3));
     report.top_triangles = top.triangles.size();
     report.base_triangles = base != nullptr ? base->triangles.size() : 0;
@@ -120,7 +128,8 @@ void write_volume_products(const Tin& top, const Tin* base, const VolumeJob& job
         const DifferenceSurface diff = difference_surface(overlay, progress.sub(0.3, 0.6));
         io::write_tin(diff.tin, folder / "difference.ply", {.crs_wkt = report.crs_wkt});
         report.files.emplace_back("difference.ply");
-        report.cell = job.cell > 0.0 ? job.cell : default_cell(diff.tin, report.volume.overlap_area);
+        report.cell =
+            job.cell > 0.0 ? job.cell : default_cell(diff.tin, report.volume.overlap_area);
         const GridSpec spec = snapped_grid_spec(tin_bounds(diff.tin), report.cell);
         io::GridWriter grid(folder / "difference.tif", spec, {.crs_wkt = report.crs_wkt});
         rasterize(diff.tin, spec, {.threads = job.threads}, grid, progress.sub(0.6, 0.8));
@@ -187,7 +196,8 @@ VolumeReport run_volume(const VolumeJob& job, const fs::path& out_dir, const Pro
     }
     const Tin* base_tin = job.base_kind == VolumeBaseKind::plane ? nullptr : &base.tin;
     write_volume_products(top.tin, base_tin, job, staging.path(), report, progress.sub(0.5, 0.99));
-    report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    report.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     staging.commit(report.files);
     progress.report(1.0, "done");
     return report;

@@ -13,7 +13,7 @@ TEST(CheckPoints, HeightsOnAPlaneAndPointsOutsideListed) {
     const dtm::test::Square sq{-750000.0, -1050000.0, 20.0};
     const dtm::Tin tin = dtm::test::plane_tin(sq, 100.0, 0.1, 0.2, 50, 1);
     const dtm::LinearSurface surface(tin);
-    const std::vector<dtm::Point3> points{{sq.x0 + 5, sq.y0 + 5, 101.6},   // 0.1 above
+    const std::vector<dtm::Point3> points{{sq.x0 + 5, sq.y0 + 5, 101.6},    // 0.1 above
                                           {sq.x0 + 20, sq.y0 + 20, 106.0},  // a corner, exact
                                           {sq.x0 - 1, sq.y0 + 5, 0.0}};     // outside
     const auto r = dtm::check_points(surface, points);

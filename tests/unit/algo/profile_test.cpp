@@ -40,12 +40,14 @@ dtm::Tin grid_tin(int n, double x0, double y0, bool with_hole) {
         for (int i = 0; i <= n; ++i) {
             const double x = i;
             const double y = j;
-            in.points.push_back({x0 + x, y0 + y, 100.0 + 0.3 * x - 0.2 * y + 0.05 * ((i * 7 + j * 3) % 5)});
+            in.points.push_back(
+                {x0 + x, y0 + y, 100.0 + 0.3 * x - 0.2 * y + 0.05 * ((i * 7 + j * 3) % 5)});
         }
     }
     if (with_hole) {
         dtm::Polyline hole;
-        for (const auto& [u, v] : std::vector<std::pair<double, double>>{{4, 4}, {6, 4}, {6, 6}, {4, 6}, {4, 4}}) {
+        for (const auto& [u, v] :
+             std::vector<std::pair<double, double>>{{4, 4}, {6, 4}, {6, 6}, {4, 6}, {4, 4}}) {
             hole.points.push_back({x0 + u, y0 + v, 0.0});
         }
         in.holes.push_back(hole);
@@ -83,7 +85,8 @@ TEST(Profile, LineAcrossATinHasABreakpointAtEveryEdgeCrossing) {
     // Between breakpoints the profile is linear: check the midpoints against the brute force.
     for (std::size_t i = 1; i < pts.size(); ++i) {
         double z = 0.0;
-        ASSERT_TRUE(brute_height(tin, (pts[i].x + pts[i - 1].x) / 2, (pts[i].y + pts[i - 1].y) / 2, z));
+        ASSERT_TRUE(
+            brute_height(tin, (pts[i].x + pts[i - 1].x) / 2, (pts[i].y + pts[i - 1].y) / 2, z));
         EXPECT_NEAR((pts[i].z + pts[i - 1].z) / 2, z, 1e-9);
     }
 }
@@ -111,7 +114,8 @@ TEST(Profile, AlongEdgesAndThroughVerticesAndAcrossPolylineVertices) {
     const dtm::TinSection section(tin);
     // Along the grid line y = 3 (TIN edges), then diagonally through vertices, then along the
     // border x = 10.
-    const std::vector<Point3> line{{0.0, 3.0, 0}, {7.0, 3.0, 0}, {9.0, 5.0, 0}, {10.0, 5.0, 0}, {10.0, 9.0, 0}};
+    const std::vector<Point3> line{
+        {0.0, 3.0, 0}, {7.0, 3.0, 0}, {9.0, 5.0, 0}, {10.0, 5.0, 0}, {10.0, 9.0, 0}};
     const dtm::Profile p = section.cut(line);
     ASSERT_EQ(p.runs.size(), 1U);
     EXPECT_NEAR(p.runs[0].points.back().chainage, 7.0 + std::sqrt(8.0) + 1.0 + 4.0, 1e-12);
@@ -136,7 +140,8 @@ TEST(Profile, RandomLinesOnARandomTinMatchTheBruteForce) {
     std::uniform_real_distribution<double> u(-20.0, 120.0);
     std::vector<std::vector<Point3>> lines;
     for (int i = 0; i < 30; ++i) {
-        lines.push_back({{sq.x0 + u(rng), sq.y0 + u(rng), 0}, {sq.x0 + u(rng), sq.y0 + u(rng), 0},
+        lines.push_back({{sq.x0 + u(rng), sq.y0 + u(rng), 0},
+                         {sq.x0 + u(rng), sq.y0 + u(rng), 0},
                          {sq.x0 + u(rng), sq.y0 + u(rng), 0}});
     }
     const std::vector<dtm::Profile> profiles = section.cut_all(lines);
@@ -149,7 +154,8 @@ TEST(Profile, RandomLinesOnARandomTinMatchTheBruteForce) {
             double remaining = c;
             Point3 at = lines[i][0];
             for (std::size_t s = 0; s + 1 < lines[i].size(); ++s) {
-                const double l = std::hypot(lines[i][s + 1].x - lines[i][s].x, lines[i][s + 1].y - lines[i][s].y);
+                const double l = std::hypot(lines[i][s + 1].x - lines[i][s].x,
+                                            lines[i][s + 1].y - lines[i][s].y);
                 const double t = std::min(remaining / l, 1.0);
                 at = {lines[i][s].x + t * (lines[i][s + 1].x - lines[i][s].x),
                       lines[i][s].y + t * (lines[i][s + 1].y - lines[i][s].y), 0};
@@ -167,7 +173,8 @@ TEST(Profile, RandomLinesOnARandomTinMatchTheBruteForce) {
                 }
             } else {
                 const double e = 1e-6;
-                EXPECT_TRUE(at.x < sq.x0 + e || at.x > sq.x0 + 100 - e || at.y < sq.y0 + e || at.y > sq.y0 + 100 - e)
+                EXPECT_TRUE(at.x < sq.x0 + e || at.x > sq.x0 + 100 - e || at.y < sq.y0 + e ||
+                            at.y > sq.y0 + 100 - e)
                     << "line " << i << " chainage " << c;
             }
         }

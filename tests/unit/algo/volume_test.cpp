@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: MIT
 #include "dtm/algo/volume.hpp"
-#include "dtm/algo/validate.hpp"
-#include "dtm/algo/volume_surfaces.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include "dtm/algo/validate.hpp"
+#include "dtm/algo/volume_surfaces.hpp"
 #include "support/solid_fixtures.hpp"
 
 namespace {
@@ -88,7 +88,8 @@ TEST_P(VolumeSolids, TwoCrossingPlanesSplitIntoCutAndFill) {
     expect_rel(r.cut_area_base_3d, l * xm * std::hypot(1.0, 0.25 - k, 0.1));
 }
 
-INSTANTIATE_TEST_SUITE_P(Sites, VolumeSolids,
+INSTANTIATE_TEST_SUITE_P(Sites,
+                         VolumeSolids,
                          ::testing::Values(Site{"local", 0.0, 0.0},
                                            Site{"sjtsk", -750123.25, -1050987.5}),
                          [](const auto& p) { return std::string(p.param.name); });
@@ -169,10 +170,11 @@ TEST(VolumeSurfaces, StockpileOverItsSpannedFootIsThePyramid) {
     };
     const double cx = sq.x0 + 20.0;
     const double cy = sq.y0 + 20.0;
-    const dtm::Tin pile = dtm::test::sampled_tin(
-        sq, 200, 21, z,
-        {{{sq.x0, sq.y0}, {cx, cy}}, {{sq.x0 + 40.0, sq.y0}, {cx, cy}},
-         {{sq.x0 + 40.0, sq.y0 + 40.0}, {cx, cy}}, {{sq.x0, sq.y0 + 40.0}, {cx, cy}}});
+    const dtm::Tin pile = dtm::test::sampled_tin(sq, 200, 21, z,
+                                                 {{{sq.x0, sq.y0}, {cx, cy}},
+                                                  {{sq.x0 + 40.0, sq.y0}, {cx, cy}},
+                                                  {{sq.x0 + 40.0, sq.y0 + 40.0}, {cx, cy}},
+                                                  {{sq.x0, sq.y0 + 40.0}, {cx, cy}}});
     const dtm::Tin floor = dtm::spanned_base(pile);
     const dtm::VolumeResult r = dtm::volume(pile, floor);
     expect_rel(r.fill, 1600.0 * h / 3.0);
@@ -186,12 +188,14 @@ TEST(VolumeSurfaces, ClippedToAPolygonKeepsTheSurfaceInsideIt) {
     // The inner square of half the side, as the area, with a 4 x 4 hole in it.
     dtm::TerrainInput area;
     dtm::Polyline ring;
-    for (const auto& [u, v] : std::vector<std::pair<double, double>>{{10, 10}, {30, 10}, {30, 30}, {10, 30}, {10, 10}}) {
+    for (const auto& [u, v] :
+         std::vector<std::pair<double, double>>{{10, 10}, {30, 10}, {30, 30}, {10, 30}, {10, 10}}) {
         ring.points.push_back({sq.x0 + u, sq.y0 + v, 0.0});
     }
     area.boundaries.push_back(ring);
     dtm::Polyline hole;
-    for (const auto& [u, v] : std::vector<std::pair<double, double>>{{12, 12}, {16, 12}, {16, 16}, {12, 16}, {12, 12}}) {
+    for (const auto& [u, v] :
+         std::vector<std::pair<double, double>>{{12, 12}, {16, 12}, {16, 16}, {12, 16}, {12, 12}}) {
         hole.points.push_back({sq.x0 + u, sq.y0 + v, 0.0});
     }
     area.holes.push_back(hole);
@@ -202,13 +206,13 @@ TEST(VolumeSurfaces, ClippedToAPolygonKeepsTheSurfaceInsideIt) {
     // Chebyshev radius r from the centre (20, 20): between 4 and 6.4.
     const dtm::VolumeResult r = dtm::volume(inner, 4.0);
     const dtm::VolumeResult whole = dtm::volume(pyramid, 4.0);
-    const dtm::VolumeResult hole_part = dtm::volume(
-        dtm::clip_tin(pyramid, [&] {
-            dtm::TerrainInput h;
-            h.boundaries.push_back(hole);
-            return h;
-        }()),
-        4.0);
+    const dtm::VolumeResult hole_part = dtm::volume(dtm::clip_tin(pyramid,
+                                                                  [&] {
+                                                                      dtm::TerrainInput h;
+                                                                      h.boundaries.push_back(hole);
+                                                                      return h;
+                                                                  }()),
+                                                    4.0);
     expect_rel(whole.fill, 400.0 * 4.0 / 3.0);
     expect_rel(r.fill, whole.fill - hole_part.fill);
     expect_rel(r.fill_area + r.cut_area, 384.0);

@@ -18,7 +18,7 @@ namespace dtm {
 /// One control point checked. residual = point z - surface z (positive: the point lies above
 /// the surface, i.e. the surface is too low there).
 struct CheckResult {
-    bool inside = false;    ///< the surface exists at the point (else surface_z, residual unset)
+    bool inside = false;  ///< the surface exists at the point (else surface_z, residual unset)
     double surface_z = 0.0;
     double residual = 0.0;
 };

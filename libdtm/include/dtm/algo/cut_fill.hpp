@@ -19,8 +19,8 @@ struct CutFillRegion {
     /// rings[0] is the outer ring (counter-clockwise), the others are holes (clockwise); each ring
     /// is closed (its last point repeats the first).
     std::vector<std::vector<Point2>> rings;
-    double area = 0.0;    ///< plan area
-    double volume = 0.0;  ///< volume of fill or cut (positive)
+    double area = 0.0;       ///< plan area
+    double volume = 0.0;     ///< volume of fill or cut (positive)
     double max_depth = 0.0;  ///< largest |top - base| at a vertex of the region
 };
 

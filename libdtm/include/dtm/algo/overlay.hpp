@@ -44,13 +44,13 @@ struct OverlayCorner {
 struct OverlayPiece {
     TriangleIndex top_triangle = no_triangle;
     TriangleIndex base_triangle = no_triangle;  ///< no_triangle when the base is a plane
-    std::array<double, 2> top_slope{};   ///< dz/dx, dz/dy of the top triangle's plane
-    std::array<double, 2> base_slope{};  ///< the same for the base triangle
-    std::span<const OverlayCorner> corners;  ///< counter-clockwise convex polygon, >= 3 corners
+    std::array<double, 2> top_slope{};          ///< dz/dx, dz/dy of the top triangle's plane
+    std::array<double, 2> base_slope{};         ///< the same for the base triangle
+    std::span<const OverlayCorner> corners;     ///< counter-clockwise convex polygon, >= 3 corners
 };
 
 struct OverlayOptions {
-    unsigned threads = 0;          ///< worker threads (0: all cores); never changes the result
+    unsigned threads = 0;               ///< worker threads (0: all cores); never changes the result
     std::size_t chunk_triangles = 256;  ///< top triangles per chunk
 };
 

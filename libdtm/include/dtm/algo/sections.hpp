@@ -18,8 +18,8 @@
 namespace dtm {
 
 struct SectionOptions {
-    double interval = 20.0;  ///< distance between stations along the alignment (> 0)
-    double width = 40.0;     ///< total width: width / 2 to the left and to the right
+    double interval = 20.0;   ///< distance between stations along the alignment (> 0)
+    double width = 40.0;      ///< total width: width / 2 to the left and to the right
     bool include_end = true;  ///< a last section at the alignment's end
 };
 

@@ -28,10 +28,10 @@ struct VolumeResult {
     double cut = 0.0;   ///< volume where top < base (positive number)
     [[nodiscard]] double net() const noexcept { return fill - cut; }
 
-    double fill_area = 0.0;       ///< plan area where top > base
-    double cut_area = 0.0;        ///< plan area where top < base
-    double unchanged_area = 0.0;  ///< plan area where top == base (identical surfaces)
-    double overlap_area = 0.0;    ///< plan area where both exist (fill + cut + unchanged)
+    double fill_area = 0.0;          ///< plan area where top > base
+    double cut_area = 0.0;           ///< plan area where top < base
+    double unchanged_area = 0.0;     ///< plan area where top == base (identical surfaces)
+    double overlap_area = 0.0;       ///< plan area where both exist (fill + cut + unchanged)
     double fill_area_top_3d = 0.0;   ///< 3-D area of the top surface over the fill area
     double fill_area_base_3d = 0.0;  ///< 3-D area of the base surface under the fill area
     double cut_area_top_3d = 0.0;
@@ -54,13 +54,19 @@ struct VolumeResult {
 /// and of the sums (compensated): every piece of the overlay is a convex polygon over which
 /// top - base is linear; it is split at the zero line and integrated in closed form.
 /// @throws Cancelled
-[[nodiscard]] VolumeResult volume(const Tin& top, const Tin& base, const VolumeOptions& options = {},
+[[nodiscard]] VolumeResult volume(const Tin& top,
+                                  const Tin& base,
+                                  const VolumeOptions& options = {},
                                   const Progress& progress = {});
 /// Volume between @p top and the level plane z = @p base_z.
-[[nodiscard]] VolumeResult volume(const Tin& top, double base_z, const VolumeOptions& options = {},
+[[nodiscard]] VolumeResult volume(const Tin& top,
+                                  double base_z,
+                                  const VolumeOptions& options = {},
                                   const Progress& progress = {});
 /// Volume over the pieces of a prepared overlay (both overloads above end here).
-[[nodiscard]] VolumeResult volume(const TinOverlay& overlay, const Tin& top, const Tin* base,
+[[nodiscard]] VolumeResult volume(const TinOverlay& overlay,
+                                  const Tin& top,
+                                  const Tin* base,
                                   const Progress& progress = {});
 
 }  // namespace dtm

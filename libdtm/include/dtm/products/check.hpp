@@ -35,7 +35,8 @@ struct CheckReport {
                                                                  const Tin& tin);
 
 /// Writes @p csv (id,x,y,z,surface_z,residual,status) atomically, and job.stats if set.
-CheckReport run_check(const CheckJob& job, const std::filesystem::path& csv,
+CheckReport run_check(const CheckJob& job,
+                      const std::filesystem::path& csv,
                       const Progress& progress = {});
 
 /// The statistics as JSON text.

@@ -21,7 +21,7 @@ struct ProfileJob {
     std::filesystem::path lines;
     io::LoadOptions line_reader;
     double exaggeration = 10.0;
-    double station_interval = 0.0;  ///< labelled stations (0: automatic)
+    double station_interval = 0.0;    ///< labelled stations (0: automatic)
     std::string plot_format = "pdf";  ///< pdf, svg, png, or "" for no plot
     unsigned threads = 0;
 };
@@ -37,11 +37,13 @@ struct ProfileReport {
 
 /// @throws InputError naming the file and feature for a line outside every surface; others as
 /// load_surface / load_lines.
-ProfileReport run_profile(const ProfileJob& job, const std::filesystem::path& out_dir,
+ProfileReport run_profile(const ProfileJob& job,
+                          const std::filesystem::path& out_dir,
                           const Progress& progress = {});
 
 /// Loads the surfaces of @p sources (all in the first one's CRS); @p names receives their names.
 std::vector<Surface> load_surfaces(const std::vector<SurfaceSource>& sources,
-                                   std::vector<std::string>& notes, const Progress& progress);
+                                   std::vector<std::string>& notes,
+                                   const Progress& progress);
 
 }  // namespace dtm::products

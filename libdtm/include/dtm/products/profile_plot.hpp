@@ -29,7 +29,10 @@ struct ProfilePlot {
 /// Draws @p plot into the rectangle at @p top_left, @p width x @p height mm. The scales keep the
 /// exaggeration: the drawing shrinks to fit the longer of the two extents.
 /// @throws UsageError when no profile has a point.
-void draw_profile(io::draw::Canvas& canvas, const ProfilePlot& plot, Point2 top_left, double width,
+void draw_profile(io::draw::Canvas& canvas,
+                  const ProfilePlot& plot,
+                  Point2 top_left,
+                  double width,
                   double height);
 
 /// "0+120.00" for 120 m (kilometre + metres, the station notation of road design).

@@ -44,7 +44,8 @@ struct SectionsReport {
 };
 
 /// @throws InputError naming the file for an alignment outside the surfaces; as load_surface.
-SectionsReport run_sections(const SectionsJob& job, const std::filesystem::path& out_dir,
+SectionsReport run_sections(const SectionsJob& job,
+                            const std::filesystem::path& out_dir,
                             const Progress& progress = {});
 
 }  // namespace dtm::products

@@ -39,7 +39,8 @@ struct Surface {
 /// Reads and, unless it is a single dtm TIN, triangulates @p source. When @p crs_wkt is given
 /// and the inputs carry another CRS, they are reprojected into it (and transformed_from says
 /// so). @throws InputError (file, line, feature) for unreadable inputs or an empty surface.
-[[nodiscard]] Surface load_surface(const SurfaceSource& source, const std::string& crs_wkt = {},
+[[nodiscard]] Surface load_surface(const SurfaceSource& source,
+                                   const std::string& crs_wkt = {},
                                    const Progress& progress = {});
 
 /// Lines of a vector or text file (LineStrings, polygon rings, or HP-GL lines), each with its
@@ -53,7 +54,8 @@ struct Surface {
 /// @throws InputError naming the file and feature for a ring that does not close, or when the
 /// file has no polygon.
 [[nodiscard]] TerrainInput load_area(const std::filesystem::path& path,
-                                     const io::LoadOptions& reader, const std::string& crs_wkt);
+                                     const io::LoadOptions& reader,
+                                     const std::string& crs_wkt);
 
 /// Survey points (with ids where the file has them), in @p crs_wkt.
 struct ControlPoints {
@@ -62,6 +64,7 @@ struct ControlPoints {
     std::string crs_wkt;
 };
 [[nodiscard]] ControlPoints load_points(const std::filesystem::path& path,
-                                        const io::LoadOptions& reader, const std::string& crs_wkt);
+                                        const io::LoadOptions& reader,
+                                        const std::string& crs_wkt);
 
 }  // namespace dtm::products

@@ -21,12 +21,12 @@ enum class VolumeBaseKind { surface, plane, stockpile };
 struct VolumeJob {
     SurfaceSource top;
     VolumeBaseKind base_kind = VolumeBaseKind::surface;
-    SurfaceSource base;    ///< base_kind == surface
-    double plane_z = 0.0;  ///< base_kind == plane
-    std::filesystem::path within;  ///< optional polygon file: volumes inside it only
+    SurfaceSource base;             ///< base_kind == surface
+    double plane_z = 0.0;           ///< base_kind == plane
+    std::filesystem::path within;   ///< optional polygon file: volumes inside it only
     io::LoadOptions within_reader;  ///< reader options for the polygon (layer, where, crs)
-    double swell = 1.0;   ///< bank-to-loose factor (>= 1 usually): reported for cut and pile
-    double cell = 0.0;    ///< cell of difference.tif (0: from the difference surface's spacing)
+    double swell = 1.0;  ///< bank-to-loose factor (>= 1 usually): reported for cut and pile
+    double cell = 0.0;   ///< cell of difference.tif (0: from the difference surface's spacing)
     unsigned threads = 0;
     bool products = true;  ///< false: only volume.json and volume.txt
 };
@@ -35,9 +35,9 @@ struct VolumeJob {
 struct VolumeReport {
     VolumeResult volume;
     std::string crs_wkt;
-    std::string top;        ///< description of the top surface
-    std::string base;       ///< description of the base
-    std::string within;     ///< the polygon file, if any
+    std::string top;     ///< description of the top surface
+    std::string base;    ///< description of the base
+    std::string within;  ///< the polygon file, if any
     std::size_t top_triangles = 0;
     std::size_t base_triangles = 0;
     double swell = 1.0;
@@ -55,14 +55,18 @@ struct VolumeReport {
 /// in at the end: a failed run leaves nothing half-written).
 /// @throws InputError for bad inputs (different CRSs that cannot be reconciled, an empty overlap,
 /// a polygon that does not close), UsageError, Cancelled.
-VolumeReport run_volume(const VolumeJob& job, const std::filesystem::path& out_dir,
+VolumeReport run_volume(const VolumeJob& job,
+                        const std::filesystem::path& out_dir,
                         const Progress& progress = {});
 
 /// The products of an already computed pair of surfaces into @p folder (which exists):
 /// volume.json, volume.txt and, when @p job.products, difference.ply, difference.tif,
 /// cut_fill.gpkg, zero_lines.dxf. @p base is null for a plane. Fills report.files.
-void write_volume_products(const Tin& top, const Tin* base, const VolumeJob& job,
-                           const std::filesystem::path& folder, VolumeReport& report,
+void write_volume_products(const Tin& top,
+                           const Tin* base,
+                           const VolumeJob& job,
+                           const std::filesystem::path& folder,
+                           VolumeReport& report,
                            const Progress& progress = {});
 
 /// The text of volume.json / volume.txt.

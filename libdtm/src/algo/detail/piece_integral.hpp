@@ -39,7 +39,9 @@ inline AreaIntegral integrate_polygon(const LinearCorner* p, std::size_t n) {
 }
 
 /// The part of @p p where sign * d >= 0, into @p out (room for n + 2); returns its corner count.
-inline std::size_t polygon_half(const LinearCorner* p, std::size_t n, double sign,
+inline std::size_t polygon_half(const LinearCorner* p,
+                                std::size_t n,
+                                double sign,
                                 LinearCorner* out) {
     std::size_t m = 0;
     for (std::size_t i = 0; i < n; ++i) {

@@ -59,8 +59,8 @@ inline double plane_height(const PackedTriangle& t, double px, double py) {
 
 /// Height along the edge between corners @p a and @p b of @p t at (px, py), interpolated from
 /// the end with the smaller vertex index, so both triangles of the edge give the same bits.
-inline double edge_height(const PackedTriangle& t, std::size_t a, std::size_t b, double px,
-                          double py) {
+inline double edge_height(
+    const PackedTriangle& t, std::size_t a, std::size_t b, double px, double py) {
     if (t.v[b] < t.v[a]) {
         std::swap(a, b);
     }
@@ -74,7 +74,9 @@ inline double edge_height(const PackedTriangle& t, std::size_t a, std::size_t b,
 /// Height of @p t at a point of the closed triangle whose orientations against t's edges (edge
 /// k: corner k to corner k + 1) are @p signs: a corner's own height, interpolation along an edge
 /// the point lies on, or the plane inside. The same bits from every triangle sharing the place.
-inline double height_at(const PackedTriangle& t, const std::array<int, 3>& signs, double px,
+inline double height_at(const PackedTriangle& t,
+                        const std::array<int, 3>& signs,
+                        double px,
                         double py) {
     for (std::size_t k = 0; k < 3; ++k) {
         if (t.x[k] == px && t.y[k] == py) {
@@ -110,8 +112,12 @@ public:
     [[nodiscard]] std::size_t cols() const noexcept { return cols_; }
     [[nodiscard]] std::size_t rows() const noexcept { return rows_; }
     /// Column of @p x, clamped to the grid (monotone in x).
-    [[nodiscard]] std::size_t col(double x) const noexcept { return clamp_cell((x - x0_) * inv_, cols_); }
-    [[nodiscard]] std::size_t row(double y) const noexcept { return clamp_cell((y - y0_) * inv_, rows_); }
+    [[nodiscard]] std::size_t col(double x) const noexcept {
+        return clamp_cell((x - x0_) * inv_, cols_);
+    }
+    [[nodiscard]] std::size_t row(double y) const noexcept {
+        return clamp_cell((y - y0_) * inv_, rows_);
+    }
     /// Calls fn(t) once for every triangle whose cell range overlaps the cell range of @p box
     /// (a superset of the triangles whose boxes overlap it). Each cell keeps its triangles in four
     /// groups by whether the cell is the first column and/or the first row of the triangle's

@@ -139,7 +139,9 @@ void DxfWriter::polyline_3d(const std::string& layer, std::span<const Point3> po
     ++s.entities;
 }
 
-void DxfWriter::face_3d(const std::string& layer, const Point3& a, const Point3& b,
+void DxfWriter::face_3d(const std::string& layer,
+                        const Point3& a,
+                        const Point3& b,
                         const Point3& c) {
     State& s = *state_;
     s.start_entities();
@@ -152,8 +154,11 @@ void DxfWriter::face_3d(const std::string& layer, const Point3& a, const Point3&
     ++s.entities;
 }
 
-void DxfWriter::text(const std::string& layer, const Point3& at, double height,
-                     const std::string& value, double rotation) {
+void DxfWriter::text(const std::string& layer,
+                     const Point3& at,
+                     double height,
+                     const std::string& value,
+                     double rotation) {
     State& s = *state_;
     s.start_entities();
     s.pair(0, "TEXT");

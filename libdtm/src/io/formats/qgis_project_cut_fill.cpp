@@ -9,7 +9,9 @@
 namespace dtm::io::qgis {
 namespace {
 
-void write_fill_symbol(XmlWriter& xml, std::string_view name, const std::string& color,
+void write_fill_symbol(XmlWriter& xml,
+                       std::string_view name,
+                       const std::string& color,
                        const std::string& outline) {
     xml.open("symbol", {{"type", "fill"},
                         {"name", std::string(name)},
@@ -18,9 +20,9 @@ void write_fill_symbol(XmlWriter& xml, std::string_view name, const std::string&
                         {"force_rhr", "0"}});
     xml.open("layer", {{"class", "SimpleFill"}, {"enabled", "1"}, {"locked", "0"}, {"pass", "0"}});
     const std::pair<std::string_view, std::string> props[] = {
-        {"color", color},           {"joinstyle", "bevel"},      {"offset", "0,0"},
-        {"offset_unit", "MM"},      {"outline_color", outline},  {"outline_style", "solid"},
-        {"outline_width", "0.2"},   {"outline_width_unit", "MM"}, {"style", "solid"}};
+        {"color", color},         {"joinstyle", "bevel"},       {"offset", "0,0"},
+        {"offset_unit", "MM"},    {"outline_color", outline},   {"outline_style", "solid"},
+        {"outline_width", "0.2"}, {"outline_width_unit", "MM"}, {"style", "solid"}};
     write_symbol_properties(xml, props);
     xml.close("layer");
     xml.close("symbol");
@@ -57,10 +59,13 @@ void write_cut_fill_layer(XmlWriter& xml, const QgisProject& project, const CrsI
                              {"enableorderby", "0"},
                              {"forceraster", "0"}});
     xml.open("categories");
-    xml.leaf("category", {{"render", "true"}, {"symbol", "0"}, {"value", "fill"},
+    xml.leaf("category", {{"render", "true"},
+                          {"symbol", "0"},
+                          {"value", "fill"},
                           {"label", "Fill (top above base)"}});
-    xml.leaf("category", {{"render", "true"}, {"symbol", "1"}, {"value", "cut"},
-                          {"label", "Cut (top below base)"}});
+    xml.leaf(
+        "category",
+        {{"render", "true"}, {"symbol", "1"}, {"value", "cut"}, {"label", "Cut (top below base)"}});
     xml.close("categories");
     xml.open("symbols");
     write_fill_symbol(xml, "0", "33,102,172,255", "8,48,107,255");

@@ -124,7 +124,8 @@ VectorFile::VectorFile(const fs::path& target, const std::string& crs_wkt) {
 
 VectorFile::~VectorFile() = default;
 
-std::size_t VectorFile::add_layer(const std::string& name, VectorGeometry geometry,
+std::size_t VectorFile::add_layer(const std::string& name,
+                                  VectorGeometry geometry,
                                   const std::vector<VectorField>& fields) {
     State& s = *state_;
     const OGRwkbGeometryType type = geometry == VectorGeometry::polygon   ? wkbPolygon
@@ -146,7 +147,8 @@ std::size_t VectorFile::add_layer(const std::string& name, VectorGeometry geomet
     return s.layers.size() - 1;
 }
 
-void VectorFile::add_polygon(std::size_t layer, const std::vector<std::vector<Point2>>& rings,
+void VectorFile::add_polygon(std::size_t layer,
+                             const std::vector<std::vector<Point2>>& rings,
                              const std::vector<FieldValue>& values) {
     auto* polygon = new OGRPolygon();
     for (const std::vector<Point2>& ring : rings) {
@@ -160,7 +162,8 @@ void VectorFile::add_polygon(std::size_t layer, const std::vector<std::vector<Po
     state_->add(layer, polygon, values);
 }
 
-void VectorFile::add_line(std::size_t layer, std::span<const Point3> points,
+void VectorFile::add_line(std::size_t layer,
+                          std::span<const Point3> points,
                           const std::vector<FieldValue>& values) {
     auto* line = new OGRLineString();
     line->setNumPoints(static_cast<int>(points.size()));
@@ -170,7 +173,8 @@ void VectorFile::add_line(std::size_t layer, std::span<const Point3> points,
     state_->add(layer, line, values);
 }
 
-void VectorFile::add_point(std::size_t layer, const Point3& point,
+void VectorFile::add_point(std::size_t layer,
+                           const Point3& point,
                            const std::vector<FieldValue>& values) {
     state_->add(layer, new OGRPoint(point.x, point.y, point.z), values);
 }

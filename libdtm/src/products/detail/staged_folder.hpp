@@ -56,8 +56,7 @@ public:
         for (const std::string& name : files) {
             std::filesystem::rename(temp_ / name, out_ / name, ec);
             if (ec) {
-                throw Error("cannot move " + name + " into " + out_.string() + ": " +
-                            ec.message());
+                throw Error("cannot move " + name + " into " + out_.string() + ": " + ec.message());
             }
         }
     }

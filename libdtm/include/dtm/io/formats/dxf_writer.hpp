@@ -38,7 +38,10 @@ public:
     void face_3d(const std::string& layer, const Point3& a, const Point3& b, const Point3& c);
     /// Single-line TEXT at @p at (insertion point, left baseline), @p height in drawing units,
     /// @p rotation in degrees counter-clockwise.
-    void text(const std::string& layer, const Point3& at, double height, const std::string& value,
+    void text(const std::string& layer,
+              const Point3& at,
+              double height,
+              const std::string& value,
               double rotation = 0.0);
     /// Entities written so far.
     [[nodiscard]] std::size_t entity_count() const noexcept;

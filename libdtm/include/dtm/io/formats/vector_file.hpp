@@ -36,12 +36,15 @@ public:
     ~VectorFile();
 
     /// Creates a layer; returns its number for the add_* calls.
-    std::size_t add_layer(const std::string& name, VectorGeometry geometry,
+    std::size_t add_layer(const std::string& name,
+                          VectorGeometry geometry,
                           const std::vector<VectorField>& fields);
     /// A polygon: rings[0] outer, the rest holes; each ring closed (last point = first).
-    void add_polygon(std::size_t layer, const std::vector<std::vector<Point2>>& rings,
+    void add_polygon(std::size_t layer,
+                     const std::vector<std::vector<Point2>>& rings,
                      const std::vector<FieldValue>& values);
-    void add_line(std::size_t layer, std::span<const Point3> points,
+    void add_line(std::size_t layer,
+                  std::span<const Point3> points,
                   const std::vector<FieldValue>& values);
     void add_point(std::size_t layer, const Point3& point, const std::vector<FieldValue>& values);
     /// Closes and renames onto the target. @throws Error
