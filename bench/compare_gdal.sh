@@ -34,6 +34,7 @@ command -v gdal_grid >/dev/null || { echo "compare_gdal: gdal_grid not found" >&
 now() { date +%s.%N; }
 elapsed() { echo "$2 - $1" | bc -l | awk '{printf "%.2f", $1}'; }
 
+"$here/cpu_info.sh"
 echo "== work directory: $work"
 echo "== generating $points points"
 python3 - "$points" "$work/points.csv" "$xmin" "$ymin" "$xmax" "$ymax" <<'PY'

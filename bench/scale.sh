@@ -34,6 +34,7 @@ bytes=$(stat -c %s "$out/points.xyz")
     --stats 2>"$out/time.txt" >"$out/stats.json"
 rss_kb=$(awk -F': ' '/Maximum resident set size/ {print $2}' "$out/time.txt")
 wall=$(awk -F': ' '/Elapsed \(wall clock\)/ {print $2}' "$out/time.txt")
+"$(dirname "$0")/cpu_info.sh"
 python3 - "$n" "$bytes" "$rss_kb" "$wall" "$out/stats.json" <<'PY'
 import json, sys
 n, size, rss_kb, wall, stats = int(sys.argv[1]), int(sys.argv[2]), int(sys.argv[3]), sys.argv[4], sys.argv[5]

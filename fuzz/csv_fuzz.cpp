@@ -13,7 +13,7 @@
 
 #include "dtm/core/error.hpp"
 #include "dtm/io/formats/csv.hpp"
-#include "io/formats/csv_detail.hpp"
+#include "io/formats/csv/csv_detail.hpp"
 
 namespace {
 
@@ -28,7 +28,7 @@ void add_points(std::string& out, const std::vector<dtm::Point3>& points)
 
 /// Everything a read gives (the points bit for bit), or its error.
 std::string digest(std::string_view text, dtm::io::InputRole role,
-                   const dtm::io::LoadOptions& options, const dtm::io::csv::Cuts& cuts)
+                   const dtm::io::ReadOptions& options, const dtm::io::csv::Cuts& cuts)
 {
     std::string out;
     try {
@@ -69,7 +69,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const dtm::io::csv::Cuts tiny{1 + size % 61, 1 + size % 13};
     for (const dtm::io::InputRole role : roles) {
         for (const bool skip : {false, true}) {
-            dtm::io::LoadOptions options;
+            dtm::io::ReadOptions options;
             options.skip_bad_lines = skip;
             if (digest(text, role, options, {}) != digest(text, role, options, tiny)) {
                 __builtin_trap();  // reading in blocks and chunks changed the result

@@ -9,8 +9,8 @@
 
 #include "dtm/core/error.hpp"
 #include "dtm/io/formats/hpgl_options.hpp"
-#include "io/formats/detail/hpgl_heights.hpp"
-#include "io/formats/detail/hpgl_plot.hpp"
+#include "io/formats/hpgl/hpgl_plan.hpp"
+#include "io/formats/hpgl/hpgl_plot.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {

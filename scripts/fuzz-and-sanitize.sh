@@ -63,7 +63,7 @@ run_sanitized_tests() {
     cmake -S "$repo" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDTM_SANITIZE=ON \
         -DDTM_BUILD_BENCH=OFF -DDTM_BUILD_SAMPLES=OFF >/dev/null || return 1
     cmake --build "$build" -j "$jobs" || return 1
-    ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+    ASAN_OPTIONS=detect_leaks=1 LSAN_OPTIONS="suppressions=$repo/tests/support/lsan.supp:print_suppressions=0" UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
         ctest --test-dir "$build" --output-on-failure -j "$jobs"
 }
 

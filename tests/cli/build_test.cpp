@@ -24,6 +24,7 @@
 
 #include "../../tools/dtm-sample/sample_terrain.hpp"
 #include "dtm/io/formats/mesh_2dm.hpp"
+#include "dtm/io/formats/ply.hpp"
 #include "dtm/io/tin_file.hpp"
 #include "support/test_support.hpp"
 

@@ -118,6 +118,7 @@ TEST(CliContour, BadUsageExitsWithTwoAndWritesNothing) {
 
 #include <set>
 
+#include "dtm/io/formats/ply.hpp"
 #include "dtm/io/tin_file.hpp"
 
 namespace {

@@ -154,6 +154,7 @@ TEST(CliGrid, BadUsageExitsWithTwoAndWritesNothing) {
 }  // namespace
 
 #include "dtm/geom/predicates.hpp"
+#include "dtm/io/formats/ply.hpp"
 #include "dtm/io/tin_file.hpp"
 
 namespace {

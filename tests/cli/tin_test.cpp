@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "dtm/algo/validate.hpp"
+#include "dtm/io/formats/ply.hpp"
 #include "dtm/io/tin_file.hpp"
 #include "support/terrain_fixtures.hpp"
 #include "support/test_support.hpp"

@@ -64,7 +64,7 @@ Command check_command() {
                 app.add_option("--stats", args->stats, "Also write the statistics as JSON here");
                 app.add_option("--interpolation", args->interpolation,
                                "Interpolation of the surface between vertices (linear)");
-                add_reader_options(app, args->reader);
+                add_reader_options(app, args->reader.read, args->reader.crs);
                 add_tin_options(app, args->tin);
                 app.add_flag("-q,--quiet", args->quiet, "No progress bar");
                 return [args]() { return run_check(*args); };

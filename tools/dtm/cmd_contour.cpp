@@ -10,10 +10,10 @@
 
 #include "command.hpp"
 #include "dtm/algo/contour.hpp"
-#include "dtm/algo/triangulate.hpp"
 #include "dtm/core/error.hpp"
 #include "dtm/io/contour_writer.hpp"
 #include "dtm/io/inputs.hpp"
+#include "dtm/products/surface.hpp"
 #include "input_args.hpp"
 #include "terminal_progress.hpp"
 #include "tin_args.hpp"
@@ -35,9 +35,7 @@ int run_contour(ContourArgs args) {
     }
     const Progress progress = terminal_progress("contour", args.quiet);
     io::LoadedInputs inputs = io::load_inputs(to_load_options(args.input), progress.sub(0.0, 0.2));
-    const Tin tin =
-        inputs.tin ? std::move(*inputs.tin)
-                   : triangulate(std::move(inputs.terrain), args.tin, progress.sub(0.2, 0.6)).tin;
+    const Tin tin = products::surface(inputs, args.tin, progress.sub(0.2, 0.6)).result.tin;
     args.contour.threads = args.tin.threads;
     io::ContourWriter writer(args.output, {.crs_wkt = inputs.crs_wkt});
     contour(tin, args.contour, writer, progress.sub(0.6, 1.0));

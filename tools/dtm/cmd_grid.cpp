@@ -11,10 +11,10 @@
 
 #include "command.hpp"
 #include "dtm/algo/rasterize.hpp"
-#include "dtm/algo/triangulate.hpp"
 #include "dtm/core/error.hpp"
 #include "dtm/io/grid_writer.hpp"
 #include "dtm/io/inputs.hpp"
+#include "dtm/products/surface.hpp"
 #include "input_args.hpp"
 #include "terminal_progress.hpp"
 #include "tin_args.hpp"
@@ -79,9 +79,7 @@ private:
 int run_grid(const GridArgs& args) {
     const Progress progress = terminal_progress("grid", args.quiet);
     io::LoadedInputs inputs = io::load_inputs(to_load_options(args.input), progress.sub(0.0, 0.2));
-    const Tin tin =
-        inputs.tin ? std::move(*inputs.tin)
-                   : triangulate(std::move(inputs.terrain), args.tin, progress.sub(0.2, 0.5)).tin;
+    const Tin tin = products::surface(inputs, args.tin, progress.sub(0.2, 0.5)).result.tin;
     if (tin.triangles.empty()) {
         throw InputError("grid: the inputs give no triangle to rasterise");
     }

@@ -11,8 +11,9 @@
 
 #include "command.hpp"
 #include "dtm/io/inputs.hpp"
+#include "dtm/io/json_writer.hpp"
 #include "input_args.hpp"
-#include "json_text.hpp"
+#include "option_names.hpp"
 
 namespace dtm::cli {
 namespace {
@@ -24,38 +25,48 @@ bool has_extent(const io::InputSummary& s)
 
 void print_json(std::ostream& out, const io::LoadedInputs& loaded)
 {
-    out << "{\"inputs\": [";
-    for (std::size_t i = 0; i < loaded.summaries.size(); ++i) {
-        const io::InputSummary& s = loaded.summaries[i];
-        const bool extent = has_extent(s);
-        const bool heights = s.z_range[0] <= s.z_range[1];
-        out << (i ? ",\n  " : "\n  ") << "{\"path\": " << json_string(s.path.string())
-            << ", \"format\": " << json_string(s.format) << ", \"crs\": "
-            << (s.crs.empty() ? "null" : json_string(s.crs)) << ", \"points\": " << s.points
-            << ", \"breaklines\": " << s.breaklines
-            << ", \"breakline_vertices\": " << s.breakline_vertices
-            << ", \"boundaries\": " << s.boundaries << ", \"holes\": " << s.holes
-            << ", \"bbox\": ";
-        if (extent) {
-            out << "[" << json_number(s.bbox[0]) << ", " << json_number(s.bbox[1]) << ", "
-                << json_number(s.bbox[2]) << ", " << json_number(s.bbox[3]) << "]";
+    using Layout = io::JsonWriter::Layout;
+    io::JsonWriter json;
+    json.begin_object({}, Layout::inline_);
+    json.begin_array("inputs");
+    for (const io::InputSummary& s : loaded.summaries) {
+        json.begin_object({}, Layout::inline_);
+        json.value("path", s.path.string());
+        json.value("format", s.format);
+        if (s.crs.empty()) {
+            json.null("crs");
         } else {
-            out << "null";
+            json.value("crs", s.crs);
         }
-        out << ", \"z_range\": ";
-        if (heights) {
-            out << "[" << json_number(s.z_range[0]) << ", " << json_number(s.z_range[1]) << "]";
+        json.value("points", s.points);
+        json.value("breaklines", s.breaklines);
+        json.value("breakline_vertices", s.breakline_vertices);
+        json.value("boundaries", s.boundaries);
+        json.value("holes", s.holes);
+        if (has_extent(s)) {
+            json.begin_array("bbox", Layout::inline_);
+            for (const double v : s.bbox) json.value({}, v);
+            json.end();
         } else {
-            out << "null";
+            json.null("bbox");
         }
-        out << ", \"duplicates\": " << s.duplicates << ", \"skipped_lines\": " << s.skipped_lines
-            << ", \"warnings\": [";
-        for (std::size_t w = 0; w < s.warnings.size(); ++w) {
-            out << (w ? ", " : "") << json_string(s.warnings[w]);
+        if (s.z_range[0] <= s.z_range[1]) {
+            json.begin_array("z_range", Layout::inline_);
+            for (const double v : s.z_range) json.value({}, v);
+            json.end();
+        } else {
+            json.null("z_range");
         }
-        out << "]}";
+        json.value("duplicates", s.duplicates);
+        json.value("skipped_lines", s.skipped_lines);
+        json.begin_array("warnings", Layout::inline_);
+        for (const std::string& w : s.warnings) json.value({}, cli_text(w));
+        json.end();
+        json.end();
     }
-    out << "\n]}\n";
+    json.end();
+    json.end();
+    out << json.str();
 }
 
 void print_table(std::ostream& out, const io::LoadedInputs& loaded)
@@ -84,7 +95,7 @@ void print_table(std::ostream& out, const io::LoadedInputs& loaded)
             << "\n"
             << "  duplicates (xy)    " << s.duplicates << "\n"
             << "  skipped lines      " << s.skipped_lines << "\n";
-        for (const std::string& w : s.warnings) out << "  warning            " << w << "\n";
+        for (const std::string& w : s.warnings) out << "  warning            " << cli_text(w) << "\n";
     }
 }
 
@@ -99,9 +110,7 @@ Command info_command()
                 add_input_options(app, *args);
                 app.add_flag("--json", *json, "One JSON object {\"inputs\": [...]}");
                 return [args, json]() -> int {
-                    io::LoadOptions options = to_load_options(*args);
-                    options.resolve_heights = false;
-                    const io::LoadedInputs loaded = io::load_inputs(options);
+                    const io::LoadedInputs loaded = io::load_inputs(to_load_options(*args));
                     if (*json) {
                         print_json(std::cout, loaded);
                     } else {

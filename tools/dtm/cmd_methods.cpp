@@ -11,11 +11,12 @@
 #include <vector>
 
 #include "command.hpp"
+#include "dtm/algo/line_heights.hpp"
 #include "dtm/core/error.hpp"
+#include "dtm/io/json_writer.hpp"
 #include "dtm/io/tin_file.hpp"
 #include "dtm/methods/registry.hpp"
 #include "input_args.hpp"
-#include "json_text.hpp"
 #include "terminal_progress.hpp"
 
 namespace dtm::cli {
@@ -35,14 +36,14 @@ int run_list(bool json) {
     for (std::size_t i = 0; i < methods.size(); ++i) {
         const methods::MethodInfo& m = methods[i];
         out += (i ? ",\n " : "\n ");
-        out += "{\"name\": " + json_string(m.name) +
-               ", \"family\": " + json_string(methods::family_name(m.family)) +
-               ", \"source\": " + json_string(m.source) +
-               ", \"complexity\": " + json_string(m.complexity) +
-               ", \"summary\": " + json_string(m.summary) +
+        out += "{\"name\": " + io::json_string(m.name) +
+               ", \"family\": " + io::json_string(methods::family_name(m.family)) +
+               ", \"source\": " + io::json_string(m.source) +
+               ", \"complexity\": " + io::json_string(m.complexity) +
+               ", \"summary\": " + io::json_string(m.summary) +
                ", \"takes_constraints\": " + (m.takes_constraints ? "true" : "false") +
                ", \"quadratic\": " + (m.quadratic ? "true" : "false") +
-               ", \"params\": " + json_string(m.params) + "}";
+               ", \"params\": " + io::json_string(m.params) + "}";
     }
     std::printf("%s\n]\n", out.c_str());
     return 0;
@@ -66,7 +67,7 @@ std::string counters_json(const methods::MethodCounters& c) {
                       ", \"walk_steps\": " + std::to_string(c.walk_steps) +
                       ", \"peak_bytes\": " + std::to_string(c.peak_bytes);
     for (const auto& [key, value] : c.extra) {
-        out += ", " + json_string(key) + ": " + std::to_string(value);
+        out += ", " + io::json_string(key) + ": " + std::to_string(value);
     }
     return out + "}";
 }
@@ -89,7 +90,9 @@ int run_method(const RunArgs& a) {
     }
     const Progress progress = terminal_progress("methods", a.quiet || a.stats);
     io::LoadedInputs loaded = io::load_inputs(to_load_options(a.input), progress.sub(0.0, 0.1));
-    // Breakline vertices join the points; each breakline segment becomes a constraint.
+    // 2-D breakline vertices take the height of a survey point at their position, as in
+    // triangulate(); then they join the points and each breakline segment becomes a constraint.
+    (void)resolve_line_heights(loaded.terrain);
     std::vector<Point3> points = std::move(loaded.terrain.points);
     std::vector<methods::Segment> segments;
     for (const Polyline& line : loaded.terrain.breaklines) {
@@ -114,10 +117,10 @@ int run_method(const RunArgs& a) {
     io::write_tin(result.tin, a.output, write_options);
     progress.report(1.0, "done");
     if (a.stats) {
-        std::cout << "{\"method\": " << json_string(a.name) << ", \"points\": " << points.size()
+        std::cout << "{\"method\": " << io::json_string(a.name) << ", \"points\": " << points.size()
                   << ", \"vertices\": " << result.tin.vertices.size()
                   << ", \"triangles\": " << result.tin.triangles.size()
-                  << ", \"seconds\": " << json_number(seconds)
+                  << ", \"seconds\": " << io::json_number(seconds)
                   << ", \"counters\": " << counters_json(result.counters)
                   << (result.stats_json.empty() ? "" : ", ") << result.stats_json << "}"
                   << std::endl;

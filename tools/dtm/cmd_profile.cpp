@@ -88,7 +88,7 @@ Command profile_command() {
                                "Plot format: pdf (one page per line), svg, "
                                "png (one file per line) or none")
                     ->check(CLI::IsMember({"pdf", "svg", "png", "none"}));
-                add_reader_options(app, args->reader);
+                add_reader_options(app, args->reader.read, args->reader.crs);
                 add_tin_options(app, args->tin);
                 app.add_flag("-q,--quiet", args->quiet, "No progress bar");
                 return [args]() { return run_profile(*args); };

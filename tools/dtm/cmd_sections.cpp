@@ -90,7 +90,7 @@ Command sections_command() {
                     ->check(CLI::PositiveNumber);
                 app.add_option("--plot", args->plot, "pdf (sheets), svg, png or none")
                     ->check(CLI::IsMember({"pdf", "svg", "png", "none"}));
-                add_reader_options(app, args->reader);
+                add_reader_options(app, args->reader.read, args->reader.crs);
                 add_tin_options(app, args->tin);
                 app.add_flag("-q,--quiet", args->quiet, "No progress bar");
                 return [args]() { return run_sections(*args); };

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // `dtm tin`: read points and breaklines, build the constrained Delaunay TIN, write it by extension.
-// Thin: parse -> options -> io::load_inputs -> dtm::triangulate -> io::write_tin -> report.
+// Thin: parse -> options -> io::load_inputs -> products::surface -> io::write_tin -> report.
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -11,9 +12,10 @@
 #include "dtm/algo/validate.hpp"
 #include "dtm/core/error.hpp"
 #include "dtm/io/atomic_file.hpp"
+#include "dtm/io/json_writer.hpp"
 #include "dtm/io/tin_file.hpp"
+#include "dtm/products/surface.hpp"
 #include "input_args.hpp"
-#include "json_text.hpp"
 #include "terminal_progress.hpp"
 #include "tin_args.hpp"
 
@@ -36,31 +38,74 @@ double since(std::chrono::steady_clock::time_point t)
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 
+/// --report: every merged duplicate and every height conflict.
 void write_report(const std::string& path, const TriangulateResult& r)
 {
+    using Layout = io::JsonWriter::Layout;
+    io::JsonWriter json;
+    json.begin_object();
+    json.value("duplicates_merged", r.merges.size());
+    json.begin_array("merges");
+    const auto point = [&json](const char* key, const Point3& p) {
+        json.begin_array(key, Layout::inline_);
+        for (const double c : {p.x, p.y, p.z}) json.value({}, c);
+        json.end();
+    };
+    for (const DuplicateMerge& m : r.merges) {
+        json.begin_object({}, Layout::inline_);
+        json.value("kept_input", m.kept_input);
+        json.value("merged_input", m.merged_input);
+        point("kept", m.kept);
+        point("merged", m.merged);
+        json.end();
+    }
+    json.end();
+    json.begin_array("conflicts");
+    for (const ConstraintConflict& c : r.conflicts) {
+        json.begin_object({}, Layout::inline_);
+        json.value("x", c.at.x);
+        json.value("y", c.at.y);
+        json.value("z_first", c.z_first);
+        json.value("z_second", c.z_second);
+        json.end();
+    }
+    json.end();
+    json.end();
     io::AtomicOutput out(path);
     {
-        std::ofstream f(out.temp_path());
-        f << "{\n  \"duplicates_merged\": " << r.merges.size() << ",\n  \"merges\": [";
-        for (std::size_t i = 0; i < r.merges.size(); ++i) {
-            const DuplicateMerge& m = r.merges[i];
-            f << (i ? ",\n    " : "\n    ") << "{\"kept_input\": " << m.kept_input
-              << ", \"merged_input\": " << m.merged_input << ", \"kept\": [" << json_number(m.kept.x)
-              << ", " << json_number(m.kept.y) << ", " << json_number(m.kept.z) << "], \"merged\": ["
-              << json_number(m.merged.x) << ", " << json_number(m.merged.y) << ", " << json_number(m.merged.z)
-              << "]}";
-        }
-        f << "\n  ],\n  \"conflicts\": [";
-        for (std::size_t i = 0; i < r.conflicts.size(); ++i) {
-            const ConstraintConflict& c = r.conflicts[i];
-            f << (i ? ",\n    " : "\n    ") << "{\"x\": " << json_number(c.at.x) << ", \"y\": "
-              << json_number(c.at.y) << ", \"z_first\": " << json_number(c.z_first)
-              << ", \"z_second\": " << json_number(c.z_second) << "}";
-        }
-        f << "\n  ]\n}\n";
+        std::ofstream f(out.temp_path(), std::ios::binary);
+        f << json.str();
         if (!f) throw Error("cannot write the report " + path);
     }
     out.commit();
+}
+
+/// --stats: one line of counts and timings.
+std::string stats_json(const TriangulateResult& result, std::size_t skipped_lines,
+                       const std::array<double, 3>& seconds)
+{
+    using Layout = io::JsonWriter::Layout;
+    const TriangulateStats& s = result.stats;
+    io::JsonWriter json;
+    json.begin_object({}, Layout::inline_);
+    json.value("points_in", s.points_in);
+    json.value("duplicates_merged", s.duplicates_merged);
+    json.value("skipped_lines", skipped_lines);
+    json.value("vertices", result.tin.vertices.size());
+    json.value("triangles", result.tin.triangles.size());
+    json.value("constrained_edges", result.tin.constraints.size());
+    json.value("intersections", s.intersections);
+    json.value("conflicts", s.conflicts);
+    json.value("removed_triangles", s.removed_triangles);
+    json.begin_object("seconds", Layout::inline_);
+    json.value("read", seconds[0]);
+    json.value("triangulate", s.seconds_triangulate);
+    json.value("constrain", s.seconds_constrain);
+    json.value("write", seconds[1]);
+    json.value("total", seconds[2]);
+    json.end();
+    json.end();
+    return json.str();
 }
 
 void check_tin(const TriangulateResult& result, const TerrainInput& input)
@@ -81,16 +126,13 @@ int run_tin(const TinArgs& a)
     io::LoadedInputs loaded = io::load_inputs(to_load_options(a.input), progress.sub(0, 0.2));
     const double read_s = since(start);
 
-    TriangulateResult result;
-    if (loaded.tin) {
-        result.tin = *loaded.tin;
-    } else {
-        // Without --check the input is not needed afterwards: let the triangulation consume it.
-        result = a.check ? triangulate(loaded.terrain, a.triangulate, progress.sub(0.2, 0.9))
-                         : triangulate(std::move(loaded.terrain), a.triangulate,
-                                       progress.sub(0.2, 0.9));
-    }
-    if (a.check) check_tin(result, loaded.tin ? TerrainInput{} : loaded.terrain);
+    // --check compares the TIN with the input, so it keeps a copy; otherwise the triangulation
+    // consumes the input.
+    const TerrainInput kept = a.check && !loaded.tin ? loaded.terrain : TerrainInput{};
+    const products::Surface surface =
+        products::surface(loaded, a.triangulate, progress.sub(0.2, 0.9));
+    const TriangulateResult& result = surface.result;
+    if (a.check) check_tin(result, kept);
 
     const auto write_start = std::chrono::steady_clock::now();
     io::TinWriteOptions write_options;
@@ -104,24 +146,11 @@ int run_tin(const TinArgs& a)
     if (result.stats.conflicts > 0 && !a.stats) {
         std::cerr << "dtm: warning: " << result.stats.conflicts
                   << " breakline crossings with heights differing by more than "
-                  << a.triangulate.z_tolerance << " (first at " << json_number(result.conflicts[0].at.x)
-                  << ", " << json_number(result.conflicts[0].at.y) << "; --report lists them all)\n";
+                  << a.triangulate.z_tolerance << " (first at "
+                  << io::json_number(result.conflicts[0].at.x) << ", "
+                  << io::json_number(result.conflicts[0].at.y) << "; --report lists them all)\n";
     }
-    if (a.stats) {
-        const TriangulateStats& s = result.stats;
-        std::cout << "{\"points_in\": " << s.points_in
-                  << ", \"duplicates_merged\": " << s.duplicates_merged
-                  << ", \"skipped_lines\": " << loaded.skipped_lines
-                  << ", \"vertices\": " << result.tin.vertices.size()
-                  << ", \"triangles\": " << result.tin.triangles.size()
-                  << ", \"constrained_edges\": " << result.tin.constraints.size()
-                  << ", \"intersections\": " << s.intersections << ", \"conflicts\": " << s.conflicts
-                  << ", \"removed_triangles\": " << s.removed_triangles << ", \"seconds\": {\"read\": "
-                  << json_number(read_s) << ", \"triangulate\": " << json_number(s.seconds_triangulate)
-                  << ", \"constrain\": " << json_number(s.seconds_constrain)
-                  << ", \"write\": " << json_number(write_s) << ", \"total\": " << json_number(since(start))
-                  << "}}" << std::endl;
-    }
+    if (a.stats) std::cout << stats_json(result, loaded.skipped_lines, {read_s, write_s, since(start)}) << std::flush;
     return 0;
 }
 

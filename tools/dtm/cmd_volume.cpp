@@ -45,14 +45,16 @@ int run_volume(const VolumeArgs& args) {
     products::VolumeJob job;
     job.top = {"top", to_load_options(args.top), args.tin};
     InputArgs base = args.base;
-    base.load = args.top.load;  // the reader options are the command's
+    base.read = args.top.read;  // the reader options are the command's
+    base.crs = args.top.crs;
     job.base = {"base", to_load_options(base), args.tin};
     job.base_kind = args.stockpile   ? products::VolumeBaseKind::stockpile
                     : args.has_plane ? products::VolumeBaseKind::plane
                                      : products::VolumeBaseKind::surface;
     job.plane_z = args.plane;
     job.within = args.within;
-    job.within_reader = args.top.load;
+    job.within_reader.read = args.top.read;
+    job.within_reader.crs = args.top.crs;
     job.swell = args.swell;
     job.cell = args.cell;
     job.threads = args.tin.threads;

@@ -1,12 +1,48 @@
 // SPDX-License-Identifier: MIT
 #include "hpgl_args.hpp"
 
+#include <algorithm>
+#include <array>
 #include <string>
+#include <utility>
 
 #include "dtm/core/error.hpp"
 
 namespace dtm::cli {
 namespace {
+
+constexpr std::array<std::pair<std::string_view, io::PenRole>, 8> role_names{{
+    {"points", io::PenRole::points},
+    {"breakline", io::PenRole::breakline},
+    {"soft-breakline", io::PenRole::soft_breakline},
+    {"soft_breakline", io::PenRole::soft_breakline},
+    {"soft", io::PenRole::soft_breakline},
+    {"boundary", io::PenRole::boundary},
+    {"hole", io::PenRole::hole},
+    {"ignore", io::PenRole::ignore},
+}};
+
+std::string_view trim(std::string_view s)
+{
+    while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+    while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
+    return s;
+}
+
+int parse_pen(std::string_view text, std::string_view option)
+{
+    text = trim(text);
+    int pen = 0;
+    bool ok = !text.empty() && text.size() <= 6;
+    for (const char c : text) {
+        ok = ok && c >= '0' && c <= '9';
+        if (ok) pen = pen * 10 + (c - '0');
+    }
+    if (!ok) {
+        throw UsageError(std::string(option) + ": '" + std::string(text) + "' is not a pen number");
+    }
+    return pen;
+}
 
 /// "500" or "1:500".
 double parse_scale(const std::string& text)
@@ -27,6 +63,45 @@ double parse_scale(const std::string& text)
 
 }  // namespace
 
+std::map<int, io::PenRole> parse_pen_roles(std::string_view text)
+{
+    std::map<int, io::PenRole> roles;
+    while (!text.empty()) {
+        const auto comma = text.find(',');
+        const std::string_view item = trim(text.substr(0, comma));
+        text = comma == std::string_view::npos ? std::string_view{} : text.substr(comma + 1);
+        if (item.empty()) continue;
+        const auto equals = item.find('=');
+        if (equals == std::string_view::npos) {
+            throw UsageError("--hpgl-pens: '" + std::string(item) +
+                             "' is not PEN=ROLE (for example 2=breakline)");
+        }
+        const int pen = parse_pen(item.substr(0, equals), "--hpgl-pens");
+        const std::string_view name = trim(item.substr(equals + 1));
+        const auto found = std::find_if(role_names.begin(), role_names.end(),
+                                        [&](const auto& entry) { return entry.first == name; });
+        if (found == role_names.end()) {
+            throw UsageError("--hpgl-pens: unknown role '" + std::string(name) +
+                             "' (expected points, breakline, soft-breakline, boundary, hole or "
+                             "ignore)");
+        }
+        roles[pen] = found->second;
+    }
+    return roles;
+}
+
+std::vector<int> parse_pen_list(std::string_view text)
+{
+    std::vector<int> pens;
+    while (!text.empty()) {
+        const auto comma = text.find(',');
+        const std::string_view item = trim(text.substr(0, comma));
+        text = comma == std::string_view::npos ? std::string_view{} : text.substr(comma + 1);
+        if (!item.empty()) pens.push_back(parse_pen(item, "--hpgl-height-pens"));
+    }
+    return pens;
+}
+
 void add_hpgl_options(CLI::App& app, io::HpglOptions& options)
 {
     const std::string group = "HPGL plans";
@@ -34,7 +109,7 @@ void add_hpgl_options(CLI::App& app, io::HpglOptions& options)
            "--hpgl-pens",
            [&options](const std::string& text) {
                try {
-                   options.pens = io::parse_pen_roles(text);
+                   options.pens = parse_pen_roles(text);
                } catch (const UsageError& e) {
                    throw CLI::ValidationError(e.what());
                }
@@ -47,7 +122,7 @@ void add_hpgl_options(CLI::App& app, io::HpglOptions& options)
            "--hpgl-height-pens",
            [&options](const std::string& text) {
                try {
-                   options.height_pens = io::parse_pen_list(text);
+                   options.height_pens = parse_pen_list(text);
                } catch (const UsageError& e) {
                    throw CLI::ValidationError(e.what());
                }

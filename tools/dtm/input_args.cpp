@@ -24,13 +24,14 @@ void add_input_options(CLI::App& app, InputArgs& args)
           "Outer boundary: polygons (inner rings are holes) or closed lines; repeatable");
     files("--holes", args.holes,
           "Holes: polygons or closed lines, or points as hole seeds; repeatable");
-    add_reader_options(app, args.load);
+    add_reader_options(app, args.read, args.crs);
 }
 
-void add_reader_options(CLI::App& app, io::LoadOptions& o)
+void add_reader_options(CLI::App& app, io::ReadOptions& o, io::CrsOptions& crs)
 {
-    app.add_option("--crs", o.crs, "CRS of inputs that carry none (EPSG:5514, WKT, PROJ)");
-    app.add_option("--target-crs", o.target_crs,
+    app.add_option("--crs", crs.default_crs,
+                   "CRS of inputs that carry none (EPSG:5514, WKT, PROJ)");
+    app.add_option("--target-crs", crs.target_crs,
                    "Transform every input into this CRS (default: the first input's CRS; "
                    "geographic inputs go to their UTM zone)");
     app.add_option("--columns", o.columns,
@@ -61,8 +62,9 @@ void add_surface_options(CLI::App& app, const std::string& name, InputArgs& args
 
 io::LoadOptions to_load_options(const InputArgs& args)
 {
-    io::LoadOptions options = args.load;
-    options.files.clear();
+    io::LoadOptions options;
+    options.read = args.read;
+    options.crs = args.crs;
     const auto add = [&options](const std::vector<std::string>& paths, io::InputRole role) {
         for (const std::string& p : paths) options.files.push_back({p, role});
     };

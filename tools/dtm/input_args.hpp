@@ -19,7 +19,8 @@ struct InputArgs {
     std::vector<std::string> soft_breaklines;
     std::vector<std::string> boundaries;
     std::vector<std::string> holes;
-    io::LoadOptions load;  ///< everything else the readers take
+    io::ReadOptions read;  ///< what the readers take
+    io::CrsOptions crs;
 };
 
 /// Declares the positional INPUTS and the reader options on @p app.
@@ -27,14 +28,14 @@ void add_input_options(CLI::App& app, InputArgs& args);
 
 /// Declares the reader options alone (--crs, --target-crs, --columns, --layer, --where,
 /// --z-field, --skip-bad-lines, HP-GL options), for commands whose files are declared otherwise.
-void add_reader_options(CLI::App& app, io::LoadOptions& options);
+void add_reader_options(CLI::App& app, io::ReadOptions& read, io::CrsOptions& crs);
 
 /// Declares a second surface's files: --NAME FILE... (points, lines or a dtm .ply TIN) and
 /// --NAME-breaklines, --NAME-soft-breaklines, --NAME-boundary, --NAME-holes. The reader options
 /// (--crs, --columns, --layer, ...) are the command's.
 void add_surface_options(CLI::App& app, const std::string& name, InputArgs& args);
 
-/// The LoadOptions for io::load_inputs.
+/// The LoadOptions for io::load_inputs and products::build.
 [[nodiscard]] io::LoadOptions to_load_options(const InputArgs& args);
 
 }  // namespace dtm::cli

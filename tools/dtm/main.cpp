@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // dtm: one binary, thin subcommands. This file is the only place exceptions become exit codes:
 //   0 ok, 1 any other failure (dtm::Error, std::exception), 2 bad usage or bad input
-//   (dtm::UsageError, dtm::InputError, CLI11 parse errors), 130 cancelled.
+//   (dtm::UsageError with dtm::OptionError, dtm::InputError, CLI11 parse errors), 130 cancelled.
+// Library messages name options as `field`; cli_text() shows them as the flags users type.
 #if __has_include(<malloc.h>)
 #include <malloc.h>
 #endif
@@ -12,6 +13,7 @@
 
 #include "command.hpp"
 #include "dtm/core/error.hpp"
+#include "option_names.hpp"
 
 int main(int argc, char** argv)
 {
@@ -57,16 +59,16 @@ int main(int argc, char** argv)
         std::cerr << "dtm: cancelled\n";
         return 130;
     } catch (const dtm::UsageError& e) {
-        std::cerr << "dtm: " << e.what() << '\n';
+        std::cerr << "dtm: " << cli_text(e.what()) << '\n';
         return 2;
     } catch (const dtm::InputError& e) {
-        std::cerr << "dtm: " << e.what() << '\n';
+        std::cerr << "dtm: " << cli_text(e.what()) << '\n';
         return 2;
     } catch (const std::bad_alloc&) {
         std::cerr << "dtm: out of memory\n";
         return 1;
     } catch (const std::exception& e) {
-        std::cerr << "dtm: " << e.what() << '\n';
+        std::cerr << "dtm: " << cli_text(e.what()) << '\n';
         return 1;
     }
 }

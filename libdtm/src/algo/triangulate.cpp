@@ -9,12 +9,14 @@
 //      stitches (detail/delaunay_dc.cpp, detail/ghost_mesh.hpp);
 //   3. constraints inserted into the same triangles by cavity retriangulation, crossings split
 //      with interpolated heights (detail/constraint_batch.cpp, detail/mesh_edit.cpp,
-//      detail/mesh_segment.cpp);
-//   4. the TIN: the triangle array itself, in place, in canonical order (detail/ghost_mesh.cpp);
+//      detail/mesh_edit_segment.cpp);
+//   4. the TIN: the triangle array itself, in place, in canonical order (detail/tin_build_triangles.cpp);
 //      the domain: outside the boundary, holes and long border triangles removed
-//      (detail/tin_build.cpp, detail/tin_finish.cpp).
-// Soft breakline vertices take their heights from the surface built without them (a first pass
-// of steps 2-3 without soft lines), then everything is built again with them.
+//      (detail/tin_build_domain.cpp, detail/tin_build_finish.cpp).
+// First, 2-D line vertices get heights (resolve_line_heights: from survey points at the same
+// position, rings from the surface of the points and hard breaklines). Soft breakline vertices
+// take theirs from the surface built without them (a first pass of steps 2-3 without soft
+// lines, sampled by SurfaceSampler), then everything is built again with them.
 #include "dtm/algo/triangulate.hpp"
 
 #include <tbb/blocked_range.h>
@@ -32,13 +34,13 @@
 #include "algo/detail/input_merge.hpp"
 #include "algo/detail/mesh_edit.hpp"
 #include "algo/detail/tin_build.hpp"
+#include "dtm/algo/surface_sampler.hpp"
 #include "dtm/core/error.hpp"
 #include "dtm/geom/predicates.hpp"
 
 namespace dtm {
 namespace {
 
-using detail::HalfEdge;
 using detail::MergedInput;
 
 double seconds_since(std::chrono::steady_clock::time_point start)
@@ -133,45 +135,23 @@ Kernel build_kernel(const MergedInput& in, bool with_soft, bool keep_heights,
     return k;
 }
 
-/// Heights of soft-breakline-only vertices, interpolated on the surface built without them.
+/// Heights of soft-breakline-only vertices, interpolated on the surface built without them (the
+/// kernel of the other vertices with their constraints, sampled as a Tin by SurfaceSampler).
 void interpolate_soft_heights(MergedInput& in, const TriangulateOptions& options,
                               const Progress& progress)
 {
     Kernel k = build_kernel(in, false, true, options, progress);
-    const detail::GhostMesh& m = k.triangles;
-    detail::MeshEditor editor(k.triangles, k.z, options.z_tolerance);
-    HalfEdge hint = m.tris.empty() ? detail::no_half_edge : editor.edge_of(0);
+    std::vector<Point3> vertices = in.vertices;  // the soft-only ones are on no triangle
+    const detail::BigArray<detail::KernelPoint>& kp = k.triangles.points;
+    for (std::size_t v = k.kernel_count; v < kp.size(); ++v) {  // added at crossings, in order
+        vertices.push_back({kp[v].x, kp[v].y, k.z[v]});
+    }
+    const detail::TinDraft surface = detail::ghost_mesh_to_tin(k.triangles, std::move(vertices));
+    const SurfaceSampler sampler(surface.tin);
+    SurfaceSampler::Cursor cursor;
     for (std::size_t i = 0; i < in.vertices.size(); ++i) {
         if (in.z_known[i]) continue;
-        const Point2 p{in.vertices[i].x, in.vertices[i].y};
-        const detail::Location loc = hint == detail::no_half_edge
-                                         ? detail::Location{detail::Location::Kind::outside, hint}
-                                         : editor.locate(p, hint);
-        double z = std::numeric_limits<double>::quiet_NaN();
-        if (loc.kind == detail::Location::Kind::outside) {
-            double best = std::numeric_limits<double>::infinity();
-            for (std::size_t v = 0; v < m.points.size(); ++v) {
-                const double dx = m.points[v].x - p.x;
-                const double dy = m.points[v].y - p.y;
-                if (dx * dx + dy * dy < best) {
-                    best = dx * dx + dy * dy;
-                    z = k.z[v];
-                }
-            }
-        } else {
-            hint = loc.e;
-            const detail::VertexId a = m.org(loc.e);
-            const detail::VertexId b = m.dest(loc.e);
-            const detail::VertexId c = m.org(detail::prev(loc.e));
-            const Point2 &pa = m.p(a), &pb = m.p(b), &pc = m.p(c);
-            const double det = (pb.x - pa.x) * (pc.y - pa.y) - (pb.y - pa.y) * (pc.x - pa.x);
-            const double wb = ((p.x - pa.x) * (pc.y - pa.y) - (p.y - pa.y) * (pc.x - pa.x)) / det;
-            const double wc = ((pb.x - pa.x) * (p.y - pa.y) - (pb.y - pa.y) * (p.x - pa.x)) / det;
-            z = loc.kind == detail::Location::Kind::vertex
-                    ? k.z[a]
-                    : k.z[a] + wb * (k.z[b] - k.z[a]) + wc * (k.z[c] - k.z[a]);
-        }
-        in.vertices[i].z = z;
+        in.vertices[i].z = sampler.height_or_nearest({in.vertices[i].x, in.vertices[i].y}, cursor);
     }
     for (std::size_t i = 0; i < in.vertices.size(); ++i) in.z_known[i] = true;
 }
@@ -191,9 +171,12 @@ void check_not_degenerate(const MergedInput& in)
 }
 
 TriangulateResult run(TerrainInput&& input, const TriangulateOptions& options,
-                      const Progress& progress)
+                      const Progress& outer)
 {
     TriangulateResult result;
+    result.line_heights =
+        resolve_line_heights(input, {options.threads, options.tiles}, outer.sub(0.0, 0.1));
+    const Progress progress = result.line_heights.from_surface > 0 ? outer.sub(0.1, 1.0) : outer;
     auto start = std::chrono::steady_clock::now();
     MergedInput merged = detail::merge_input(std::move(input), options);
     const bool has_boundary = !input.boundaries.empty();

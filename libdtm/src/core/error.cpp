@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "dtm/core/error.hpp"
 
+#include <utility>
+
 namespace dtm {
 namespace {
 std::string located(const std::filesystem::path& file, std::size_t line, std::size_t column,
@@ -20,5 +22,10 @@ InputError::InputError(std::filesystem::path file, std::size_t line, std::size_t
 }
 
 InputError::InputError(const std::string& what) : Error(what) {}
+
+OptionError::OptionError(std::string field, const std::string& what)
+    : UsageError(what), field_(std::move(field))
+{
+}
 
 }  // namespace dtm

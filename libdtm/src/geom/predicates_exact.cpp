@@ -11,30 +11,11 @@ namespace dtm::geom::detail {
 
 namespace {
 
-/// h = e * f for expansions e, f; Cap >= 2 * elen * flen. Returns the length of h.
+using Diff = ExactDiff;
+
 template <int Cap>
 int multiply(int elen, const double* e, int flen, const double* f, double* h) noexcept {
-    double part[2 * 16];
-    double acc[Cap];
-    int hlen = scale_expansion<compile_time_fma>(elen, e, f[0], h);
-    for (int j = 1; j < flen; ++j) {
-        const int plen = scale_expansion<compile_time_fma>(elen, e, f[j], part);
-        for (int i = 0; i < hlen; ++i) {
-            acc[i] = h[i];
-        }
-        hlen = expansion_sum(hlen, acc, plen, part, h);
-    }
-    return hlen;
-}
-
-struct Diff {
-    double v[2];  ///< tail, then rounded difference
-};
-
-Diff exact_diff(double a, double b) noexcept {
-    Diff d{};
-    two_diff(a, b, d.v[1], d.v[0]);
-    return d;
+    return expansion_product<Cap>(elen, e, flen, f, h);
 }
 
 /// (px^2 + py^2) * (qx ry - qy rx), exactly. Returns the length of out (<= 512).

@@ -9,6 +9,10 @@
 // extension at the end because GDAL picks drivers by extension (a shapefile must end in .shp).
 // Multi-file formats write companions next to the temporary with the same stem (.shx, .dbf, .prj);
 // commit() renames each to the target's stem with its own extension, the main file last.
+//
+// AtomicDirectory stages a folder the same way: a hidden sibling folder receives every file,
+// commit() renames them into the target folder one by one (all renames within one directory
+// tree, so each is atomic) and removes the staging folder.
 #include "dtm/io/atomic_file.hpp"
 
 #include <unistd.h>
@@ -29,17 +33,15 @@ fs::path directory_of(const fs::path& target) {
     return target.has_parent_path() ? target.parent_path() : fs::path(".");
 }
 
-/// Stem of the temporary: ".<target stem>.tmp-<pid>-<n>".
-std::string temp_stem(const fs::path& target) {
+/// ".<name>.tmp-<pid>-<n>", n counting up in this process.
+std::string temp_name(const std::string& name) {
     static std::atomic<unsigned long> counter{0};
-    std::string stem = ".";
-    stem += target.stem().string();
-    stem += ".tmp-";
-    stem += std::to_string(::getpid());
-    stem += '-';
-    stem += std::to_string(counter.fetch_add(1));
-    return stem;
+    return "." + name + ".tmp-" + std::to_string(::getpid()) + '-' +
+           std::to_string(counter.fetch_add(1));
 }
+
+/// Stem of the temporary: ".<target stem>.tmp-<pid>-<n>".
+std::string temp_stem(const fs::path& target) { return temp_name(target.stem().string()); }
 
 /// Files next to @p temp named "<temp stem>.<anything>" other than @p temp itself, where the temp
 /// stem is the temporary's name without the target's extension.
@@ -102,6 +104,51 @@ void AtomicOutput::commit() {
     }
     rename_or_throw(temp_, target_);
     committed_ = true;
+}
+
+AtomicDirectory::AtomicDirectory(fs::path target) : target_(std::move(target)) {
+    if (target_.filename().empty()) target_ = target_.parent_path();  // "out/" -> "out"
+    std::error_code ec;
+    if (fs::exists(target_, ec) && !fs::is_directory(target_, ec)) {
+        throw UsageError("cannot write into " + target_.string() + ": it is a file, not a folder");
+    }
+    const fs::path parent = directory_of(target_);
+    staging_ = parent / temp_name(target_.filename().string());
+    fs::create_directories(parent, ec);
+    if (!fs::create_directory(staging_, ec) || ec) {
+        throw Error("cannot create the temporary folder " + staging_.string() + ": " +
+                    ec.message());
+    }
+}
+
+AtomicDirectory::~AtomicDirectory() {
+    std::error_code ec;
+    fs::remove_all(staging_, ec);
+}
+
+fs::path AtomicDirectory::add(const std::string& name) {
+    if (!contains(name)) files_.push_back(name);
+    return staging_ / name;
+}
+
+bool AtomicDirectory::contains(const std::string& name) const noexcept {
+    return std::find(files_.begin(), files_.end(), name) != files_.end();
+}
+
+void AtomicDirectory::commit() {
+    if (committed_) return;
+    std::error_code ec;
+    fs::create_directories(target_, ec);
+    if (ec) throw Error("cannot create " + target_.string() + ": " + ec.message());
+    for (const std::string& name : files_) {
+        fs::create_directories((target_ / name).parent_path(), ec);  // "volume/volume.json"
+        fs::rename(staging_ / name, target_ / name, ec);
+        if (ec) {
+            throw Error("cannot move " + name + " into " + target_.string() + ": " + ec.message());
+        }
+    }
+    committed_ = true;
+    fs::remove_all(staging_, ec);
 }
 
 }  // namespace dtm::io

@@ -1,45 +1,40 @@
 // SPDX-License-Identifier: MIT
 // Loading every input of a subcommand into one TerrainInput in one planar CRS:
-//   1. each file goes to its reader (registry.cpp; .ply positional inputs are dtm TINs);
-//   2. its CRS is the one the file carries, else --crs; S-JTSK positive (Y, X) become
+//   1. each file goes to its reader (the table in reader.cpp); the first TIN a reader returns
+//      (a dtm .ply) is the surface, used as it is;
+//   2. its CRS is the one the file carries, else CrsOptions::default_crs; S-JTSK positive (Y, X) become
 //      Krovak East-North; the summary is taken here, in the input's own CRS;
-//   3. the output CRS is --target-crs, else the first input's CRS; a geographic output CRS is
+//   3. the output CRS is CrsOptions::target_crs, else the first input's CRS; a geographic output CRS is
 //      replaced by the UTM zone of the data (GeographicLib); every input is transformed into it;
-//   4. polyline vertices without a height (2-D lines, rings) take the z of a survey point at
-//      exactly the same xy; hard breakline vertices left without one are an error; boundary and
-//      hole vertices left without one take the height of the surface (linear interpolation in
-//      the Delaunay TIN of the points and hard breaklines, built without the rings; nearest
-//      vertex outside its hull); soft breakline vertices keep NaN (the triangulator computes
-//      them).
+// Line vertices without a height keep NaN z: triangulate() gives them one
+// (algo/line_heights.hpp), and `dtm info` shows the lines as they are.
 #include "dtm/io/inputs.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <string>
-#include <unordered_map>
 
 #include "dtm/algo/duplicates.hpp"
-#include "dtm/algo/triangulate.hpp"
 #include "dtm/core/error.hpp"
-#include "dtm/geom/predicates.hpp"
 #include "dtm/io/formats/crs.hpp"
 #include "dtm/io/reader.hpp"
-#include "dtm/io/tin_file.hpp"
 
 namespace dtm::io {
 namespace {
 
 struct Loaded {
     ReadResult result;
-    std::string crs_wkt;  ///< after --crs
+    std::string crs_wkt;  ///< after CrsOptions::default_crs
 };
 
-bool is_ply(const std::filesystem::path& path)
+/// The WKT of a CRS option; a definition GDAL does not know is an OptionError naming @p field.
+std::string option_crs(const std::string& definition, const char* field)
 {
-    std::string ext = path.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return ext == ".ply";
+    try {
+        return crs_to_wkt(definition);
+    } catch (const UsageError& e) {
+        throw OptionError(field, "`" + std::string(field) + "`: " + e.what());
+    }
 }
 
 void summarize(InputSummary& s, const TerrainInput& t)
@@ -77,24 +72,19 @@ Loaded read_one(const InputFile& file, const LoadOptions& options, const Progres
                 std::optional<Tin>& tin)
 {
     Loaded loaded;
-    if (file.role == InputRole::points && is_ply(file.path)) {
-        LoadedTin t = read_tin_ply(file.path);
-        loaded.result.terrain.points = t.tin.vertices;
-        loaded.result.crs_wkt = t.crs_wkt;
-        loaded.result.summary.path = file.path;
-        loaded.result.summary.format = "dtm PLY TIN";
+    loaded.result = find_reader(file.path).read(file, options.read, progress);
+    if (loaded.result.tin) {
         if (tin) {
             loaded.result.summary.warnings.push_back(
-                "only the first PLY TIN is used as a TIN; this one adds its vertices as points");
+                "only the first TIN input is used as a TIN; this one adds its vertices as points");
         } else {
-            tin = std::move(t.tin);
+            tin = std::move(loaded.result.tin);
         }
-    } else {
-        loaded.result = find_reader(file.path).read(file, options, progress);
+        loaded.result.tin.reset();
     }
     loaded.crs_wkt = loaded.result.crs_wkt;
-    if (loaded.crs_wkt.empty() && !options.crs.empty()) {
-        loaded.crs_wkt = crs_to_wkt(options.crs, "--crs");
+    if (loaded.crs_wkt.empty() && !options.crs.default_crs.empty()) {
+        loaded.crs_wkt = option_crs(options.crs.default_crs, "default_crs");
     }
     InputSummary& s = loaded.result.summary;
     s.path = file.path;
@@ -120,10 +110,11 @@ struct Target {
 Target choose_target(const LoadOptions& options, const std::vector<Loaded>& loaded)
 {
     Target target;
-    if (!options.target_crs.empty()) {
-        target.wkt = crs_to_wkt(options.target_crs, "--target-crs");
+    if (!options.crs.target_crs.empty()) {
+        target.wkt = option_crs(options.crs.target_crs, "target_crs");
         if (crs_is_geographic(target.wkt)) {
-            throw UsageError("--target-crs: expected a projected CRS (metres), found the "
+            throw OptionError("target_crs",
+                              "`target_crs`: expected a projected CRS (metres), found the "
                              "geographic " + crs_label(target.wkt) +
                              "; triangulating degrees is wrong");
         }
@@ -138,7 +129,7 @@ Target choose_target(const LoadOptions& options, const std::vector<Loaded>& load
         const auto& b = l.result.summary.bbox;
         UtmZone zone = utm_zone_for((b[0] + b[2]) / 2.0, (b[1] + b[3]) / 2.0);
         target.utm = zone;
-        target.wkt = crs_to_wkt("EPSG:" + std::to_string(zone.epsg()), "UTM zone");
+        target.wkt = crs_to_wkt("EPSG:" + std::to_string(zone.epsg()));
         return target;
     }
     return target;
@@ -157,129 +148,19 @@ void to_target(Loaded& l, const Target& target)
     if (l.crs_wkt.empty() || target.wkt.empty()) {
         if (!target.wkt.empty()) {
             l.result.summary.warnings.push_back(
-                "no CRS in the file and no --crs: taken to be in the output CRS");
+                "no CRS in the file and no `default_crs`: taken to be in the output CRS");
         }
         return;
     }
     if (crs_equivalent(l.crs_wkt, target.wkt)) return;
     if (target.utm && crs_is_geographic(l.crs_wkt)) {
         if (!wgs84_like(l.crs_wkt)) {
-            transform_terrain(l.result.terrain, l.crs_wkt, crs_to_wkt("EPSG:4326", "WGS84"), name);
+            transform_terrain(l.result.terrain, l.crs_wkt, crs_to_wkt("EPSG:4326"), name);
         }
         project_to_utm(l.result.terrain, *target.utm, name);
         return;
     }
     transform_terrain(l.result.terrain, l.crs_wkt, target.wkt, name);
-}
-
-struct XyHash {
-    std::size_t operator()(const Point2& p) const noexcept
-    {
-        const std::size_t a = std::hash<double>{}(p.x);
-        return a ^ (std::hash<double>{}(p.y) + 0x9e3779b97f4a7c15ULL + (a << 6) + (a >> 2));
-    }
-};
-
-void fill_heights(TerrainInput& t)
-{
-    std::unordered_map<Point2, double, XyHash> z_at;
-    const auto missing = [](const std::vector<Polyline>& lines) {
-        return std::any_of(lines.begin(), lines.end(), [](const Polyline& l) {
-            return std::any_of(l.points.begin(), l.points.end(),
-                               [](const Point3& p) { return std::isnan(p.z); });
-        });
-    };
-    if (!missing(t.breaklines) && !missing(t.boundaries) && !missing(t.holes) &&
-        !missing(t.soft_breaklines))
-        return;
-    z_at.reserve(t.points.size());
-    for (const Point3& p : t.points) z_at.emplace(p.xy(), p.z);
-    const auto fill = [&](std::vector<Polyline>& lines, const char* kind, bool required) {
-        for (Polyline& l : lines) {
-            for (Point3& p : l.points) {
-                if (!std::isnan(p.z)) continue;
-                const auto it = z_at.find(p.xy());
-                if (it != z_at.end()) {
-                    p.z = it->second;
-                } else if (required) {
-                    throw InputError(l.source + ": " + kind + " vertex (" + std::to_string(p.x) +
-                                     ", " + std::to_string(p.y) +
-                                     ") has no height: expected a z column/geometry z, --z-field, "
-                                     "or a survey point at that position (2-D lines: use "
-                                     "--soft-breaklines)");
-                }
-            }
-        }
-    };
-    fill(t.breaklines, "breakline", true);
-    fill(t.boundaries, "boundary", false);
-    fill(t.holes, "hole", false);
-    fill(t.soft_breaklines, "soft breakline", false);
-}
-
-/// Linear height of the TIN at @p q by a visibility walk from @p start; nearest vertex when q
-/// is outside the hull (or the walk does not settle).
-double surface_z(const Tin& tin, const Point3& q, TriangleIndex& start)
-{
-    TriangleIndex t = start < tin.triangles.size() ? start : 0;
-    for (std::size_t steps = 0; steps < 4 * tin.triangles.size() + 8; ++steps) {
-        const Triangle& tri = tin.triangles[t];
-        int out = -1;
-        for (int i = 0; i < 3 && out < 0; ++i) {
-            const Point3& a = tin.vertex(tri.v[static_cast<std::size_t>((i + 1) % 3)]);
-            const Point3& b = tin.vertex(tri.v[static_cast<std::size_t>((i + 2) % 3)]);
-            if (geom::orient2d(a, b, q) < 0) out = i;
-        }
-        if (out < 0) {
-            start = t;
-            const Point3& a = tin.vertex(tri.v[0]);
-            const Point3& b = tin.vertex(tri.v[1]);
-            const Point3& c = tin.vertex(tri.v[2]);
-            const double d = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
-            const double u = ((b.x - q.x) * (c.y - q.y) - (c.x - q.x) * (b.y - q.y)) / d;
-            const double v = ((c.x - q.x) * (a.y - q.y) - (a.x - q.x) * (c.y - q.y)) / d;
-            return u * a.z + v * b.z + (1.0 - u - v) * c.z;
-        }
-        const TriangleIndex next = tri.n[static_cast<std::size_t>(out)];
-        if (next == no_triangle) break;
-        t = next;
-    }
-    const auto nearest = std::min_element(
-        tin.vertices.begin(), tin.vertices.end(), [&q](const Point3& a, const Point3& b) {
-            return std::hypot(a.x - q.x, a.y - q.y) < std::hypot(b.x - q.x, b.y - q.y);
-        });
-    return nearest->z;
-}
-
-/// Step 4 for rings: heights of boundary/hole vertices from the surface of the other inputs.
-void rings_from_surface(TerrainInput& t, std::vector<std::string>& warnings)
-{
-    std::size_t missing = 0;
-    for (const auto* rings : {&t.boundaries, &t.holes}) {
-        for (const Polyline& l : *rings) {
-            missing += static_cast<std::size_t>(std::count_if(
-                l.points.begin(), l.points.end(), [](const Point3& p) { return std::isnan(p.z); }));
-        }
-    }
-    if (missing == 0) return;
-    TerrainInput surface;
-    surface.points = t.points;
-    surface.breaklines = t.breaklines;
-    if (surface.points.size() < 3) {
-        throw InputError("boundary/hole vertices have no heights and there are fewer than 3 "
-                         "survey points to take them from");
-    }
-    const Tin tin = triangulate(surface).tin;
-    TriangleIndex start = 0;
-    for (auto* rings : {&t.boundaries, &t.holes}) {
-        for (Polyline& l : *rings) {
-            for (Point3& p : l.points) {
-                if (std::isnan(p.z)) p.z = surface_z(tin, p, start);
-            }
-        }
-    }
-    warnings.push_back(std::to_string(missing) +
-                       " boundary/hole vertices without height took the height of the surface");
 }
 
 /// Moves @p from to the end of @p to; the first input's array is taken over, not copied (a
@@ -340,15 +221,6 @@ LoadedInputs load_inputs(const LoadOptions& options, const Progress& progress)
         merge(out, loaded[i]);
     }
     out.crs_wkt = target.wkt;
-    if (!options.resolve_heights) return out;
-    fill_heights(out.terrain);
-    std::vector<std::string> notes;
-    rings_from_surface(out.terrain, notes);
-    for (const std::string& note : notes) {
-        for (InputSummary& s : out.summaries) {
-            if (s.boundaries > 0 || s.holes > 0) s.warnings.push_back(note);
-        }
-    }
     return out;
 }
 

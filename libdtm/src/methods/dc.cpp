@@ -11,7 +11,8 @@
 
 namespace dtm::methods {
 
-MethodResult run_dc(const MethodInput& input, const MethodOptions& options,
+MethodResult run_dc(const MethodInput& input,
+                    const MethodOptions& options,
                     const Progress& progress) {
     if (!options.params.empty()) {
         throw UsageError("method dc takes no parameter (got '" + options.params.begin()->first +

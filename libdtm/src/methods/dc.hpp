@@ -8,7 +8,8 @@
 
 namespace dtm::methods {
 
-[[nodiscard]] MethodResult run_dc(const MethodInput& input, const MethodOptions& options,
+[[nodiscard]] MethodResult run_dc(const MethodInput& input,
+                                  const MethodOptions& options,
                                   const Progress& progress);
 
 }  // namespace dtm::methods

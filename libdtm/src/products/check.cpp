@@ -8,7 +8,7 @@
 
 #include "dtm/core/error.hpp"
 #include "dtm/io/atomic_file.hpp"
-#include "io/formats/detail/json_builder.hpp"
+#include "dtm/io/json_writer.hpp"
 
 namespace dtm::products {
 namespace fs = std::filesystem;
@@ -37,8 +37,8 @@ std::unique_ptr<SurfaceHeight> make_surface_height(const std::string& name, cons
 
 std::string check_json(const CheckReport& r) {
     const CheckStatistics& s = r.stats;
-    io::detail::JsonBuilder json;
-    json.open('{');
+    io::JsonWriter json;
+    json.begin_object();
     json.value("residual", "point z - surface z");
     json.value("points", s.points);
     json.value("inside", s.inside);
@@ -52,24 +52,24 @@ std::string check_json(const CheckReport& r) {
     json.value("max_abs", s.max_abs);
     json.value("max_abs_id", r.max_abs_id);
     json.value("nssda_95", s.nssda_95);
-    json.open('{', "abs_percentiles");
+    json.begin_object("abs_percentiles");
     json.value("p50", s.p50);
     json.value("p68.27", s.p68);
     json.value("p90", s.p90);
     json.value("p95", s.p95);
     json.value("p99", s.p99);
-    json.close('}');
-    json.open('[', "outside_ids");
+    json.end();
+    json.begin_array("outside_ids");
     for (const std::string& id : r.outside_ids) {
         json.value({}, id);
     }
-    json.close(']');
-    json.close('}');
+    json.end();
+    json.end();
     return json.str();
 }
 
 CheckReport run_check(const CheckJob& job, const fs::path& csv, const Progress& progress) {
-    const Surface surface = load_surface(job.surface, {}, progress.sub(0.0, 0.6));
+    const LoadedSurface surface = load_surface(job.surface, {}, progress.sub(0.0, 0.6));
     const ControlPoints points = load_points(job.points, job.point_reader, surface.crs_wkt);
     const std::unique_ptr<SurfaceHeight> height =
         make_surface_height(job.interpolation, surface.tin);

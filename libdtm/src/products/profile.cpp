@@ -18,10 +18,10 @@
 namespace dtm::products {
 namespace fs = std::filesystem;
 
-std::vector<Surface> load_surfaces(const std::vector<SurfaceSource>& sources,
+std::vector<LoadedSurface> load_surfaces(const std::vector<SurfaceSource>& sources,
                                    std::vector<std::string>& notes,
                                    const Progress& progress) {
-    std::vector<Surface> out;
+    std::vector<LoadedSurface> out;
     const double n = static_cast<double>(sources.size());
     for (std::size_t i = 0; i < sources.size(); ++i) {
         const double at = static_cast<double>(i);
@@ -160,9 +160,9 @@ ProfileReport run_profile(const ProfileJob& job,
         job.plot_format != "png") {
         throw UsageError("profile: --plot must be pdf, svg, png or none");
     }
-    detail::StagedFolder staging(out_dir);
+    io::AtomicDirectory staging(out_dir);
     ProfileReport report;
-    const std::vector<Surface> surfaces =
+    const std::vector<LoadedSurface> surfaces =
         load_surfaces(job.surfaces, report.notes, progress.sub(0.0, 0.5));
     const std::string crs = surfaces.front().crs_wkt;
     const std::vector<Polyline> lines = load_lines(job.lines, job.line_reader, crs);
@@ -192,17 +192,17 @@ ProfileReport run_profile(const ProfileJob& job,
         }
     }
     report.lines = lines.size();
-    write_csv(staging.path() / "profile.csv", lines, report.surfaces, sections, report);
+    write_csv(staging.staging() / "profile.csv", lines, report.surfaces, sections, report);
     report.files.emplace_back("profile.csv");
-    write_vectors(staging.path(), crs, report.surfaces, sections);
+    write_vectors(staging.staging(), crs, report.surfaces, sections);
     report.files.insert(report.files.end(), {"profile.gpkg", "profile.dxf"});
     progress.report(0.8, "drawing the profiles");
     if (!job.plot_format.empty()) {
         const std::vector<std::string> plots =
-            write_plots(staging.path(), job, lines, report.surfaces, sections);
+            write_plots(staging.staging(), job, lines, report.surfaces, sections);
         report.files.insert(report.files.end(), plots.begin(), plots.end());
     }
-    staging.commit(report.files);
+    detail::commit_files(staging, report.files);
     progress.report(1.0, "done");
     return report;
 }

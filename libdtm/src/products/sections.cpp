@@ -14,7 +14,7 @@
 #include "dtm/io/formats/vector_file.hpp"
 #include "dtm/products/profile.hpp"
 #include "dtm/products/profile_plot.hpp"
-#include "io/formats/detail/json_builder.hpp"
+#include "dtm/io/json_writer.hpp"
 #include "products/detail/staged_folder.hpp"
 
 namespace dtm::products {
@@ -42,24 +42,24 @@ std::string summary_csv(const SectionsReport& r) {
 }
 
 std::string summary_json(const SectionsReport& r, const SectionsJob& job) {
-    io::detail::JsonBuilder json;
-    json.open('{');
+    io::JsonWriter json;
+    json.begin_object();
     json.value("sections", r.sections.size());
     json.value("interval", job.options.interval);
     json.value("width", job.options.width);
-    json.open('[', "surfaces");
+    json.begin_array("surfaces");
     for (const std::string& s : r.surfaces) {
         json.value({}, s);
     }
-    json.close(']');
-    json.open('{', "end_area");
+    json.end();
+    json.begin_object("end_area");
     json.value("fill", r.end_area_fill);
     json.value("cut", r.end_area_cut);
-    json.close('}');
-    json.open('{', "exact");
+    json.end();
+    json.begin_object("exact");
     json.value("fill", r.exact_fill);
     json.value("cut", r.exact_cut);
-    json.close('}');
+    json.end();
     json.value("explanation",
                "end-area volumes assume each section's area varies linearly between stations; "
                "the exact volumes integrate the two surfaces over each slab between sections. "
@@ -77,20 +77,20 @@ std::string summary_json(const SectionsReport& r, const SectionsJob& job) {
         }
     }
     if (!r.exact.empty()) {
-        json.open('{', "largest_difference");
+        json.begin_object("largest_difference");
         json.value("from_station", r.sections[worst].line.station);
         json.value("to_station", r.sections[worst + 1].line.station);
         json.value("end_area_minus_exact", (r.end_area[worst].fill - r.exact[worst].fill) -
                                                (r.end_area[worst].cut - r.exact[worst].cut));
         json.value("absolute", worst_diff);
-        json.close('}');
+        json.end();
     }
-    json.open('[', "notes");
+    json.begin_array("notes");
     for (const std::string& n : r.notes) {
         json.value({}, n);
     }
-    json.close(']');
-    json.close('}');
+    json.end();
+    json.end();
     return json.str();
 }
 
@@ -157,9 +157,9 @@ SectionsReport run_sections(const SectionsJob& job,
     if (job.surfaces.empty()) {
         throw UsageError("sections: give at least one surface");
     }
-    detail::StagedFolder staging(out_dir);
+    io::AtomicDirectory staging(out_dir);
     SectionsReport r;
-    const std::vector<Surface> surfaces =
+    const std::vector<LoadedSurface> surfaces =
         load_surfaces(job.surfaces, r.notes, progress.sub(0.0, 0.4));
     const std::vector<Polyline> lines =
         load_lines(job.alignment, job.reader, surfaces.front().crs_wkt);
@@ -173,7 +173,7 @@ SectionsReport run_sections(const SectionsJob& job,
         cut_lines.push_back({{l.left.x, l.left.y, 0.0}, {l.right.x, l.right.y, 0.0}});
     }
     std::vector<std::vector<Profile>> sections;
-    for (const Surface& s : surfaces) {
+    for (const LoadedSurface& s : surfaces) {
         r.surfaces.push_back(s.name);
         sections.push_back(TinSection(s.tin).cut_all(cut_lines, job.threads));
     }
@@ -210,10 +210,10 @@ SectionsReport run_sections(const SectionsJob& job,
             r.exact_cut += r.exact[k].cut;
         }
     }
-    detail::write_text_file(staging.path() / "sections.csv", summary_csv(r));
+    detail::write_text_file(staging.staging() / "sections.csv", summary_csv(r));
     std::string points = "station,surface,run,offset,x,y,z\n";
     char row[256];
-    io::VectorFile gpkg(staging.path() / "sections.gpkg", surfaces.front().crs_wkt);
+    io::VectorFile gpkg(staging.staging() / "sections.gpkg", surfaces.front().crs_wkt);
     using T = io::VectorField::Type;
     const std::size_t layer =
         gpkg.add_layer("sections", io::VectorGeometry::line_3d,
@@ -236,14 +236,14 @@ SectionsReport run_sections(const SectionsJob& job,
         }
     }
     gpkg.commit();
-    detail::write_text_file(staging.path() / "section_points.csv", points);
-    detail::write_text_file(staging.path() / "sections.json", summary_json(r, job));
+    detail::write_text_file(staging.staging() / "section_points.csv", points);
+    detail::write_text_file(staging.staging() / "sections.json", summary_json(r, job));
     r.files = {"sections.csv", "section_points.csv", "sections.gpkg", "sections.json"};
     progress.report(0.9, "drawing the sections");
     if (!job.plot_format.empty()) {
-        write_sheet(staging.path(), job, r, sections, r.files);
+        write_sheet(staging.staging(), job, r, sections, r.files);
     }
-    staging.commit(r.files);
+    detail::commit_files(staging, r.files);
     progress.report(1.0, "done");
     return r;
 }

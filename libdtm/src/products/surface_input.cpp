@@ -4,9 +4,11 @@
 #include "dtm/products/surface_input.hpp"
 
 #include <cmath>
+#include <utility>
 
 #include "dtm/core/error.hpp"
 #include "dtm/io/formats/crs.hpp"
+#include "dtm/products/surface.hpp"
 
 namespace dtm::products {
 namespace {
@@ -20,7 +22,7 @@ io::LoadedInputs load_in(io::LoadOptions options,
     io::LoadedInputs in = io::load_inputs(options, progress);
     if (!crs_wkt.empty() && !in.crs_wkt.empty() && !io::crs_equivalent(in.crs_wkt, crs_wkt)) {
         transformed = io::crs_label(in.crs_wkt);
-        options.target_crs = crs_wkt;
+        options.crs.target_crs = crs_wkt;
         in = io::load_inputs(options, progress);
         in.crs_wkt = crs_wkt;
     } else if (in.crs_wkt.empty()) {
@@ -34,7 +36,6 @@ io::LoadOptions with_file(const io::LoadOptions& reader,
                           io::InputRole role) {
     io::LoadOptions options = reader;
     options.files = {{path, role}};
-    options.resolve_heights = false;
     return options;
 }
 
@@ -45,7 +46,7 @@ bool closed(const Polyline& p) {
 
 }  // namespace
 
-std::string Surface::description() const {
+std::string LoadedSurface::description() const {
     std::string out;
     for (const io::InputSummary& s : inputs) {
         if (!out.empty()) {
@@ -56,22 +57,17 @@ std::string Surface::description() const {
     return out;
 }
 
-Surface load_surface(const SurfaceSource& source,
-                     const std::string& crs_wkt,
-                     const Progress& progress) {
-    Surface s;
+LoadedSurface load_surface(const SurfaceSource& source,
+                           const std::string& crs_wkt,
+                           const Progress& progress) {
+    LoadedSurface s;
     s.name = source.name;
     io::LoadedInputs in = load_in(source.load, crs_wkt, s.transformed_from, progress.sub(0.0, 0.3));
     s.crs_wkt = in.crs_wkt;
-    s.inputs = in.summaries;
-    const bool only_tin = in.tin && source.load.files.size() == 1;
-    if (only_tin) {
-        s.tin = std::move(*in.tin);
-        s.from_tin = true;
-    } else {
-        s.tin =
-            triangulate(std::move(in.terrain), source.triangulation, progress.sub(0.3, 1.0)).tin;
-    }
+    Surface built = surface(in, source.triangulation, progress.sub(0.3, 1.0));
+    s.inputs = std::move(in.summaries);
+    s.tin = std::move(built.result.tin);
+    s.from_tin = built.from_tin;
     if (s.tin.triangles.empty()) {
         throw InputError(source.load.files.front().path, 0, 0,
                          "the " + source.name + " surface has no triangle");

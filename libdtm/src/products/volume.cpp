@@ -149,12 +149,12 @@ VolumeReport run_volume(const VolumeJob& job, const fs::path& out_dir, const Pro
     if (!(job.swell > 0.0)) {
         throw UsageError("volume: the swell factor must be positive");
     }
-    detail::StagedFolder staging(out_dir);
+    io::AtomicDirectory staging(out_dir);
     VolumeReport report;
-    Surface top = load_surface(job.top, {}, progress.sub(0.0, 0.15));
+    LoadedSurface top = load_surface(job.top, {}, progress.sub(0.0, 0.15));
     report.crs_wkt = top.crs_wkt;
     report.top = top.description();
-    Surface base;
+    LoadedSurface base;
     if (job.base_kind == VolumeBaseKind::surface) {
         base = load_surface(job.base, top.crs_wkt, progress.sub(0.15, 0.3));
         report.base = base.description();
@@ -195,10 +195,10 @@ VolumeReport run_volume(const VolumeJob& job, const fs::path& out_dir, const Pro
                       std::string(job.within.empty() ? "" : " (clipped to the polygon)");
     }
     const Tin* base_tin = job.base_kind == VolumeBaseKind::plane ? nullptr : &base.tin;
-    write_volume_products(top.tin, base_tin, job, staging.path(), report, progress.sub(0.5, 0.99));
+    write_volume_products(top.tin, base_tin, job, staging.staging(), report, progress.sub(0.5, 0.99));
     report.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    staging.commit(report.files);
+    detail::commit_files(staging, report.files);
     progress.report(1.0, "done");
     return report;
 }

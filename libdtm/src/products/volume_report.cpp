@@ -8,38 +8,38 @@
 
 #include "dtm/io/formats/crs.hpp"
 #include "dtm/products/volume.hpp"
-#include "io/formats/detail/json_builder.hpp"
+#include "dtm/io/json_writer.hpp"
 
 namespace dtm::products {
 
 std::string volume_json(const VolumeReport& r) {
     const VolumeResult& v = r.volume;
-    io::detail::JsonBuilder json;
-    json.open('{');
+    io::JsonWriter json;
+    json.begin_object();
     json.value("dtm_version", DTM_VERSION);
     json.value("crs", io::crs_label(r.crs_wkt));
     json.value("convention", "fill: top above base; cut: top below base; net = fill - cut");
-    json.open('{', "top");
+    json.begin_object("top");
     json.value("source", r.top);
     json.value("triangles", r.top_triangles);
-    json.close('}');
-    json.open('{', "base");
+    json.end();
+    json.begin_object("base");
     json.value("source", r.base);
     json.boolean("plane", v.base_is_plane);
     json.value("triangles", r.base_triangles);
-    json.close('}');
+    json.end();
     if (!r.within.empty()) {
         json.value("within", r.within);
     }
-    json.open('{', "volume");
+    json.begin_object("volume");
     json.value("fill", v.fill);
     json.value("cut", v.cut);
     json.value("net", v.net());
     json.value("swell_factor", r.swell);
     json.value("cut_loose", v.cut * r.swell);
     json.value("fill_bank", v.fill / r.swell);
-    json.close('}');
-    json.open('{', "area");
+    json.end();
+    json.begin_object("area");
     json.value("fill", v.fill_area);
     json.value("cut", v.cut_area);
     json.value("unchanged", v.unchanged_area);
@@ -57,37 +57,37 @@ std::string volume_json(const VolumeReport& r) {
     json.value("fill_base_3d", v.fill_area_base_3d);
     json.value("cut_top_3d", v.cut_area_top_3d);
     json.value("cut_base_3d", v.cut_area_base_3d);
-    json.close('}');
-    json.open('{', "extremes");
+    json.end();
+    json.begin_object("extremes");
     json.value("max_fill", v.max_fill);
     json.value("max_fill_x", v.max_fill_at.x);
     json.value("max_fill_y", v.max_fill_at.y);
     json.value("max_cut", v.max_cut);
     json.value("max_cut_x", v.max_cut_at.x);
     json.value("max_cut_y", v.max_cut_at.y);
-    json.close('}');
-    json.open('{', "map");
+    json.end();
+    json.begin_object("map");
     json.value("fill_regions", r.fill_regions);
     json.value("cut_regions", r.cut_regions);
     json.value("zero_lines", r.zero_lines);
     json.value("zero_line_length", r.zero_line_length);
     json.value("difference_cell", r.cell);
-    json.close('}');
+    json.end();
     json.value("pieces", v.pieces);
     json.value("method",
                "exact: overlay of the two TINs (exact predicates), the height difference "
                "integrated in closed form over every piece, split at the zero line");
-    json.open('[', "notes");
+    json.begin_array("notes");
     for (const std::string& n : r.notes) {
         json.value({}, n);
     }
-    json.close(']');
-    json.open('[', "files");
+    json.end();
+    json.begin_array("files");
     for (const std::string& f : r.files) {
         json.value({}, f);
     }
-    json.close(']');
-    json.close('}');
+    json.end();
+    json.end();
     return json.str();
 }
 

@@ -13,7 +13,6 @@
 #include "dtm/core/error.hpp"
 #include "dtm/geom/predicates.hpp"
 
-#include "support/tin_links.hpp"
 
 namespace {
 
@@ -22,7 +21,6 @@ using dtm::Point3;
 using dtm::Tin;
 using dtm::Triangle;
 
-using dtm::test::link_neighbours;
 
 /// n x n jittered grid, spacing 1, z from @p height; cells whose centre is in @p hole are left out.
 template <class F>
@@ -57,7 +55,7 @@ Tin grid_tin(int n, double jitter, std::uint32_t seed, F height, std::array<doub
                      &c = tin.vertices[t.v[2]];
         EXPECT_GT(dtm::geom::orient2d(a, b, c), 0) << "fixture triangle is not counter-clockwise";
     }
-    link_neighbours(tin);
+    dtm::link_neighbours(tin);
     return tin;
 }
 

@@ -70,7 +70,7 @@ GhostMesh triangulate_points(const Points& input, std::size_t cutoff)
     return mesh;
 }
 
-const Point2& at(const GhostMesh& m, VertexId v) { return m.points[v]; }
+Point2 at(const GhostMesh& m, VertexId v) { return m.points[v].xy(); }
 
 void check_structure(const GhostMesh& m, std::size_t n, bool collinear)
 {

@@ -12,7 +12,6 @@
 #include "dtm/core/error.hpp"
 #include "dtm/geom/predicates.hpp"
 
-#include "support/tin_links.hpp"
 
 namespace {
 
@@ -20,7 +19,6 @@ using dtm::Point3;
 using dtm::Tin;
 using dtm::Triangle;
 
-using dtm::test::link_neighbours;
 
 /// A (jittered) regular grid of n x n vertices with spacing h, split into triangles with
 /// alternating diagonals; triangles whose centroid falls in @p hole (x0,y0,x1,y1 relative to the
@@ -67,7 +65,7 @@ Tin grid_tin(double ox,
                      &c = tin.vertices[t.v[2]];
         EXPECT_GT(dtm::geom::orient2d(a, b, c), 0) << "fixture triangle is not counter-clockwise";
     }
-    link_neighbours(tin);
+    dtm::link_neighbours(tin);
     return tin;
 }
 

@@ -145,3 +145,88 @@ TEST(AtomicOutput, RelativeTargetInTheCurrentDirectoryWorks) {
     fs::current_path(previous);
     EXPECT_EQ(read_file(dir / "plain.txt"), "x");
 }
+
+TEST(AtomicDirectory, StagingIsAHiddenSiblingAndTheTargetAppearsOnlyOnCommit) {
+    const ScratchDir dir;
+    dtm::io::AtomicDirectory out(dir / "products/");
+    EXPECT_EQ(out.target(), dir / "products");
+    EXPECT_EQ(out.staging().parent_path(), dir.path());
+    EXPECT_TRUE(out.staging().filename().string().starts_with(".products.tmp-"))
+        << out.staging();
+    write_file(out.add("a.txt"), "a");
+    write_file(out.add("b.txt"), "b");
+    EXPECT_FALSE(fs::exists(dir / "products")) << "target created before commit";
+    EXPECT_EQ(out.files(), (std::vector<std::string>{"a.txt", "b.txt"}));
+    out.commit();
+    EXPECT_EQ(names_in(dir.path()), std::vector<std::string>{"products"});
+    EXPECT_EQ(names_in(dir / "products"), (std::vector<std::string>{"a.txt", "b.txt"}));
+    EXPECT_EQ(read_file(dir / "products" / "b.txt"), "b");
+}
+
+TEST(AtomicDirectory, CommitReplacesFilesOfTheSameNameAndKeepsTheOthers) {
+    const ScratchDir dir;
+    fs::create_directories(dir / "out");
+    write_file(dir / "out" / "a.txt", "old a");
+    write_file(dir / "out" / "keep.txt", "keep");
+    {
+        dtm::io::AtomicDirectory out(dir / "out");
+        write_file(out.add("a.txt"), "new a");
+        EXPECT_EQ(read_file(dir / "out" / "a.txt"), "old a");
+        out.commit();
+    }
+    EXPECT_EQ(read_file(dir / "out" / "a.txt"), "new a");
+    EXPECT_EQ(read_file(dir / "out" / "keep.txt"), "keep");
+    EXPECT_EQ(names_in(dir.path()), std::vector<std::string>{"out"}) << "staging left behind";
+}
+
+TEST(AtomicDirectory, WithoutCommitNothingChangesAndNoStagingIsLeft) {
+    const ScratchDir dir;
+    fs::create_directories(dir / "out");
+    write_file(dir / "out" / "a.txt", "old");
+    {
+        dtm::io::AtomicDirectory out(dir / "out");
+        write_file(out.add("a.txt"), "half-written");
+        write_file(out.add("b.txt"), "new");
+    }
+    EXPECT_EQ(names_in(dir.path()), std::vector<std::string>{"out"});
+    EXPECT_EQ(names_in(dir / "out"), std::vector<std::string>{"a.txt"});
+    EXPECT_EQ(read_file(dir / "out" / "a.txt"), "old");
+}
+
+TEST(AtomicDirectory, NamesAreRecordedOnceInOrderAndCompanionsStayBehind) {
+    const ScratchDir dir;
+    dtm::io::AtomicDirectory out(dir / "out");
+    const fs::path first = out.add("z.txt");
+    EXPECT_EQ(out.add("z.txt"), first);
+    write_file(first, "z");
+    write_file(out.add("a.txt"), "a");
+    write_file(out.staging() / "unlisted.txt", "x");
+    EXPECT_EQ(out.files(), (std::vector<std::string>{"z.txt", "a.txt"}));
+    EXPECT_TRUE(out.contains("a.txt"));
+    EXPECT_FALSE(out.contains("unlisted.txt"));
+    out.commit();
+    EXPECT_EQ(names_in(dir / "out"), (std::vector<std::string>{"a.txt", "z.txt"}));
+    EXPECT_EQ(names_in(dir.path()), std::vector<std::string>{"out"});
+}
+
+TEST(AtomicDirectory, MissingFileFailsTheCommit) {
+    const ScratchDir dir;
+    dtm::io::AtomicDirectory out(dir / "out");
+    (void)out.add("never-written.txt");
+    EXPECT_THROW(out.commit(), dtm::Error);
+}
+
+TEST(AtomicDirectory, TargetThatIsAFileIsUsageError) {
+    const ScratchDir dir;
+    write_file(dir / "out", "a file");
+    EXPECT_THROW(dtm::io::AtomicDirectory{dir / "out"}, dtm::UsageError);
+    EXPECT_EQ(read_file(dir / "out"), "a file");
+    EXPECT_EQ(names_in(dir.path()), std::vector<std::string>{"out"});
+}
+
+TEST(AtomicDirectory, TwoStagingsForTheSameTargetAreDistinct) {
+    const ScratchDir dir;
+    const dtm::io::AtomicDirectory first(dir / "out");
+    const dtm::io::AtomicDirectory second(dir / "out");
+    EXPECT_NE(first.staging(), second.staging());
+}

@@ -1,14 +1,16 @@
 // SPDX-License-Identifier: MIT
-// load_inputs: roles, CRS resolution (S-JTSK, lat/lon -> UTM, --target-crs), heights of 2-D
-// lines and rings, PLY TINs, summaries, and the real hurdville survey.
+// load_inputs: roles, CRS resolution (S-JTSK, lat/lon -> UTM, the target CRS), 2-D lines left
+// without heights, PLY TINs, summaries, and the real hurdville survey.
 #include "dtm/io/inputs.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include "dtm/algo/line_heights.hpp"
 #include "dtm/core/error.hpp"
 #include "dtm/io/formats/crs.hpp"
+#include "dtm/io/formats/ply.hpp"
 #include "dtm/io/tin_file.hpp"
 #include "support/test_support.hpp"
 
@@ -29,7 +31,7 @@ TEST(LoadInputs, CzechListWithCrs5514BecomesKrovakEastNorthWhateverTheColumnOrde
     for (const char* name : {"readers/czech_list.csv", "readers/czech_list_xy.csv",
                              "readers/czech_list_noheader.txt"}) {
         LoadOptions options = files({{dtm::test::data_path(name), InputRole::points}});
-        options.crs = "EPSG:5514";
+        options.crs.default_crs = "EPSG:5514";
         const auto loaded = dtm::io::load_inputs(options);
         ASSERT_GE(loaded.terrain.points.size(), 3u) << name;
         EXPECT_EQ(loaded.terrain.points[0], (dtm::Point3{-745123.45, -1045123.12, 312.45}))
@@ -45,7 +47,7 @@ TEST(LoadInputs, TextFileTakesItsCrsFromASidecarPrj)
     dtm::test::ScratchDir dir;
     dtm::test::write_file(dir / "list.txt",
                           dtm::test::read_file(dtm::test::data_path("readers/czech_list_noheader.txt")));
-    dtm::test::write_file(dir / "list.prj", dtm::io::crs_to_wkt("EPSG:5514", "test"));
+    dtm::test::write_file(dir / "list.prj", dtm::io::crs_to_wkt("EPSG:5514"));
     const auto loaded = dtm::io::load_inputs(files({{dir / "list.txt", InputRole::points}}));
     EXPECT_EQ(loaded.summaries.at(0).crs, "EPSG:5514");
     EXPECT_EQ(loaded.terrain.points.at(0), (dtm::Point3{-745123.45, -1045123.12, 312.45}));
@@ -77,18 +79,41 @@ TEST(LoadInputs, TargetCrsTransformsEveryInput)
 {
     LoadOptions options = files({{dtm::test::data_path("readers/gnss_latlon.csv"),
                                   InputRole::points}});
-    options.target_crs = "EPSG:32634";
+    options.crs.target_crs = "EPSG:32634";
     const auto loaded = dtm::io::load_inputs(options);
     EXPECT_EQ(dtm::io::crs_label(loaded.crs_wkt), "EPSG:32634");
     EXPECT_LT(loaded.terrain.points[0].x, 166000.0 + 50000.0);  // far west of zone 34
+}
+
+/// load_inputs(@p options) throws an OptionError naming @p field, its message starting with
+/// @p start.
+void expect_option_error(const LoadOptions& options, const std::string& field,
+                         const std::string& start)
+{
+    try {
+        (void)dtm::io::load_inputs(options);
+        ADD_FAILURE() << "no exception";
+    } catch (const dtm::OptionError& e) {
+        EXPECT_EQ(e.field(), field);
+        EXPECT_EQ(std::string(e.what()).rfind(start, 0), 0u) << e.what();
+    }
 }
 
 TEST(LoadInputs, GeographicTargetCrsIsRefused)
 {
     LoadOptions options = files({{dtm::test::data_path("readers/gnss_latlon.csv"),
                                   InputRole::points}});
-    options.target_crs = "EPSG:4326";
-    EXPECT_THROW((void)dtm::io::load_inputs(options), dtm::UsageError);
+    options.crs.target_crs = "EPSG:4326";
+    expect_option_error(options, "target_crs", "`target_crs`: expected a projected CRS");
+}
+
+TEST(LoadInputs, UnknownCrsIsAnOptionErrorNamingTheField)
+{
+    dtm::test::ScratchDir dir;
+    dtm::test::write_file(dir / "p.xyz", "1 2 3\n4 5 6\n7 9 10\n");
+    LoadOptions options = files({{dir / "p.xyz", InputRole::points}});
+    options.crs.default_crs = "EPSG:999999999";
+    expect_option_error(options, "default_crs", "`default_crs`: expected a CRS");
 }
 
 TEST(LoadInputs, InputsInAnotherCrsGoIntoTheFirstOnes)
@@ -97,7 +122,7 @@ TEST(LoadInputs, InputsInAnotherCrsGoIntoTheFirstOnes)
     dtm::test::write_file(dir / "a.csv", "x,y,z\n458600,5548500,1\n458700,5548600,2\n");
     dtm::test::write_file(dir / "b.csv", "lat,lon,h\n50.0875,14.4214,3\n");
     LoadOptions options = files({{dir / "a.csv", InputRole::points}});
-    options.crs = "EPSG:32633";
+    options.crs.default_crs = "EPSG:32633";
     options.files.push_back({dir / "b.csv", InputRole::points});
     const auto loaded = dtm::io::load_inputs(options);
     ASSERT_EQ(loaded.terrain.points.size(), 3u);
@@ -128,49 +153,19 @@ TEST(LoadInputs, LabelsStayParallelToThePointsWhicheverInputHasThem)
     }
 }
 
-TEST(LoadInputs, TwoDimensionalHardBreaklineTakesHeightsOfCoincidentPointsOrFails)
+TEST(LoadInputs, LeavesMissingHeightsToTheTriangulator)
 {
     dtm::test::ScratchDir dir;
     dtm::test::write_file(dir / "p.csv", "0.5 0 1\n10.5 0 2\n10.5 10 3\n");
-    dtm::test::write_file(dir / "l.csv", "1,0.5,0\n1,10.5,0\n");
-    dtm::test::write_file(dir / "bad.csv", "1,0.5,0\n1,5.5,5\n");
-    auto loaded = dtm::io::load_inputs(
-        files({{dir / "p.csv", InputRole::points}, {dir / "l.csv", InputRole::breaklines}}));
-    ASSERT_EQ(loaded.terrain.breaklines.size(), 1u);
-    EXPECT_EQ(loaded.terrain.breaklines[0].points[1].z, 2.0);
-    try {
-        (void)dtm::io::load_inputs(
-            files({{dir / "p.csv", InputRole::points}, {dir / "bad.csv", InputRole::breaklines}}));
-        FAIL();
-    } catch (const dtm::InputError& e) {
-        EXPECT_NE(std::string(e.what()).find("bad.csv:1"), std::string::npos) << e.what();
-        EXPECT_NE(std::string(e.what()).find("--soft-breaklines"), std::string::npos);
-    }
-}
-
-TEST(LoadInputs, TwoDimensionalBoundaryTakesTheSurfaceHeight)
-{
-    dtm::test::ScratchDir dir;
-    // plane z = x + 2y over a square; the boundary is inside it, without heights
-    dtm::test::write_file(dir / "p.csv", "0 0 0\n100 0 100\n100 100 300\n0 100 200\n50 50 150\n");
-    dtm::test::write_file(dir / "b.csv", "1,10.5,10\n1,90.5,10\n1,90.5,90\n1,10.5,90\n");
-    const auto loaded = dtm::io::load_inputs(
-        files({{dir / "p.csv", InputRole::points}, {dir / "b.csv", InputRole::boundary}}));
-    ASSERT_EQ(loaded.terrain.boundaries.size(), 1u);
-    for (const auto& p : loaded.terrain.boundaries[0].points) {
-        EXPECT_NEAR(p.z, p.x + 2 * p.y, 1e-9);
-    }
-}
-
-TEST(LoadInputs, InfoModeLeavesMissingHeightsAlone)
-{
-    dtm::test::ScratchDir dir;
     dtm::test::write_file(dir / "l.csv", "1,0.5,0\n1,5.5,5\n");
-    LoadOptions options = files({{dir / "l.csv", InputRole::breaklines}});
-    options.resolve_heights = false;
-    const auto loaded = dtm::io::load_inputs(options);
+    dtm::test::write_file(dir / "b.csv", "1,1.5,1\n1,9.5,1\n1,9.5,8\n");
+    const auto loaded = dtm::io::load_inputs(files({{dir / "p.csv", InputRole::points},
+                                                    {dir / "l.csv", InputRole::breaklines},
+                                                    {dir / "b.csv", InputRole::boundary}}));
     EXPECT_TRUE(std::isnan(loaded.terrain.breaklines.at(0).points[0].z));
-    EXPECT_EQ(loaded.summaries[0].breakline_vertices, 2u);
+    EXPECT_TRUE(std::isnan(loaded.terrain.boundaries.at(0).points[0].z));
+    EXPECT_EQ(loaded.summaries[1].breakline_vertices, 2u);
+    for (const auto& s : loaded.summaries) EXPECT_TRUE(s.warnings.empty());
 }
 
 TEST(LoadInputs, PlyTinInputSetsTinAndPoints)
@@ -207,7 +202,7 @@ TEST(LoadInputs, SummaryCountsDuplicatesBboxAndSkippedLines)
     dtm::test::ScratchDir dir;
     dtm::test::write_file(dir / "p.csv", "x,y,z\n1,2,3\n1,2,4\n5,6,7\nbad,1,2\n");
     LoadOptions options = files({{dir / "p.csv", InputRole::points}});
-    options.skip_bad_lines = true;
+    options.read.skip_bad_lines = true;
     const auto loaded = dtm::io::load_inputs(options);
     const auto& s = loaded.summaries.at(0);
     EXPECT_EQ(s.points, 3u);
@@ -232,7 +227,9 @@ TEST(LoadInputsRealData, HurdvilleSurveyWithBoundaryAndHoles)
     EXPECT_EQ(loaded.terrain.soft_breaklines.size(), 156u);
     ASSERT_EQ(loaded.terrain.boundaries.size(), 1u);
     EXPECT_EQ(loaded.terrain.hole_seeds.size(), 16u);
-    for (const auto& v : loaded.terrain.boundaries[0].points) {
+    dtm::TerrainInput terrain = loaded.terrain;  // the heights come with the triangulation
+    EXPECT_GT(dtm::resolve_line_heights(terrain).from_surface, 0u);
+    for (const auto& v : terrain.boundaries[0].points) {
         EXPECT_GE(v.z, 206.0);
         EXPECT_LE(v.z, 240.5);
     }

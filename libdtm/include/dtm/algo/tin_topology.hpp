@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 /// @file
-/// @brief Topology helpers on a Tin built from faces: neighbour links from shared edges, and the
-/// rings of its border (the outline of the surface: outer boundaries and holes).
+/// @brief The rings of a Tin's border (the outline of the surface: outer boundaries and holes);
+/// neighbour links are dtm::link_neighbours (core/tin.hpp).
 #pragma once
 
 #include <string>
@@ -11,11 +11,6 @@
 #include "dtm/core/tin.hpp"
 
 namespace dtm {
-
-/// Sets every Triangle::n from the faces (an edge and its reverse are neighbours).
-/// Returns an empty string, or a description of the first edge used twice in the same direction
-/// (overlapping or inconsistently oriented faces; such edges stay unlinked).
-std::string link_neighbours(Tin& tin);
 
 /// The border of the TIN (edges without a neighbour) chained into closed rings, each listing its
 /// vertices once, with the surface on the left: outer boundaries counter-clockwise, holes

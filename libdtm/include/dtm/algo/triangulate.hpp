@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "dtm/algo/line_heights.hpp"
 #include "dtm/core/point.hpp"
 #include "dtm/core/progress.hpp"
 #include "dtm/core/terrain.hpp"
@@ -67,10 +68,15 @@ struct TriangulateResult {
     /// For every combined input point (points, then the vertices of breaklines, boundaries, holes
     /// and soft breaklines, in that order), the TIN vertex it became.
     std::vector<VertexIndex> input_to_vertex;
+    /// How line vertices given without a height got one (resolve_line_heights).
+    LineHeightReport line_heights;
 };
 
-/// Constrained Delaunay triangulation of @p input.
-/// @throws InputError fewer than 3 distinct points, all points collinear, an open boundary, ...
+/// Constrained Delaunay triangulation of @p input. Line vertices given without a height (NaN z)
+/// get one first (resolve_line_heights; soft breakline vertices from the surface of everything
+/// else).
+/// @throws InputError fewer than 3 distinct points, all points collinear, an open boundary, a
+/// hard breakline vertex without a height, ...
 /// @throws Cancelled when @p progress asks to stop.
 /// @post verify_topology, verify_constrained_delaunay and verify_constraints hold on the result.
 [[nodiscard]] TriangulateResult triangulate(const TerrainInput& input,

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 /// @file
-/// @brief Typed errors. tools/dtm/main.cpp maps them to exit codes: InputError and UsageError 2,
-/// Cancelled 130, any other Error 1.
+/// @brief Typed errors. tools/dtm/main.cpp maps them to exit codes: InputError and UsageError
+/// (with OptionError) 2, Cancelled 130, any other Error 1.
 #pragma once
 
 #include <cstddef>
@@ -17,10 +17,25 @@ public:
     using std::runtime_error::runtime_error;
 };
 
-/// Bad command-line usage or contradictory options.
+/// Bad usage: an option with a bad value, contradictory options, an unusable output path.
 class UsageError : public Error {
 public:
     using Error::Error;
+};
+
+/// An option has a bad value, or options contradict each other. field() names the option the way
+/// the library spells it, as the member of its options struct ("z_field", "hpgl.scale",
+/// "target_crs"). Library messages (of every error and warning) name options as `field`, in
+/// backquotes, so that a front end can put its own spelling in their place: tools/dtm shows
+/// "--z-field" (tools/dtm/option_names.cpp).
+class OptionError : public UsageError {
+public:
+    /// @param what the whole message, naming the option as `field` where it mentions it.
+    OptionError(std::string field, const std::string& what);
+    [[nodiscard]] const std::string& field() const noexcept { return field_; }
+
+private:
+    std::string field_;
 };
 
 /// Malformed, unreadable or geometrically impossible input. Knows the file and, where it

@@ -32,8 +32,20 @@ struct Triangle {
     std::array<TriangleIndex, 3> n{no_triangle, no_triangle, no_triangle};
 };
 
-/// What a constrained edge came from.
+/// What a constrained edge came from. The values are those of the PLY `kind` byte and the VTK
+/// `constraint_kind` array (docs/formats.md).
 enum class ConstraintKind : std::uint8_t { breakline = 0, soft_breakline = 1, boundary = 2, hole = 3 };
+inline constexpr unsigned constraint_kind_count = 4;
+
+/// The kind's bit in a set of kinds (1 << kind): the triangulator marks each edge with the set of
+/// every kind that runs along it.
+[[nodiscard]] constexpr std::uint8_t constraint_bit(ConstraintKind kind) noexcept
+{
+    return static_cast<std::uint8_t>(1U << static_cast<unsigned>(kind));
+}
+
+/// "breakline", "soft breakline", "boundary", "hole".
+[[nodiscard]] const char* constraint_kind_name(ConstraintKind kind) noexcept;
 
 /// An edge of the TIN that must stay an edge (a piece of a breakline, boundary or hole).
 /// Stored with a < b.
@@ -58,5 +70,31 @@ struct Tin {
 
     [[nodiscard]] const Point3& vertex(VertexIndex i) const { return vertices[i]; }
 };
+
+/// One side of a triangle as a directed edge: side s of triangle t is the edge opposite v[s],
+/// running from v[s + 1] to v[s + 2] (indices mod 3, counter-clockwise around t); n[s] is the
+/// triangle on its other side.
+struct HalfEdge {
+    TriangleIndex triangle = no_triangle;
+    std::uint8_t side = 0;
+    friend bool operator==(const HalfEdge&, const HalfEdge&) = default;
+};
+
+[[nodiscard]] inline VertexIndex origin(const Tin& tin, HalfEdge e)
+{
+    return tin.triangles[e.triangle].v[(e.side + 1U) % 3U];
+}
+[[nodiscard]] inline VertexIndex destination(const Tin& tin, HalfEdge e)
+{
+    return tin.triangles[e.triangle].v[(e.side + 2U) % 3U];
+}
+/// The same edge seen from the triangle across it; triangle == no_triangle on the border.
+[[nodiscard]] HalfEdge twin(const Tin& tin, HalfEdge e);
+
+/// Sets every Triangle::n from the triangles' vertices: two triangles are neighbours when they
+/// share an edge in opposite directions; edges of one triangle only get no_triangle. O(n).
+/// @throws InputError (without a file) if an edge is used twice in the same direction (the
+/// triangles overlap or are not consistently oriented), or there are too many triangles.
+void link_neighbours(Tin& tin);
 
 }  // namespace dtm

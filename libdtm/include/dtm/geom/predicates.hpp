@@ -48,6 +48,28 @@ inline constexpr double incircle_underflow_guard = 0x1p-500;
                                     double dy,
                                     double permanent) noexcept;
 
+/// Stage A bound of orient3d: Shewchuk's (7 + 56 eps) eps, eps^2 term raised for the guard.
+inline constexpr double orient3d_bound_a = (7.0 + 64.0 * epsilon) * epsilon;
+/// Stage A bound of the squared-distance comparison: 2 + 2 roundings per square sum, one
+/// subtraction; (4 + 32 eps) eps covers them with room.
+inline constexpr double distance_bound_a = (4.0 + 32.0 * epsilon) * epsilon;
+inline constexpr double orient3d_underflow_guard = 0x1p-500;
+inline constexpr double distance_underflow_guard = 0x1p-1000;
+
+/// The exact paths of orient3d and compare_distances (predicates_space.cpp).
+[[nodiscard]] int orient3d_exact(const double* a,
+                                 const double* b,
+                                 const double* c,
+                                 const double* d) noexcept;
+[[nodiscard]] int compare_distances_exact(double ax,
+                                          double ay,
+                                          double bx,
+                                          double by,
+                                          double cx,
+                                          double cy,
+                                          double dx,
+                                          double dy) noexcept;
+
 }  // namespace detail
 
 /// Sign of the orientation determinant of (a, b, c):
@@ -62,9 +84,10 @@ inline constexpr double incircle_underflow_guard = 0x1p-500;
     const double det = detleft - detright;
     const double detsum = std::abs(detleft) + std::abs(detright);
     const double bound = detail::orient_bound_a * (detsum + detail::orient_underflow_guard);
-    // NaN/inf from overflow fail the test and go to the exact path.
+    // NaN/inf from overflow fail the test and go to the exact path. A det that passes is not 0
+    // (bound >= 0), so its sign is +1 or -1, which lets `orient2d(...) > 0` compile to det > 0.
     if (std::abs(det) > bound) [[likely]] {
-        return (det > 0.0) - (det < 0.0);
+        return det > 0.0 ? 1 : -1;
     }
     return detail::orient2d_adaptive(ax, ay, bx, by, cx, cy, detsum);
 }
@@ -107,7 +130,7 @@ inline constexpr double incircle_underflow_guard = 0x1p-500;
                              (std::abs(adxbdy) + std::abs(bdxady) + g) * (clift + g);
     const double bound = detail::incircle_bound_a * permanent;
     if (std::abs(det) > bound) [[likely]] {
-        return (det > 0.0) - (det < 0.0);
+        return det > 0.0 ? 1 : -1;  // not 0: see orient2d
     }
     return detail::incircle_adaptive(ax, ay, bx, by, cx, cy, dx, dy, permanent);
 }
@@ -121,6 +144,87 @@ template <class A, class B, class C>
 template <class A, class B, class C, class D>
 [[nodiscard]] inline int incircle(const A& a, const B& b, const C& c, const D& d) noexcept {
     return incircle(a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y);
+}
+
+/// Orientation of four points in space: +1 if d lies below the plane through a, b, c, "below"
+/// meaning the side from which a, b, c do not appear counter-clockwise (a, b, c counter-
+/// clockwise seen from above, d under them), -1 above, 0 coplanar: the sign of
+/// det[a - d; b - d; c - d] (Shewchuk's convention). Exact for every finite double input.
+[[nodiscard]] inline int orient3d(const Point3& a,
+                                  const Point3& b,
+                                  const Point3& c,
+                                  const Point3& d) noexcept {
+#if defined(__clang__)
+#pragma clang fp contract(off)
+#endif
+    const double adx = a.x - d.x, ady = a.y - d.y, adz = a.z - d.z;
+    const double bdx = b.x - d.x, bdy = b.y - d.y, bdz = b.z - d.z;
+    const double cdx = c.x - d.x, cdy = c.y - d.y, cdz = c.z - d.z;
+    const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
+    const double cdxady = cdx * ady, adxcdy = adx * cdy;
+    const double adxbdy = adx * bdy, bdxady = bdx * ady;
+    const double det = adz * (bdxcdy - cdxbdy) + bdz * (cdxady - adxcdy) + cdz * (adxbdy - bdxady);
+    constexpr double g = detail::orient3d_underflow_guard;
+    const double permanent = (std::abs(bdxcdy) + std::abs(cdxbdy) + g) * (std::abs(adz) + g) +
+                             (std::abs(cdxady) + std::abs(adxcdy) + g) * (std::abs(bdz) + g) +
+                             (std::abs(adxbdy) + std::abs(bdxady) + g) * (std::abs(cdz) + g);
+    const double bound = detail::orient3d_bound_a * permanent;
+    if (std::abs(det) > bound) [[likely]] {
+        return (det > 0.0) - (det < 0.0);
+    }
+    const double pa[3] = {a.x, a.y, a.z};
+    const double pb[3] = {b.x, b.y, b.z};
+    const double pc[3] = {c.x, c.y, c.z};
+    const double pd[3] = {d.x, d.y, d.z};
+    return detail::orient3d_exact(pa, pb, pc, pd);
+}
+
+/// orient3d of a, b, c, d lifted to the paraboloid z = x^2 + y^2, with the lifts taken exactly
+/// (they are not doubles): +1 if the lift of d lies below the plane through the lifts of
+/// a, b, c (seen with a, b, c counter-clockwise from above), -1 above, 0 coplanar. The lower
+/// convex hull of the lifted points projects to the Delaunay triangulation (thesis 000
+/// §2.4.4).
+///
+/// Exactly the in-circle sign: adding an affine function of (x, y) to z is a shear of
+/// determinant 1, which changes no orientation, and lift(p) - lift(d) = lift(p - d) +
+/// 2 d.(p - d) is such a function of p; so the lifted determinant equals
+/// det[(a - d, |a - d|^2); (b - d, |b - d|^2); (c - d, |c - d|^2)], which is incircle's. Its
+/// independent evaluation (big integers on the untranslated lifts) and CGAL agree in the tests.
+template <class A, class B, class C, class D>
+[[nodiscard]] inline int orient3d_lifted(const A& a, const B& b, const C& c, const D& d) noexcept {
+    return incircle(a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y);
+}
+
+/// Sign of |a - b|^2 - |c - d|^2 (distances in xy): -1 if a-b is the shorter, 0 equal, +1
+/// longer. Exact for every finite double input.
+[[nodiscard]] inline int compare_distances(double ax,
+                                           double ay,
+                                           double bx,
+                                           double by,
+                                           double cx,
+                                           double cy,
+                                           double dx,
+                                           double dy) noexcept {
+#if defined(__clang__)
+#pragma clang fp contract(off)
+#endif
+    const double abx = ax - bx, aby = ay - by, cdx = cx - dx, cdy = cy - dy;
+    const double l1 = abx * abx + aby * aby;
+    const double l2 = cdx * cdx + cdy * cdy;
+    const double det = l1 - l2;
+    const double bound = detail::distance_bound_a * (l1 + l2 + detail::distance_underflow_guard);
+    if (std::abs(det) > bound) [[likely]] {
+        return (det > 0.0) - (det < 0.0);
+    }
+    return detail::compare_distances_exact(ax, ay, bx, by, cx, cy, dx, dy);
+}
+
+template <class A, class B, class C, class D>
+[[nodiscard]] inline int compare_distances(const A& a,
+                                           const B& b,
+                                           const C& c,
+                                           const D& d) noexcept {
+    return compare_distances(a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y);
 }
 
 }  // namespace dtm::geom

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 /// @file
-/// @brief Writing a Tin to a file chosen by extension (.ply here; other formats register in
-/// src/io/tin_writers.cpp), and reading a dtm PLY TIN back.
+/// @brief Writing a Tin to a file chosen by extension, atomically: the table of TIN writers is in
+/// src/io/tin_file.cpp (.ply formats/ply.hpp, .2dm, .vtp, .gpkg, .shp). Reading TINs goes
+/// through the reader table (reader.hpp).
 #pragma once
 
 #include <filesystem>
@@ -26,19 +27,5 @@ void write_tin(const Tin& tin, const std::filesystem::path& path, const TinWrite
 /// Extensions write_tin() knows, lower case without the dot.
 [[nodiscard]] std::vector<std::string_view> tin_extensions();
 
-/// Writes @p tin as a dtm PLY file to exactly @p path (no temporary; write_tin() adds atomicity).
-/// Binary little endian unless options.ascii. See docs/formats.md for the layout.
-/// @throws Error if the file cannot be written or the TIN refers to missing vertices.
-void write_tin_ply(const Tin& tin, const std::filesystem::path& path,
-                   const TinWriteOptions& options);
-
-struct LoadedTin {
-    Tin tin;
-    std::string crs_wkt;
-};
-
-/// Reads a PLY TIN written by dtm (binary or ASCII): vertices, faces and constrained edges.
-/// Neighbour links are rebuilt. @throws InputError naming the file and what was wrong.
-[[nodiscard]] LoadedTin read_tin_ply(const std::filesystem::path& path);
 
 }  // namespace dtm::io

@@ -41,8 +41,8 @@ struct MethodInput {
 
 /// Options common to every method plus free-form method parameters.
 struct MethodOptions {
-    unsigned threads = 0;      ///< for the parallel methods (0: all cores); never changes the result
-    std::uint64_t seed = 1;    ///< randomised methods: the insertion order is a function of it
+    unsigned threads = 0;    ///< for the parallel methods (0: all cores); never changes the result
+    std::uint64_t seed = 1;  ///< randomised methods: the insertion order is a function of it
     /// Method parameters by name ("super-triangle" = "symbolic|finite", "swap" = "post", ...);
     /// every method documents its keys in the registry and rejects unknown ones (UsageError
     /// naming the key).
@@ -72,10 +72,10 @@ struct VoronoiDiagram {
 using PolygonFaces = std::vector<std::vector<VertexIndex>>;
 
 struct MethodResult {
-    Tin tin;                  ///< the triangulation (vertices: the distinct input points)
-    VoronoiDiagram voronoi;   ///< Voronoi methods only
-    PolygonFaces faces;       ///< pseudo-triangulations only
-    std::vector<Tin> all;     ///< enumeration: every triangulation found
+    Tin tin;                 ///< the triangulation (vertices: the distinct input points)
+    VoronoiDiagram voronoi;  ///< Voronoi methods only
+    PolygonFaces faces;      ///< pseudo-triangulations only
+    std::vector<Tin> all;    ///< enumeration: every triangulation found
     MethodCounters counters;
     /// Method-specific results for --stats as JSON members ("\"triangulations\": 10, ...");
     /// empty when there are none.
@@ -84,7 +84,8 @@ struct MethodResult {
 
 /// A method: @p input in, result out. @throws UsageError for a bad parameter, InputError for an
 /// input the method documents it refuses (e.g. more than 12 points for enumeration), Cancelled.
-using MethodFn = MethodResult (*)(const MethodInput& input, const MethodOptions& options,
+using MethodFn = MethodResult (*)(const MethodInput& input,
+                                  const MethodOptions& options,
                                   const Progress& progress);
 
 }  // namespace dtm::methods

@@ -16,7 +16,7 @@ enum class Family { delaunay, voronoi, optimal, greedy, constrained, pseudo, enu
 enum class Output { triangulation, voronoi, polygon_faces, all_triangulations };
 
 struct MethodInfo {
-    std::string_view name;        ///< registry name, e.g. "incremental-walk"
+    std::string_view name;  ///< registry name, e.g. "incremental-walk"
     Family family;
     std::string_view source;      ///< where in the literature: "000 §3.8", "003 Alg. 1-4", ...
     std::string_view complexity;  ///< as claimed by the source, e.g. "O(n log n) expected"
@@ -24,7 +24,7 @@ struct MethodInfo {
     bool takes_constraints;       ///< honours MethodInput::segments
     bool quadratic;               ///< worst/typical time above n log n: the lab caps its n
     Output output;
-    std::string_view params;      ///< documented parameter keys, "key=a|b ..." (empty: none)
+    std::string_view params;  ///< documented parameter keys, "key=a|b ..." (empty: none)
     MethodFn run;
 };
 

@@ -42,7 +42,7 @@ ProfileReport run_profile(const ProfileJob& job,
                           const Progress& progress = {});
 
 /// Loads the surfaces of @p sources (all in the first one's CRS); @p names receives their names.
-std::vector<Surface> load_surfaces(const std::vector<SurfaceSource>& sources,
+std::vector<LoadedSurface> load_surfaces(const std::vector<SurfaceSource>& sources,
                                    std::vector<std::string>& notes,
                                    const Progress& progress);
 

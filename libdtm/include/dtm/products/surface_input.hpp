@@ -24,7 +24,7 @@ struct SurfaceSource {
     TriangulateOptions triangulation;
 };
 
-struct Surface {
+struct LoadedSurface {
     std::string name;
     Tin tin;
     std::string crs_wkt;
@@ -39,7 +39,7 @@ struct Surface {
 /// Reads and, unless it is a single dtm TIN, triangulates @p source. When @p crs_wkt is given
 /// and the inputs carry another CRS, they are reprojected into it (and transformed_from says
 /// so). @throws InputError (file, line, feature) for unreadable inputs or an empty surface.
-[[nodiscard]] Surface load_surface(const SurfaceSource& source,
+[[nodiscard]] LoadedSurface load_surface(const SurfaceSource& source,
                                    const std::string& crs_wkt = {},
                                    const Progress& progress = {});
 

@@ -6,7 +6,7 @@
 // never meet a constrained edge of another segment while they are inserted, so the only way two
 // of them interact is through the triangles they cross. Each is planned on the current mesh
 // without changing it (the walk along the segment: crossed edges and cavity chains, see
-// mesh_segment.cpp); every vertex whose ring a plan would change is reserved with the segment's
+// mesh_edit_segment.cpp); every vertex whose ring a plan would change is reserved with the segment's
 // priority (its input index, by an atomic minimum); a plan that holds all its reservations is
 // applied, concurrently with the other winners, whose vertex sets are disjoint from it; the rest
 // try again in the next round on the updated mesh. A plan whose vertices are disjoint from every
@@ -211,6 +211,16 @@ void insert_segments(MeshEditor& editor, const GhostMesh& mesh,
     // (that is what the reservations guarantee) without their bookkeeping.
     if (tbb::this_task_arena::max_concurrency() == 1) {
         for (std::size_t k = 0; k < pending.size(); ++k) {
+            // The walks start at scattered vertices of the block: their first reads are
+            // requested a few segments ahead.
+            if (k + 8 < pending.size()) {
+                const InputSegment& ahead = segments[pending[k + 8]];
+                editor.prefetch(ahead.a, ahead.b, false);
+            }
+            if (k + 3 < pending.size()) {
+                const InputSegment& ahead = segments[pending[k + 3]];
+                editor.prefetch(ahead.a, ahead.b, true);
+            }
             const InputSegment& s = segments[pending[k]];
             editor.insert_segment(s.a, s.b, s.bits);
             if ((k & 4095u) == 0) {

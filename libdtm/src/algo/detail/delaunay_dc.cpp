@@ -38,6 +38,7 @@
 #include <atomic>
 #include <string>
 
+#include "algo/detail/kd_order.hpp"
 #include "algo/detail/median_split.hpp"
 #include "dtm/core/error.hpp"
 #include "dtm/geom/predicates.hpp"
@@ -59,23 +60,6 @@ struct Part {
     std::array<std::size_t, 2> spare;
 };
 
-/// Subtrees of at most this many points are not cut alternately but sorted by x once and cut
-/// vertically by index (Guibas and Stolfi's original scheme): at this size the shape of the pieces
-/// hardly changes the merges, and selecting medians for every tiny subtree cost more than all the
-/// larger cuts together.
-constexpr std::size_t strip_size = 16;
-
-/// Strict order of the frame: lexicographic (x, y) for axis 0, (y, -x) for axis 1. Written
-/// without branches, for the median selection.
-template <int Axis>
-struct Before {
-    bool operator()(const KernelPoint& a, const KernelPoint& b) const noexcept
-    {
-        if constexpr (Axis == 0) return (a.x < b.x) | ((a.x == b.x) & (a.y < b.y));
-        return (a.y < b.y) | ((a.y == b.y) & (a.x > b.x));
-    }
-};
-
 /// The order of @p frame (0 or 1), chosen at run time.
 inline bool before(int frame, const KernelPoint& a, const KernelPoint& b) noexcept
 {
@@ -92,29 +76,31 @@ public:
     {
     }
 
-    /// Orders points [lo, hi) as the recursion will cut them: the median split by the cut's order,
-    /// recursively, down to pieces of at most strip_size points, which are sorted by x. Done as a
-    /// pass of its own, before any merge, so the partitioning streams through the points without
-    /// the mesh in the caches.
+    /// Orders points [lo, hi) as the recursion will cut them (kd_order.hpp): median selection
+    /// for the large subtrees, order_subtree (in rank space, in the caches) for the rest. Done as
+    /// a pass of its own, before any merge, so the partitioning streams through the points
+    /// without the mesh in the caches.
     void split(std::size_t lo, std::size_t hi, int cut, std::size_t parent_n)
     {
         const std::size_t n = hi - lo;
-        if (n <= strip_size) {
-            std::sort(pts_ + lo, pts_ + hi, Before<0>{});
+        if (n <= SubtreeScratch::capacity) {
+            order_subtree(pts_ + lo, n, cut, subtree_scratch_.local());
+            // Everything below counts here, whether or not it is one progress unit.
+            if (n > progress_unit_ || parent_n > progress_unit_) report(n);
+            return;
+        }
+        const std::size_t mid = lo + n / 2;
+        if (cut == 0) {
+            select_kth(pts_ + lo, n, n / 2, Before<0>{}, scratch_.local());
         } else {
-            const std::size_t mid = lo + n / 2;
-            if (cut == 0) {
-                select_kth(pts_ + lo, n, n / 2, Before<0>{}, scratch_.local());
-            } else {
-                select_kth(pts_ + lo, n, n / 2, Before<1>{}, scratch_.local());
-            }
-            if (options_.parallel_cutoff > 0 && n > options_.parallel_cutoff) {
-                tbb::parallel_invoke([&] { split(lo, mid, 1 - cut, n); },
-                                     [&] { split(mid, hi, 1 - cut, n); });
-            } else {
-                split(lo, mid, 1 - cut, n);
-                split(mid, hi, 1 - cut, n);
-            }
+            select_kth(pts_ + lo, n, n / 2, Before<1>{}, scratch_.local());
+        }
+        if (options_.parallel_cutoff > 0 && n > options_.parallel_cutoff) {
+            tbb::parallel_invoke([&] { split(lo, mid, 1 - cut, n); },
+                                 [&] { split(mid, hi, 1 - cut, n); });
+        } else {
+            split(lo, mid, 1 - cut, n);
+            split(mid, hi, 1 - cut, n);
         }
         if (n <= progress_unit_ && parent_n > progress_unit_) report(n);
     }
@@ -420,6 +406,7 @@ private:
     std::size_t progress_unit_;
     std::atomic<std::size_t> done_{0};
     tbb::enumerable_thread_specific<SelectScratch<KernelPoint>> scratch_;
+    tbb::enumerable_thread_specific<SubtreeScratch> subtree_scratch_;
 };
 
 }  // namespace

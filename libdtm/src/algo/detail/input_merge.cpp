@@ -8,7 +8,11 @@
 // DuplicateRule over the points that carry a height (soft breakline vertices carry none).
 #include "algo/detail/input_merge.hpp"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
+
 #include <algorithm>
+#include <functional>
 #include <limits>
 #include <cmath>
 #include <string>
@@ -69,7 +73,7 @@ void add_polylines(const std::vector<Polyline>& lines, std::uint8_t bits, bool r
 }
 
 /// rep[i]: the combined index of the point i is merged into (rep[i] == i when kept).
-using Representatives = std::vector<VertexIndex>;
+using Representatives = BigArray<VertexIndex>;
 
 Representatives find_representatives(const std::vector<Point3>& pts, double snap)
 {
@@ -163,12 +167,20 @@ MergedInput merge_input(const TerrainInput& input, const TriangulateOptions& opt
 MergedInput merge_input(TerrainInput&& input, const TriangulateOptions& options)
 {
     Combined c;
-    for (std::size_t i = 0; i < input.points.size(); ++i) {
-        const Point3& p = input.points[i];
-        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
-            throw InputError("point " + std::to_string(i + 1) +
-                             " has a coordinate that is not a finite number");
-        }
+    // The first point with a coordinate that is not finite, found by all threads.
+    const std::size_t bad = tbb::parallel_reduce(
+        tbb::blocked_range<std::size_t>(0, input.points.size(), 1 << 16), input.points.size(),
+        [&](const auto& r, std::size_t found) {
+            for (std::size_t i = r.begin(); i < r.end() && i < found; ++i) {
+                const Point3& p = input.points[i];
+                if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) return i;
+            }
+            return found;
+        },
+        [](std::size_t a, std::size_t b) { return std::min(a, b); });
+    if (bad < input.points.size()) {
+        throw InputError("point " + std::to_string(bad + 1) +
+                         " has a coordinate that is not a finite number");
     }
     c.points = std::move(input.points);
     input.points = {};
@@ -193,8 +205,13 @@ MergedInput merge_input(TerrainInput&& input, const TriangulateOptions& options)
         throw InputError("more than " + std::to_string(no_vertex - 1) + " input points");
     }
     const Representatives rep = find_representatives(c.points, options.snap_distance);
-    std::size_t kept_count = 0;
-    for (std::size_t i = 0; i < rep.size(); ++i) kept_count += rep[i] == i ? 1 : 0;
+    const std::size_t kept_count = tbb::parallel_reduce(
+        tbb::blocked_range<std::size_t>(0, rep.size(), 1 << 16), std::size_t{0},
+        [&](const auto& r, std::size_t kept) {
+            for (std::size_t i = r.begin(); i < r.end(); ++i) kept += rep[i] == i ? 1 : 0;
+            return kept;
+        },
+        std::plus<>());
     if (kept_count == c.points.size()) {
         // Nothing to merge (the usual case): the points become the vertices as they are, unless
         // the reader's growth left much unused capacity in the largest array of the run.

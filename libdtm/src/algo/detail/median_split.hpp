@@ -12,16 +12,17 @@
 /// partitions with a branch-free loop: the comparison result only moves indices. std::nth_element
 /// loses most of its time on mispredicted branches in its partition loops (one in two for
 /// coordinates). Ranges that fit a per-thread scratch buffer are scattered into it from both ends
-/// and copied back (no store-to-load dependency); larger ones use an in-place branch-free Lomuto
-/// pass. Small ranges fall back to std::nth_element.
+/// and copied back (no store-to-load dependency); larger ones are partitioned in place by blocks.
+/// Small ranges fall back to std::nth_element.
 ///
 /// References: R. W. Floyd, R. L. Rivest, "Expected time bounds for selection", CACM 18(3), 1975
 /// (pivots from a sample); S. Edelkamp, A. Weiss, "BlockQuicksort: avoiding branch mispredictions
-/// in quicksort", ESA 2016 (branch-free partitioning).
+/// in quicksort", ESA 2016 (branch-free and block partitioning).
 #pragma once
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <cstring>
 #include <memory>
 #include <type_traits>
@@ -39,6 +40,59 @@ struct SelectScratch {
         return data.get();
     }
 };
+
+/// Partitions a[0, n) in place by `less(x, pivot)` (block partitioning after Edelkamp and Weiss):
+/// blocks at both ends are classified branch-free into lists of misplaced offsets, which are then
+/// swapped pairwise. Every element is read once and about half of them are written once, where
+/// an in-place Lomuto pass reads and writes every element twice; for the large ranges that stream
+/// from memory that halves the traffic. @return the number of elements before.
+template <class T, class Less>
+std::size_t partition_blocks(T* a, std::size_t n, const T& pivot, Less less)
+{
+    constexpr std::size_t block = 128;
+    std::uint8_t misplaced_left[block];
+    std::uint8_t misplaced_right[block];
+    std::size_t l = 0;  // a[0, l) before the pivot
+    std::size_t r = n;  // a[r, n) not before it
+    std::size_t count_left = 0, count_right = 0, first_left = 0, first_right = 0;
+    while (r - l > 2 * block) {
+        if (count_left == 0) {
+            first_left = 0;
+            for (std::size_t i = 0; i < block; ++i) {
+                misplaced_left[count_left] = static_cast<std::uint8_t>(i);
+                count_left += less(a[l + i], pivot) ? 0 : 1;
+            }
+        }
+        if (count_right == 0) {
+            first_right = 0;
+            for (std::size_t i = 0; i < block; ++i) {
+                misplaced_right[count_right] = static_cast<std::uint8_t>(i);
+                count_right += less(a[r - 1 - i], pivot) ? 1 : 0;
+            }
+        }
+        const std::size_t swaps = std::min(count_left, count_right);
+        for (std::size_t k = 0; k < swaps; ++k) {
+            std::swap(a[l + misplaced_left[first_left + k]],
+                      a[r - 1 - misplaced_right[first_right + k]]);
+        }
+        count_left -= swaps;
+        count_right -= swaps;
+        first_left += swaps;
+        first_right += swaps;
+        if (count_left == 0) l += block;
+        if (count_right == 0) r -= block;
+    }
+    // The rest, at most two blocks: a branch-free Lomuto pass.
+    std::size_t store = l;
+    for (std::size_t i = l; i < r; ++i) {
+        const T v = a[i];
+        const bool before = less(v, pivot);
+        a[i] = a[store];
+        a[store] = v;
+        store += before ? 1 : 0;
+    }
+    return store;
+}
 
 /// Partitions a[0, n) by `less(x, pivot)`, branch-free. @return the number of elements before.
 template <class T, class Less>
@@ -61,15 +115,7 @@ std::size_t partition_branch_free(T* a, std::size_t n, const T& pivot, Less less
         std::memcpy(static_cast<void*>(a), out, n * sizeof(T));
         return l;
     }
-    std::size_t store = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-        const T v = a[i];
-        const bool before = less(v, pivot);
-        a[i] = a[store];
-        a[store] = v;
-        store += before ? 1 : 0;
-    }
-    return store;
+    return partition_blocks(a, n, pivot, less);
 }
 
 /// Moves the k smallest of a[0, n) (pairwise distinct under the strict order `less`) to the front.

@@ -61,6 +61,20 @@ MeshEditor::MeshEditor(GhostMesh& mesh, std::vector<double>& z, double z_toleran
                       });
 }
 
+void MeshEditor::prefetch(VertexId a, VertexId b, bool star) const noexcept
+{
+    if (!star) {
+        __builtin_prefetch(&vertex_edge_[a]);
+        __builtin_prefetch(&mesh_.points[a]);
+        __builtin_prefetch(&mesh_.points[b]);
+        return;
+    }
+    const HalfEdge e = vertex_edge_[a];
+    if (e == no_half_edge) return;
+    __builtin_prefetch(&mesh_.tris[tri_of(e)]);
+    __builtin_prefetch(&mesh_.bits[tri_of(e)]);
+}
+
 void MeshEditor::set_triangle(std::size_t t, VertexId a, VertexId b, VertexId c)
 {
     mesh_.set_triangle(t, a, b, c);
@@ -268,7 +282,8 @@ VertexId MeshEditor::insert_point(Point2 p, double z, HalfEdge hint)
 
 void MeshEditor::insert_segment(VertexId a, VertexId b, std::uint8_t bits)
 {
-    std::vector<Work> stack{{a, b, bits}};
+    std::vector<Work>& stack = work_scratch_;
+    stack.assign(1, {a, b, bits});
     std::size_t steps = 0;
     const std::size_t limit = 64 * mesh_.points.size() + 1'000'000;
     while (!stack.empty()) {

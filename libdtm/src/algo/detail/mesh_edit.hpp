@@ -48,7 +48,11 @@ public:
 
     /// Makes the segment a-b a chain of constrained edges with the given ConstraintBits,
     /// splitting it at vertices it passes through and at crossings with other constraints.
+    /// Not for several threads at once.
     void insert_segment(VertexId a, VertexId b, std::uint8_t bits);
+    /// Hints the caches at what insert_segment(a, b) reads first, in two steps a few segments
+    /// apart: the vertex's edge and both points, then (@p star) the triangle of that edge.
+    void prefetch(VertexId a, VertexId b, bool star) const noexcept;
 
     [[nodiscard]] const std::vector<Crossing>& crossings() const noexcept { return crossings_; }
 
@@ -136,6 +140,7 @@ private:
     std::vector<HalfEdge> vertex_edge_;
     std::vector<Crossing> crossings_;
     PiecePlan piece_scratch_;  ///< insert_piece's plan, its memory kept from piece to piece
+    std::vector<Work> work_scratch_;  ///< insert_segment's stack, kept likewise
     std::uint64_t rng_ = 0x9e3779b97f4a7c15ull;
 };
 

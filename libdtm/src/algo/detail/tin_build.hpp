@@ -26,7 +26,7 @@ struct TinDraft {
     }
 };
 
-/// The real triangles of @p ghosts as the Tin's, in place (ghost_mesh.cpp), with their
+/// The real triangles of @p ghosts as the Tin's, in place (tin_build_triangles.cpp), with their
 /// constraint bits when ghosts.bits is not empty; vertex v of the kernel becomes
 /// ghosts.points[v].id. Consumes @p ghosts.
 [[nodiscard]] TinDraft ghost_mesh_to_tin(GhostMesh& ghosts, std::vector<Point3> vertices);

@@ -193,6 +193,34 @@ inline int expansion_sum(int elen, const double* e, int flen, const double* f, d
     return n;
 }
 
+/// h = e * f for expansions e (elen <= 16), f; Cap >= 2 * elen * flen. Returns the length of
+/// h. A plain product by scale-expansion and summing, for the rare exact stages.
+template <int Cap>
+int expansion_product(int elen, const double* e, int flen, const double* f, double* h) noexcept {
+    double part[2 * 16];
+    double acc[Cap];
+    int hlen = scale_expansion<compile_time_fma>(elen, e, f[0], h);
+    for (int j = 1; j < flen; ++j) {
+        const int plen = scale_expansion<compile_time_fma>(elen, e, f[j], part);
+        for (int i = 0; i < hlen; ++i) {
+            acc[i] = h[i];
+        }
+        hlen = expansion_sum(hlen, acc, plen, part, h);
+    }
+    return hlen;
+}
+
+/// An exact coordinate difference a - b as a two-component expansion: tail, rounded value.
+struct ExactDiff {
+    double v[2];
+};
+
+inline ExactDiff exact_diff(double a, double b) noexcept {
+    ExactDiff d{};
+    two_diff(a, b, d.v[1], d.v[0]);
+    return d;
+}
+
 /// Approximate value of an expansion (sum of its components, largest last).
 inline double estimate(int n, const double* e) noexcept {
     double q = e[0];

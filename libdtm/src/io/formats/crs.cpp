@@ -57,14 +57,13 @@ std::string srs_to_wkt(const OGRSpatialReference& srs)
     return wkt;
 }
 
-std::string crs_to_wkt(std::string_view definition, std::string_view what)
+std::string crs_to_wkt(std::string_view definition)
 {
     OGRSpatialReference srs;
     srs.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
     const std::string def(definition);
     if (srs.SetFromUserInput(def.c_str()) != OGRERR_NONE) {
-        throw UsageError(std::string(what) + ": expected a CRS (EPSG:xxxx, WKT or PROJ), found '" +
-                         def + "'");
+        throw UsageError("expected a CRS (EPSG:xxxx, WKT or PROJ), found '" + def + "'");
     }
     return srs_to_wkt(srs);
 }

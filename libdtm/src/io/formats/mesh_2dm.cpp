@@ -143,6 +143,11 @@ Tin read_2dm(const std::filesystem::path& path) {
     if (reader.line_number == 0) {
         throw InputError(path, 0, 0, "2dm: empty file, expected MESH2D");
     }
+    try {
+        link_neighbours(tin);
+    } catch (const InputError& e) {
+        throw InputError(path, 0, 0, "2dm: " + std::string(e.what()));
+    }
     return tin;
 }
 

@@ -2,7 +2,7 @@
 // OGR vector sources as terrain input: every feature's geometry is flattened into points,
 // polylines (open or closed rings) and hole seeds according to the role of the input file.
 // Curves are linearised with OGR's defaults. Heights come from the vertices, or from one
-// attribute per feature (--z-field, e.g. contour lines as input).
+// attribute per feature (ReadOptions::z_field, e.g. contour lines as input).
 #include "dtm/io/formats/ogr.hpp"
 
 #include <gdal_priv.h>
@@ -87,7 +87,7 @@ void OgrCollector::add_point(const OGRPoint& p, double z_override, const std::st
             if (std::isnan(z)) {
                 throw InputError(file_.path, 0, 0,
                                  source + ": expected a point with a height (PointZ, or give "
-                                          "--z-field NAME), found a 2-D point");
+                                          "`z_field` NAME), found a 2-D point");
             }
             result_.terrain.points.push_back({p.getX(), p.getY(), z});
             break;
@@ -196,12 +196,12 @@ double feature_z(const OGRFeature& f, int z_index, const InputFile& file, const 
 {
     if (z_index < 0) return no_z;
     if (!f.IsFieldSetAndNotNull(z_index)) {
-        throw InputError(file.path, 0, 0, src + ": expected a height in the --z-field, found none");
+        throw InputError(file.path, 0, 0, src + ": expected a height in the `z_field`, found none");
     }
     return f.GetFieldAsDouble(z_index);
 }
 
-int z_field_index(OGRLayer& layer, const LoadOptions& options, const InputFile& file)
+int z_field_index(OGRLayer& layer, const ReadOptions& options, const InputFile& file)
 {
     if (options.z_field.empty()) return -1;
     const int index = layer.GetLayerDefn()->GetFieldIndex(options.z_field.c_str());
@@ -211,11 +211,11 @@ int z_field_index(OGRLayer& layer, const LoadOptions& options, const InputFile& 
         names += (i ? ", " : "") + std::string(layer.GetLayerDefn()->GetFieldDefn(i)->GetNameRef());
     }
     throw InputError(file.path, 0, 0,
-                     "--z-field: expected a field named '" + options.z_field + "' in layer '" +
+                     "`z_field`: expected a field named '" + options.z_field + "' in layer '" +
                          layer.GetName() + "', found: " + (names.empty() ? "no fields" : names));
 }
 
-void read_layer(OGRLayer& layer, const InputFile& file, const LoadOptions& options,
+void read_layer(OGRLayer& layer, const InputFile& file, const ReadOptions& options,
                 OgrCollector& collector, const Progress& progress)
 {
     if (!options.where.empty()) {
@@ -224,7 +224,7 @@ void read_layer(OGRLayer& layer, const InputFile& file, const LoadOptions& optio
         const OGRErr err = layer.SetAttributeFilter(options.where.c_str());
         CPLPopErrorHandler();
         if (err != OGRERR_NONE) {
-            throw InputError(file.path, 0, 0, "--where: expected an attribute filter for layer '" +
+            throw InputError(file.path, 0, 0, "`where`: expected an attribute filter for layer '" +
                                                   std::string(layer.GetName()) + "': " +
                                                   last_gdal_error());
         }
@@ -248,14 +248,14 @@ void read_layer(OGRLayer& layer, const InputFile& file, const LoadOptions& optio
     if (CPLGetLastErrorType() >= CE_Failure) {
         throw InputError(file.path, 0, 0,
                          std::string("reading layer '") + layer.GetName() + "' failed" +
-                             (options.where.empty() ? "" : " (check --where)") + ": " +
+                             (options.where.empty() ? "" : " (check `where`)") + ": " +
                              last_gdal_error());
     }
 }
 
 }  // namespace
 
-ReadResult read_ogr(const InputFile& file, const LoadOptions& options, const Progress& progress)
+ReadResult read_ogr(const InputFile& file, const ReadOptions& options, const Progress& progress)
 {
     DatasetPtr ds = open_vector(file.path);
     ReadResult result;
@@ -267,7 +267,7 @@ ReadResult read_ogr(const InputFile& file, const LoadOptions& options, const Pro
         if (layer == nullptr) {
             std::string names;
             for (OGRLayer* l : ds->GetLayers()) names += (names.empty() ? "" : ", ") + std::string(l->GetName());
-            throw InputError(file.path, 0, 0, "--layer: expected one of the layers (" + names +
+            throw InputError(file.path, 0, 0, "`layer`: expected one of the layers (" + names +
                                                   "), found '" + options.layer + "'");
         }
         layers.push_back(layer);
@@ -284,6 +284,13 @@ ReadResult read_ogr(const InputFile& file, const LoadOptions& options, const Pro
     }
     collector.finish_warnings();
     result.summary.crs = crs_label(result.crs_wkt);
+    return result;
+}
+
+ReadResult read_ogr_text(const InputFile& file, const ReadOptions& options, const Progress& progress)
+{
+    ReadResult result = read_ogr(file, options, progress);
+    result.summary.format = "text (OGR, geometry column)";
     return result;
 }
 

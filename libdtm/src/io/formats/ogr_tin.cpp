@@ -16,6 +16,7 @@
 #include <string>
 
 #include "dtm/core/error.hpp"
+#include "dtm/io/extension.hpp"
 
 namespace dtm::io {
 namespace {
@@ -26,16 +27,14 @@ struct DatasetCloser {
 using DatasetPtr = std::unique_ptr<GDALDataset, DatasetCloser>;
 
 const char* driver_for(const std::filesystem::path& path) {
-    std::string ext = path.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    if (ext == ".gpkg") {
+    const std::string ext = lower_extension(path);
+    if (ext == "gpkg") {
         return "GPKG";
     }
-    if (ext == ".shp") {
+    if (ext == "shp") {
         return "ESRI Shapefile";
     }
-    throw UsageError("ogr tin: unknown extension '" + ext + "' for " + path.string() +
+    throw UsageError("ogr tin: unknown extension '." + ext + "' for " + path.string() +
                      " (known: .gpkg, .shp)");
 }
 

@@ -15,8 +15,8 @@ class OGRSpatialReference;
 namespace dtm::io {
 
 /// WKT (WKT2) of a CRS given by the user: "EPSG:5514", WKT, PROJ string, ...
-/// @throws UsageError naming @p what (e.g. "--crs") if GDAL/PROJ does not know it.
-[[nodiscard]] std::string crs_to_wkt(std::string_view definition, std::string_view what);
+/// @throws UsageError if GDAL/PROJ does not know it.
+[[nodiscard]] std::string crs_to_wkt(std::string_view definition);
 
 /// WKT2 of an OGR spatial reference.
 [[nodiscard]] std::string srs_to_wkt(const OGRSpatialReference& srs);

@@ -6,16 +6,15 @@
 #pragma once
 
 #include "dtm/core/progress.hpp"
-#include "dtm/io/inputs.hpp"
 #include "dtm/io/reader.hpp"
 
 namespace dtm::io {
 
 /// Reads one HPGL plot file with options.hpgl.
 /// @throws InputError ("<file>: byte N: ...") on corrupt data unless options.skip_bad_lines,
-///         in which case the problem becomes a warning and reading goes on; UsageError on
+///         in which case the problem becomes a warning and reading goes on; OptionError on
 ///         contradictory georeferencing options; Cancelled.
-[[nodiscard]] ReadResult read_hpgl(const InputFile& file, const LoadOptions& options,
+[[nodiscard]] ReadResult read_hpgl(const InputFile& file, const ReadOptions& options,
                                    const Progress& progress = {});
 
 }  // namespace dtm::io

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 /// @file
-/// @brief Options of the HPGL plan reader (pen roles, spot heights, georeferencing), and the
-/// parsers of their command-line spellings (shared by the CLI and the tests).
+/// @brief Options of the HP-GL plan reader: what each pen's lines are, which labels are spot
+/// heights, and how plotter units become ground coordinates.
 #pragma once
 
 #include <map>
@@ -16,24 +16,23 @@ namespace dtm::io {
 enum class PenRole { points, breakline, soft_breakline, boundary, hole, ignore };
 
 struct HpglOptions {
-    std::map<int, PenRole> pens;  ///< --hpgl-pens 2=breakline,3=boundary,...; unnamed pens: ignore
-    /// --hpgl-height-pens 5,6: pens whose integer labels are heights too (decimal labels such as
-    /// 312.45 or 312,45 are heights on every pen).
+    std::map<int, PenRole> pens;  ///< role of each pen's lines; pens not listed: ignore
+    /// Pens whose integer labels are heights too (decimal labels such as 312.45 or 312,45 are
+    /// heights on every pen).
     std::vector<int> height_pens;
-    double marker_radius_mm = 3.0;          ///< --hpgl-marker-radius (millimetres on paper)
-    double scale = 0.0;                     ///< --hpgl-scale (500 for 1:500); 0 = not set
-    double origin_e = 0.0, origin_n = 0.0;  ///< --hpgl-origin E,N: ground of plotter 0,0
-    double rotation_deg = 0.0;  ///< --hpgl-rotation: counter-clockwise angle of the plan's x axis from east
-    std::string control_file;   ///< --hpgl-control FILE (CSV px,py,E,N; px,py in plotter units)
+    /// Search radius in paper millimetres from a height label to its marker, and from a line
+    /// vertex to a spot height.
+    double marker_radius_mm = 3.0;
+    double scale = 0.0;                     ///< plan scale denominator (500 for 1:500); 0 = not set
+    double origin_e = 0.0, origin_n = 0.0;  ///< ground E, N of plotter 0,0 (with scale)
+    /// Counter-clockwise angle in degrees of the plan's x axis from grid east (with scale).
+    double rotation_deg = 0.0;
+    /// CSV of control points px,py,E,N (px, py in plotter units): 2 give a similarity, 3 or more
+    /// a least-squares affine transform; an alternative to scale.
+    std::string control_file;
 };
 
-/// Parses "2=breakline,3=boundary,4=hole,1=ignore". Role names: points, breakline,
-/// soft-breakline (or soft_breakline, soft), boundary, hole, ignore.
-/// @throws UsageError naming the offending item.
-[[nodiscard]] std::map<int, PenRole> parse_pen_roles(std::string_view text);
-/// Parses a pen list "5,6". @throws UsageError.
-[[nodiscard]] std::vector<int> parse_pen_list(std::string_view text);
-/// Name of a role as parse_pen_roles spells it.
+/// Name of a role in messages: points, breakline, soft-breakline, boundary, hole, ignore.
 [[nodiscard]] std::string_view pen_role_name(PenRole role) noexcept;
 
 }  // namespace dtm::io

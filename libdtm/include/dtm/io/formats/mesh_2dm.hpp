@@ -18,10 +18,11 @@ namespace dtm::io {
 /// @throws Error if the file cannot be written.
 void write_2dm(const Tin& tin, const std::filesystem::path& path, const TinWriteOptions& options);
 
-/// Reads the ND and E3T lines of a 2DM file (other cards are skipped) into a Tin without
-/// neighbour links or constraints; ids are mapped back to 0-based indices.
+/// Reads the ND and E3T lines of a 2DM file (other cards are skipped) into a Tin with its
+/// neighbour links (link_neighbours) and no constraints (2DM has none); ids are mapped back to
+/// 0-based indices.
 /// @throws InputError with the line number for a malformed ND/E3T line, an unknown node id, or a
-/// missing MESH2D header.
+/// missing MESH2D header; naming the edge when two elements overlap.
 [[nodiscard]] Tin read_2dm(const std::filesystem::path& path);
 
 }  // namespace dtm::io

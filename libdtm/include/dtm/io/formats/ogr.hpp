@@ -5,12 +5,11 @@
 #pragma once
 
 #include "dtm/core/progress.hpp"
-#include "dtm/io/inputs.hpp"
 #include "dtm/io/reader.hpp"
 
 namespace dtm::io {
 
-/// Reads the layers of one OGR source (LoadOptions::layer selects one, ::where filters features,
+/// Reads the layers of one OGR source (ReadOptions::layer selects one, ::where filters features,
 /// ::z_field gives heights). By role:
 /// - points (positional input): points and multipoints are points; lines and polygon rings are
 ///   hard breaklines (a mixed DXF layer gives both);
@@ -21,7 +20,12 @@ namespace dtm::io {
 /// Vertices without a height get NaN z (the loader fills them or reports them).
 /// @throws InputError naming the file (and feature) on unreadable data, a missing layer or
 ///         field, a bad filter, or points without heights; Cancelled.
-[[nodiscard]] ReadResult read_ogr(const InputFile& file, const LoadOptions& options,
+[[nodiscard]] ReadResult read_ogr(const InputFile& file, const ReadOptions& options,
                                   const Progress& progress = {});
+
+/// A delimited text file with a WKT or geometry column, read by OGR's CSV driver (as read_ogr;
+/// the summary's format says so).
+[[nodiscard]] ReadResult read_ogr_text(const InputFile& file, const ReadOptions& options,
+                                       const Progress& progress = {});
 
 }  // namespace dtm::io

@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: MIT
+/// @file
+/// @brief The report of products::build() (report.json): inputs, what became of every input
+/// point, TIN counts, CRS, extent, z range, areas, breakline conflicts, each product's figures
+/// and the timings per stage. A new product adds its section here and in src/products/report.cpp.
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "dtm/algo/surface_stats.hpp"
+#include "dtm/algo/volume.hpp"
+#include "dtm/algo/triangulate.hpp"
+#include "dtm/core/grid.hpp"
+#include "dtm/io/inputs.hpp"
+
+namespace dtm::products {
+
+struct StageTime {
+    std::string stage;
+    double seconds = 0.0;
+};
+
+struct BuildReport {
+    // what was read and built
+    std::vector<io::InputSummary> inputs;
+    std::size_t skipped_lines = 0;  ///< bad input lines skipped (ReadOptions::skip_bad_lines)
+    std::string crs_wkt;
+    InputAccounting accounting;
+    TriangulateStats triangulation;
+    std::vector<ConstraintConflict> conflicts;
+    SurfaceStats surface;
+    // the DEM (step "dem": dem.tif, hillshade.tif)
+    GridSpec dem;
+    std::string cell_rule;  ///< how the cell size was chosen (given, or the automatic rule)
+    // the contours (step "contours": contours.gpkg)
+    double contour_interval = 0.0;
+    std::size_t index_every = 0;
+    std::string interval_rule;
+    std::size_t contour_levels = 0;
+    std::size_t contour_lines = 0;
+    // the volume against the base (step "volume": volume/), when one was given
+    bool has_volume = false;
+    VolumeResult volume;
+    std::string volume_base;  ///< the base's files
+    // the run
+    std::vector<StageTime> timings;
+    std::vector<std::string> outputs;  ///< file names written into the output folder
+};
+
+/// Conflicts listed individually in the report (the count is always complete).
+inline constexpr std::size_t report_conflict_limit = 1000;
+
+/// The report as a JSON document (UTF-8, 2-space indentation).
+[[nodiscard]] std::string report_json(const BuildReport& report);
+
+/// Writes report_json(report) to exactly @p path (the caller provides atomicity).
+/// @throws Error if the file cannot be written.
+void write_report(const BuildReport& report, const std::filesystem::path& path);
+
+}  // namespace dtm::products

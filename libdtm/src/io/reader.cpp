@@ -1,0 +1,92 @@
+// SPDX-License-Identifier: MIT
+// The explicit reader table: every input format dtm reads, visible in one place (no static
+// self-registration, so it is safe in a static library). A file goes to the first row whose
+// extensions hold its own and whose sniff (if any) accepts its first bytes, so a row that looks
+// at the content comes before the plain row of the same extensions: a text file with a WKT
+// column goes to OGR before the text reader sees it. A new format is one row (and its
+// formats/<name>.hpp/.cpp); a reader may return a TIN (ReadResult::tin) as well as points and
+// lines.
+#include <algorithm>
+#include <array>
+#include <fstream>
+#include <string>
+
+#include "dtm/core/error.hpp"
+#include "dtm/io/extension.hpp"
+#include "dtm/io/formats/csv.hpp"
+#include "dtm/io/formats/hpgl.hpp"
+#include "dtm/io/formats/ogr.hpp"
+#include "dtm/io/formats/ply.hpp"
+#include "dtm/io/reader.hpp"
+
+namespace dtm::io {
+namespace {
+
+bool text_has_geometry_column(const FileHead& head) { return csv_has_geometry_column(head.bytes); }
+
+constexpr std::array<std::string_view, 1> ply_ext{"ply"};
+constexpr std::array<std::string_view, 5> csv_ext{"csv", "txt", "xyz", "pts", "asc"};
+constexpr std::array<std::string_view, 5> hpgl_ext{"hpgl", "plt", "hgl", "hpg", "prn"};
+constexpr std::array<std::string_view, 14> ogr_ext{"shp",  "gpkg", "geojson", "json", "dxf",
+                                                   "kml",  "gml",  "sqlite",  "fgb",  "gpx",
+                                                   "tab",  "mif",  "vfk",     "gdb"};
+constexpr std::array<ReaderInfo, 5> reader_table{{
+    {"ply", "dtm PLY TIN (the surface itself: vertices, triangles, constrained edges, CRS)",
+     ply_ext, nullptr, &read_ply},
+    {"csv-wkt", "Delimited text with a WKT or geometry column, read by OGR", csv_ext,
+     &text_has_geometry_column, &read_ogr_text},
+    {"csv", "Delimited text points or shapeid,x,y[,z] polylines", csv_ext, nullptr, &read_csv},
+    {"hpgl", "HP-GL/HP-GL2 plotter plans: spot heights, breaklines by pen", hpgl_ext, nullptr,
+     &read_hpgl},
+    {"ogr", "Any OGR vector source: points, lines, polygons", ogr_ext, nullptr, &read_ogr},
+}};
+
+/// Bytes a sniff may look at.
+constexpr std::size_t head_size = std::size_t{64} << 10;
+
+bool takes_extension(const ReaderInfo& r, const std::string& ext)
+{
+    return r.extensions.empty() ||
+           std::find(r.extensions.begin(), r.extensions.end(), ext) != r.extensions.end();
+}
+
+}  // namespace
+
+std::span<const ReaderInfo> readers() { return reader_table; }
+
+const ReaderInfo& find_reader(const FileHead& head)
+{
+    for (const ReaderInfo& r : reader_table) {
+        if (takes_extension(r, head.extension) && (r.sniff == nullptr || r.sniff(head))) return r;
+    }
+    std::vector<std::string_view> known;
+    for (const ReaderInfo& r : reader_table) {
+        for (std::string_view e : r.extensions) {
+            if (std::find(known.begin(), known.end(), e) == known.end()) known.push_back(e);
+        }
+    }
+    std::string list;
+    for (std::string_view e : known) list += (list.empty() ? "" : ", ") + std::string(e);
+    throw InputError(head.path, 0, 0,
+                     "expected a known input extension (" + list + "), found '" +
+                         head.path.extension().string() + "'");
+}
+
+const ReaderInfo& find_reader(const std::filesystem::path& file)
+{
+    FileHead head{file, lower_extension(file), {}};
+    const bool sniffs = std::any_of(reader_table.begin(), reader_table.end(), [&](const auto& r) {
+        return r.sniff != nullptr && takes_extension(r, head.extension);
+    });
+    std::string bytes;
+    if (sniffs) {  // an unreadable file reads as empty: its reader then names the problem
+        std::ifstream in(file, std::ios::binary);
+        bytes.resize(head_size);
+        in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+        bytes.resize(static_cast<std::size_t>(in.gcount()));
+        head.bytes = bytes;
+    }
+    return find_reader(head);
+}
+
+}  // namespace dtm::io

@@ -1,0 +1,87 @@
+// SPDX-License-Identifier: MIT
+// [incremental-kirkpatrick] Incremental Delaunay insertion (thesis 000 §3.8, the winged-edge
+// structure of detail/winged_edge.hpp) with Kirkpatrick's hierarchy for point location
+// (§3.8.2; Kirkpatrick 1983, detail/kirkpatrick.hpp).
+//
+// Kirkpatrick's hierarchy is static: it is built over a fixed triangulation. The thesis
+// mentions building it bottom-up during the insertion and judges that impractical (flips
+// change the lowest level). Here it is rebuilt over the current triangulation (T_pom
+// included, which is exactly Kirkpatrick's enclosing triangle) each time the number of
+// inserted points doubles, while the points inserted so far are at most half the input, so
+// the last hierarchy is built over at most n/2 points. A point is located in the hierarchy
+// (O(log n)), which gives a triangle of that snapshot; the walk in the current triangulation
+// starts at one of its corners, a vertex that still exists, and crosses the few triangles made
+// since the snapshot. Insertion order: random (seeded), so that a snapshot's triangles hold O(1)
+// later points on average. Each rebuild is linear, so all of them cost O(n); the queries
+// O(n log n) in total. Until 256 points are in, the walk alone is used.
+#include "incremental_kirkpatrick.hpp"
+
+#include "methods/detail/kirkpatrick.hpp"
+#include "methods/detail/method_support.hpp"
+#include "methods/detail/spatial_order.hpp"
+#include "methods/detail/winged_edge.hpp"
+
+namespace dtm::methods {
+
+MethodResult run_incremental_kirkpatrick(const MethodInput& input,
+                                         const MethodOptions& options,
+                                         const Progress& progress) {
+    detail::ParamReader params("incremental-kirkpatrick", options);
+    params.finish();
+    detail::CountingPredicates pred;
+    detail::PreparedPoints prepared =
+        detail::prepare_points("incremental-kirkpatrick", input, pred);
+    const std::vector<Point3>& pts = prepared.vertices;
+    std::vector<VertexIndex> order = detail::random_order(pts.size(), options.seed);
+    MethodResult result;
+    std::size_t peak = 0;
+    {
+        detail::WingedEdgeDelaunay we(pts, pred);
+        detail::KirkpatrickHierarchy hierarchy;
+        std::uint64_t hierarchy_steps = 0;
+        std::uint64_t rebuilds = 0;
+        std::size_t next_rebuild = 256;
+        for (std::size_t k = 0; k < order.size(); ++k) {
+            if ((k & 4095) == 0) {
+                progress.report(static_cast<double>(k) / static_cast<double>(order.size()),
+                                "inserting");
+            }
+            if (k == next_rebuild && 2 * k <= order.size()) {
+                std::vector<detail::KirkpatrickHierarchy::Corners> snapshot(we.triangles().size());
+                for (TriangleIndex t = 0; t < snapshot.size(); ++t) snapshot[t] = we.corners(t);
+                hierarchy.build(snapshot, pts.size() + 3, we.super());
+                peak = std::max(peak, we.bytes() + hierarchy.bytes() + detail::bytes_of(snapshot) +
+                                          detail::bytes_of(pts) + detail::bytes_of(order));
+                ++rebuilds;
+                next_rebuild *= 2;
+            }
+            const VertexIndex p = order[k];
+            detail::EdgeIndex start = detail::no_edge;
+            if (!hierarchy.empty()) {
+                const auto corners = hierarchy.locate(p, we.super(), hierarchy_steps);
+                start = we.edge_of(corners[0]);
+            }
+            result.counters.walk_steps += we.insert(p, start);
+        }
+        result.counters.extra["hierarchy_steps"] = hierarchy_steps;
+        result.counters.extra["rebuilds"] = rebuilds;
+        result.counters.extra["levels"] = hierarchy.levels();
+        result.counters.extra["hierarchy_nodes"] = hierarchy.nodes();
+        result.counters.extra["max_children"] = hierarchy.max_children();
+        const std::size_t inserting =
+            we.bytes() + hierarchy.bytes() + detail::bytes_of(pts) + detail::bytes_of(order);
+        hierarchy = {};
+        order = {};
+        result.counters.flips = we.flips();
+        result.tin.triangles = we.real_triangles();
+        peak =
+            std::max({peak, inserting,
+                      we.bytes() + detail::bytes_of(pts) + detail::bytes_of(result.tin.triangles)});
+    }
+    result.tin.vertices = std::move(prepared.vertices);
+    detail::finish_counters(result, pred, prepared.duplicates, peak);
+    progress.report(1.0, "triangulated");
+    return result;
+}
+
+}  // namespace dtm::methods

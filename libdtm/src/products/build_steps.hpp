@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: MIT
+/// @file
+/// @brief The product steps of products::build(): each writes its files into the staging folder
+/// and fills its section of the report. The list (order, progress, which options turn a step
+/// on) is in build.cpp.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "dtm/algo/surface_stats.hpp"
+#include "dtm/core/progress.hpp"
+#include "dtm/core/tin.hpp"
+#include "dtm/io/atomic_file.hpp"
+#include "dtm/products/build.hpp"
+
+namespace dtm::products::detail {
+
+/// What every step may read, and where it writes.
+struct BuildContext {
+    const BuildOptions& options;
+    const Tin& tin;
+    const std::string& crs_wkt;  ///< CRS of the TIN; empty if unknown
+    const SurfaceStats& surface;
+    io::AtomicDirectory& out;
+    BuildReport& report;
+
+    /// @p text as options.wording words it.
+    [[nodiscard]] std::string worded(std::string_view text) const
+    {
+        return options.wording ? options.wording(text) : std::string(text);
+    }
+};
+
+struct BuildStep {
+    std::string_view stage;  ///< its name in the report's timings
+    double progress_end;     ///< the overall fraction done when it has finished
+    bool (*wanted)(const BuildOptions&);  ///< nullptr: always run
+    void (*run)(BuildContext& context, const Progress& progress);
+};
+
+/// tin.ply, tin.2dm, surface.vtp (tin_step.cpp).
+void write_tin_files(BuildContext& context, const Progress& progress);
+/// dem.tif and hillshade.tif; report.dem, report.cell_rule (dem_step.cpp).
+void write_dem(BuildContext& context, const Progress& progress);
+/// contours.gpkg; report.contour_* (contour_step.cpp).
+void write_contours(BuildContext& context, const Progress& progress);
+/// With BuildOptions::base: volume/ (volume.json, volume.txt, difference.ply, difference.tif,
+/// cut_fill.gpkg, zero_lines.dxf); report.volume (volume_step.cpp).
+bool wants_volume(const BuildOptions& options);
+void write_volume(BuildContext& context, const Progress& progress);
+/// dtm.qgs with a layer for each product written before it (project_step.cpp).
+void write_project(BuildContext& context, const Progress& progress);
+
+}  // namespace dtm::products::detail

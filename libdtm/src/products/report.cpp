@@ -1,0 +1,203 @@
+// SPDX-License-Identifier: MIT
+// The JSON report of products::build(), written with io::JsonWriter (block layout, 2-space
+// indentation; NaN and infinities become null).
+#include "dtm/products/report.hpp"
+
+#include <ogr_spatialref.h>
+
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <numeric>
+
+#include "dtm/core/error.hpp"
+#include "dtm/io/json_writer.hpp"
+
+namespace dtm::products {
+namespace {
+
+void write_inputs(io::JsonWriter& json, const BuildReport& report) {
+    json.begin_array("inputs");
+    for (const io::InputSummary& in : report.inputs) {
+        json.begin_object();
+        json.value("path", in.path.generic_string());
+        json.value("format", in.format);
+        json.value("crs", in.crs);
+        json.value("points", in.points);
+        json.value("breaklines", in.breaklines);
+        json.value("breakline_vertices", in.breakline_vertices);
+        json.value("boundaries", in.boundaries);
+        json.value("holes", in.holes);
+        json.value("duplicates", in.duplicates);
+        json.value("skipped_lines", in.skipped_lines);
+        json.begin_array("warnings");
+        for (const std::string& warning : in.warnings) {
+            json.value({}, warning);
+        }
+        json.end();
+        json.end();
+    }
+    json.end();
+}
+
+void write_crs(io::JsonWriter& json, const std::string& wkt) {
+    std::string name;
+    std::string authority;
+    if (!wkt.empty()) {
+        OGRSpatialReference srs;
+        if (srs.SetFromUserInput(wkt.c_str()) == OGRERR_NONE) {
+            if (srs.GetAuthorityName(nullptr) == nullptr) {
+                srs.AutoIdentifyEPSG();
+            }
+            name = srs.GetName() != nullptr ? srs.GetName() : "";
+            if (srs.GetAuthorityName(nullptr) != nullptr &&
+                srs.GetAuthorityCode(nullptr) != nullptr) {
+                authority = std::string(srs.GetAuthorityName(nullptr)) + ":" +
+                            srs.GetAuthorityCode(nullptr);
+            }
+        }
+    }
+    json.begin_object("crs");
+    json.value("name", name);
+    json.value("authority", authority);
+    json.value("wkt", wkt);
+    json.end();
+}
+
+void write_fate(io::JsonWriter& json, std::string_view key, const PointFate& fate) {
+    json.begin_object(key);
+    json.value("read", fate.total);
+    json.value("used", fate.used);
+    json.value("merged_duplicates", fate.merged);
+    json.value("outside_boundary_or_in_hole", fate.removed);
+    json.end();
+}
+
+void write_points(io::JsonWriter& json, const BuildReport& report) {
+    const InputAccounting& a = report.accounting;
+    json.begin_object("points");
+    write_fate(json, "survey_points", a.survey_points);
+    write_fate(json, "line_vertices", a.line_vertices);
+    json.value("skipped_bad_lines", report.skipped_lines);
+    json.value("total_accounted",
+               a.survey_points.total + a.line_vertices.total + report.skipped_lines);
+    json.end();
+}
+
+void write_tin(io::JsonWriter& json, const BuildReport& report) {
+    json.begin_object("tin");
+    json.value("vertices", report.surface.vertex_count);
+    json.value("triangles", report.surface.triangle_count);
+    json.value("constrained_edges", report.surface.constraint_count);
+    json.value("breakline_intersections", report.triangulation.intersections);
+    json.value("removed_triangles", report.triangulation.removed_triangles);
+    json.end();
+    json.begin_object("conflicts");
+    json.value("count", report.conflicts.size());
+    json.begin_array("items");
+    for (std::size_t i = 0; i < report.conflicts.size() && i < report_conflict_limit; ++i) {
+        const ConstraintConflict& c = report.conflicts[i];
+        json.begin_object();
+        json.value("x", c.at.x);
+        json.value("y", c.at.y);
+        json.value("z_first", c.z_first);
+        json.value("z_second", c.z_second);
+        json.value("difference", std::fabs(c.z_first - c.z_second));
+        json.end();
+    }
+    json.end();
+    json.end();
+}
+
+void write_surface(io::JsonWriter& json, const BuildReport& report) {
+    const SurfaceStats& s = report.surface;
+    json.begin_object("extent");
+    json.value("xmin", s.extent.xmin);
+    json.value("ymin", s.extent.ymin);
+    json.value("xmax", s.extent.xmax);
+    json.value("ymax", s.extent.ymax);
+    json.end();
+    json.begin_object("z_range");
+    json.value("min", s.z_min);
+    json.value("max", s.z_max);
+    json.end();
+    json.begin_object("area");
+    json.value("planimetric", s.planimetric_area);
+    json.value("surface_3d", s.surface_area);
+    json.value("ratio", s.planimetric_area > 0.0 ? s.surface_area / s.planimetric_area : 0.0);
+    json.end();
+}
+
+void write_products(io::JsonWriter& json, const BuildReport& report) {
+    json.begin_object("dem");
+    json.value("cell", report.dem.cell);
+    json.value("cell_rule", report.cell_rule);
+    json.value("cols", report.dem.cols);
+    json.value("rows", report.dem.rows);
+    json.value("xmin", report.dem.xmin);
+    json.value("ymax", report.dem.ymax);
+    json.end();
+    json.begin_object("contours");
+    json.value("interval", report.contour_interval);
+    json.value("index_every", report.index_every);
+    json.value("interval_rule", report.interval_rule);
+    json.value("levels", report.contour_levels);
+    json.value("lines", report.contour_lines);
+    json.end();
+    if (report.has_volume) {
+        const VolumeResult& v = report.volume;
+        json.begin_object("volume");  // the figures of volume/volume.json
+        json.value("base", report.volume_base);
+        json.value("fill", v.fill);
+        json.value("cut", v.cut);
+        json.value("net", v.net());
+        json.value("fill_area", v.fill_area);
+        json.value("cut_area", v.cut_area);
+        json.value("top_only_area", v.top_only_area);
+        json.value("base_only_area", v.base_only_area);
+        json.end();
+    }
+    json.begin_object("timings_seconds");
+    double total = 0.0;
+    for (const StageTime& t : report.timings) {
+        json.value(t.stage, t.seconds);
+        total += t.seconds;
+    }
+    json.value("total", total);
+    json.end();
+    json.begin_array("outputs");
+    for (const std::string& file : report.outputs) {
+        json.value({}, file);
+    }
+    json.end();
+}
+
+}  // namespace
+
+std::string report_json(const BuildReport& report) {
+    io::JsonWriter json;
+    json.begin_object();
+    json.value("dtm_version", DTM_VERSION);
+    write_inputs(json, report);
+    write_crs(json, report.crs_wkt);
+    write_points(json, report);
+    write_tin(json, report);
+    write_surface(json, report);
+    write_products(json, report);
+    json.end();
+    return json.str();
+}
+
+void write_report(const BuildReport& report, const std::filesystem::path& path) {
+    const std::string text = report_json(report);
+    std::ofstream file(path, std::ios::binary | std::ios::trunc);
+    file.write(text.data(), static_cast<std::streamsize>(text.size()));
+    file.close();
+    if (!file) {
+        throw Error("report: cannot write " + path.string());
+    }
+}
+
+}  // namespace dtm::products

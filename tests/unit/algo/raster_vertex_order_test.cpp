@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: MIT
+// First-use renumbering of a TIN's vertices (algo/detail/raster_vertex_order.hpp): the numbering
+// of one sequential pass over the corners, on one thread and on two, unused vertices dropped.
+#include "algo/detail/raster_vertex_order.hpp"
+
+#include <gtest/gtest.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <random>
+
+#include "dtm/algo/triangulate.hpp"
+#include "support/terrain_fixtures.hpp"
+
+namespace dtm::detail {
+namespace {
+
+Tin sequential_reference(const Tin& tin) {
+    Tin out;
+    out.triangles = tin.triangles;
+    std::vector<VertexIndex> renumber(tin.vertices.size(), no_vertex);
+    for (Triangle& t : out.triangles) {
+        for (VertexIndex& v : t.v) {
+            if (renumber[v] == no_vertex) {
+                renumber[v] = static_cast<VertexIndex>(out.vertices.size());
+                out.vertices.push_back(tin.vertices[v]);
+            }
+            v = renumber[v];
+        }
+    }
+    return out;
+}
+
+TEST(CoherentVertices, EqualsOneSequentialPassOnEveryThreadCount) {
+    TerrainInput input;
+    input.points = test::random_points(120000, 4);
+    Tin tin = triangulate(input).tin;
+    // Vertices in a random order, one of them used by no triangle.
+    std::vector<VertexIndex> shuffle(tin.vertices.size());
+    for (std::size_t i = 0; i < shuffle.size(); ++i) shuffle[i] = static_cast<VertexIndex>(i);
+    std::shuffle(shuffle.begin(), shuffle.end(), std::mt19937_64(8));
+    std::vector<Point3> moved(tin.vertices.size() + 1);
+    for (std::size_t i = 0; i < shuffle.size(); ++i) moved[shuffle[i]] = tin.vertices[i];
+    moved.back() = {1e9, 1e9, 0};
+    for (Triangle& t : tin.triangles) {
+        for (VertexIndex& v : t.v) v = shuffle[v];
+    }
+    tin.vertices = std::move(moved);
+    const Tin want = sequential_reference(tin);
+    for (const int threads : {1, 2}) {
+        tbb::task_arena arena(threads);
+        const Tin got = arena.execute([&] { return with_coherent_vertices(tin); });
+        ASSERT_EQ(got.vertices, want.vertices) << threads << " threads";
+        ASSERT_EQ(got.triangles.size(), want.triangles.size());
+        for (std::size_t t = 0; t < want.triangles.size(); ++t) {
+            ASSERT_EQ(got.triangles[t].v, want.triangles[t].v) << "triangle " << t;
+            ASSERT_EQ(got.triangles[t].n, want.triangles[t].n) << "triangle " << t;
+        }
+    }
+}
+
+}  // namespace
+}  // namespace dtm::detail
