@@ -68,7 +68,7 @@ PreparedPoints prepare_points(std::string_view method,
         throw InputError("method " + std::string(method) + ": too many points");
     }
     PreparedPoints out;
-    const std::vector<VertexIndex> first = dtm::detail::first_occurrences(input.points);
+    const auto first = dtm::detail::first_occurrences(input.points);
     out.vertices.reserve(input.points.size());
     for (std::size_t i = 0; i < input.points.size(); ++i) {
         if (first[i] == i) {
