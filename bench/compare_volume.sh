@@ -18,6 +18,11 @@
 #    their relative error against dtm's exact figures, and QGIS's time per cell size: the raster
 #    figure converges to the exact one as the cell shrinks (roughly with the cell's area along
 #    the pit's and heap's edges), at a cost that grows as 1 / cell^2.
+# 4. Profiles: `dtm profile after.ply before.ply --line lines.geojson --plot none` for 1000
+#    random three-vertex lines (200-600 m) across the site, the whole run (reading both 10^6-
+#    triangle TINs, the exact sections, CSV, GeoPackage, DXF); then QGIS's
+#    native:meshexportcrosssection on after.2dm along the same lines at 1 m resolution (one
+#    surface, samples instead of every edge crossing), for the time ratio.
 # Take the bench lock: flock /work/coord/bench.lock bench/compare_volume.sh
 set -euo pipefail
 
@@ -29,6 +34,7 @@ mkdir -p "$work"
 [[ -x "$dtm" ]] || { echo "compare_volume: no dtm binary at $dtm" >&2; exit 2; }
 
 echo "== work directory: $work"
+"$here/cpu_info.sh"
 echo "== generating two surveys of $points points"
 python3 - "$points" "$work" <<'PY'
 import math, random, sys
@@ -86,6 +92,32 @@ import json; j = json.load(open('$work/volume/volume.json'))
 print(j['volume']['fill'], j['volume']['cut'])")
 echo "dtm exact: fill $fill cut $cut"
 
+echo "== dtm profile: 1000 lines on both TINs"
+python3 - "$work" <<'PY'
+import json, random, sys
+work = sys.argv[1]
+rng = random.Random(3)
+x0, y0 = -750000.0, -1050000.0
+features = []
+for _ in range(1000):
+    x, y = rng.uniform(300, 1700), rng.uniform(300, 1700)
+    pts = [[x0 + x, y0 + y]]
+    for _ in range(2):
+        x = min(max(x + rng.uniform(-200, 200), 0), 2000)
+        y = min(max(y + rng.uniform(-200, 200), 0), 2000)
+        pts.append([x0 + x, y0 + y])
+    features.append({"type": "Feature", "properties": {},
+                     "geometry": {"type": "LineString", "coordinates": pts}})
+json.dump({"type": "FeatureCollection",
+           "crs": {"type": "name", "properties": {"name": "EPSG:5514"}},
+           "features": features}, open(f"{work}/lines.geojson", "w"))
+PY
+read -r _ seconds_profile rss_profile < <(measure profile "$dtm" profile "$work/after.ply" \
+    "$work/before.ply" --line "$work/lines.geojson" --plot none -o "$work/profile" -q)
+cat "$work/profile.log"
+echo "dtm profile (1000 lines x 2 surfaces, whole run): ${seconds_profile} s wall, peak" \
+     "$((rss_profile / 1024)) MB"
+
 if ! /usr/bin/python3 -c 'import qgis.core' 2>/dev/null; then
     echo "== QGIS not installed (apt-get install python3-qgis qgis-providers): comparison skipped"
     exit 0
@@ -103,3 +135,13 @@ QT_QPA_PLATFORM=offscreen /usr/bin/python3 "$here/qgis_surface_volume.py" "${ras
 f, c, qf, qc = $fill, $cut, $qfill, $qcut
 print(f'cell {$cell:>3} m: QGIS fill {qf:14.3f} ({(qf - f) / f:+.2e})  cut {qc:14.3f} ({(qc - c) / c:+.2e})  QGIS {$qseconds:.2f} s')"
 done
+
+echo "== QGIS native:meshexportcrosssection: the same 1000 lines on after.2dm, 1 m resolution"
+"$dtm" tin "$work/after.ply" -o "$work/after.2dm" -q
+read -r qsamples _ _ qseconds < <(QT_QPA_PLATFORM=offscreen /usr/bin/python3 \
+    "$here/qgis_cross_section.py" "$work/after.2dm" "$work/lines.geojson" 1.0 \
+    "$work/qgis_sections.csv" 2>/dev/null | grep ' samples seconds ')
+python3 -c "
+q, d = $qseconds, $seconds_profile
+print(f'QGIS cross sections: {q:.2f} s for $qsamples samples of one surface; dtm profile {d:.2f} s '
+      f'for every edge crossing of two surfaces: QGIS / dtm = {q / d:.1f}')"

@@ -10,6 +10,7 @@
 #include <map>
 #include <string>
 
+#include "dtm/io/formats/ply.hpp"
 #include "dtm/io/tin_file.hpp"
 #include "support/analysis_fixtures.hpp"
 #include "support/test_support.hpp"

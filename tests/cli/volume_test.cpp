@@ -228,6 +228,14 @@ TEST(CliBuildBase, AddsTheVolumeProductsAndACutFillMapToTheProject) {
                           "volume/difference.tif", "volume/zero_lines.dxf"}) {
         EXPECT_TRUE(fs::exists(dir / "out" / f)) << f;
     }
+    // report.json carries the figures of volume/volume.json.
+    const std::string report = dtm::test::read_file(dir / "out" / "report.json");
+    const std::string volume = dtm::test::read_file(dir / "out" / "volume" / "volume.json");
+    EXPECT_EQ(dtm::test::json_number(report, "volume", "fill"),
+              dtm::test::json_number(volume, "volume", "fill"));
+    EXPECT_EQ(dtm::test::json_number(report, "volume", "cut"),
+              dtm::test::json_number(volume, "volume", "cut"));
+    EXPECT_GT(dtm::test::json_number(report, "volume", "cut"), 0.0);
     const std::string project = dtm::test::read_file(dir / "out" / "dtm.qgs");
     EXPECT_NE(project.find("./volume/cut_fill.gpkg|layername=cut_fill"), std::string::npos);
     EXPECT_NE(project.find("categorizedSymbol"), std::string::npos);

@@ -11,7 +11,7 @@
 namespace dtm::cli {
 namespace {
 
-constexpr std::array<std::pair<std::string_view, std::string_view>, 30> flags{{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 32> flags{{
     // io::LoadOptions: the files of each role (TerrainInput's members)
     {"breaklines", "--breaklines"},
     {"soft_breaklines", "--soft-breaklines"},
@@ -47,6 +47,9 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 30> flags{{
     {"index_every", "--index-every"},
     {"cog", "--cog"},
     {"levels", "--levels"},
+    // products::CheckJob, ProfileJob, SectionsJob
+    {"interpolation", "--interpolation"},
+    {"plot_format", "--plot"},
 }};
 
 }  // namespace

@@ -169,6 +169,15 @@ private:
     }
 
     void add_triangle(VertexIndex a, VertexIndex b, VertexIndex c) {
+        // A fan triangle of rounded crossing points can come out flat or turned over (a sliver
+        // along a side where both surfaces have edges nearly in line): it has no area and would
+        // overlap its neighbour, so it is left out.
+        const Point3& pa = out.tin.vertices[a];
+        const Point3& pb = out.tin.vertices[b];
+        const Point3& pc = out.tin.vertices[c];
+        if (geom::orient2d(pa.x, pa.y, pb.x, pb.y, pc.x, pc.y) <= 0) {
+            return;
+        }
         Triangle t;
         t.v = {a, b, c};
         out.tin.triangles.push_back(t);

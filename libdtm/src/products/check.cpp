@@ -32,7 +32,8 @@ std::unique_ptr<SurfaceHeight> make_surface_height(const std::string& name, cons
     if (name == "linear") {
         return std::make_unique<LinearSurface>(tin);
     }
-    throw UsageError("--interpolation " + name + ": not available (known: linear)");
+    throw OptionError("interpolation",
+                      "`interpolation` " + name + ": not available (known: linear)");
 }
 
 std::string check_json(const CheckReport& r) {

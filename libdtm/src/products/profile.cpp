@@ -158,7 +158,7 @@ ProfileReport run_profile(const ProfileJob& job,
     }
     if (!job.plot_format.empty() && job.plot_format != "pdf" && job.plot_format != "svg" &&
         job.plot_format != "png") {
-        throw UsageError("profile: --plot must be pdf, svg, png or none");
+        throw OptionError("plot_format", "profile: `plot_format` must be pdf, svg, png or none");
     }
     io::AtomicDirectory staging(out_dir);
     ProfileReport report;

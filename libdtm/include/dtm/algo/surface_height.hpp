@@ -21,9 +21,9 @@ public:
     [[nodiscard]] virtual bool height(double x, double y, double& z) const = 0;
 };
 
-/// Linear interpolation on the TIN's triangles. The triangle holding the point is found exactly
-/// (orient2d, closed triangles); a point on an edge or a vertex gets the same height from every
-/// triangle sharing it.
+/// Linear interpolation on the TIN's triangles, by SurfaceSampler (exact point location; a point
+/// on an edge or a vertex gets the same height whichever triangle holds it). The TIN needs its
+/// neighbour links.
 class LinearSurface final : public SurfaceHeight {
 public:
     /// @p tin must outlive the object.

@@ -9,11 +9,11 @@
 
 #include <algorithm>
 #include <array>
-#include <cctype>
 #include <mutex>
 
 #include "dtm/core/error.hpp"
 #include "dtm/io/atomic_file.hpp"
+#include "dtm/io/extension.hpp"
 
 namespace dtm::io {
 namespace fs = std::filesystem;
@@ -89,10 +89,7 @@ struct VectorFile::State {
 VectorFile::VectorFile(const fs::path& target, const std::string& crs_wkt) {
     static std::once_flag once;
     std::call_once(once, [] { GDALAllRegister(); });
-    std::string ext = target.extension().string();
-    ext.erase(0, std::min<std::size_t>(1, ext.size()));
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    const std::string ext = lower_extension(target);
     const Format* format = nullptr;
     for (const Format& f : formats) {
         if (ext == f.extension) {
