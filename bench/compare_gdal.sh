@@ -37,25 +37,8 @@ elapsed() { echo "$2 - $1" | bc -l | awk '{printf "%.2f", $1}'; }
 "$here/cpu_info.sh"
 echo "== work directory: $work"
 echo "== generating $points points"
-python3 - "$points" "$work/points.csv" "$xmin" "$ymin" "$xmax" "$ymax" <<'PY'
-import math, random, sys
-n, path = int(sys.argv[1]), sys.argv[2]
-x0, y0, x1, y1 = map(float, sys.argv[3:7])
-random.seed(20261124)
-with open(path, "w") as f, open(path.replace(".csv", "_local.csv"), "w") as g:
-    f.write("x,y,z\n")
-    g.write("x,y,z\n")
-    # the four corners, so that both tools cover the whole extent
-    pts = [(x0, y0), (x1, y0), (x0, y1), (x1, y1)]
-    pts += [(random.uniform(x0, x1), random.uniform(y0, y1)) for _ in range(n - 4)]
-    for x, y in pts:
-        x, y = round(x, 3), round(y, 3)
-        u, v = x - x0, y - y0
-        z = (300.0 + 40.0 * math.sin(u / 300.0) * math.cos(v / 250.0) + 0.03 * u
-             + 6.0 * math.sin(u / 37.0 + v / 53.0) + 2.0 * math.cos(u / 11.0 - v / 17.0))
-        f.write(f"{x:.3f},{y:.3f},{z:.3f}\n")
-        g.write(f"{u:.3f},{v:.3f},{z:.3f}\n")
-PY
+python3 "$here/terrain_points.py" "$points" "$work/points.csv" "$xmin" "$ymin" "$xmax" "$ymax" \
+    --local "$work/points_local.csv"
 for name in points points_local; do
     cat > "$work/$name.vrt" <<VRT
 <OGRVRTDataSource>

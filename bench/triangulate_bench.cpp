@@ -10,8 +10,7 @@
 
 namespace {
 
-dtm::TerrainInput uniform(std::size_t n, bool breaklines)
-{
+dtm::TerrainInput uniform(std::size_t n, bool breaklines) {
     std::mt19937_64 rng(42);
     std::uniform_real_distribution<double> u(0.0, 10'000.0);
     dtm::TerrainInput input;
@@ -26,7 +25,8 @@ dtm::TerrainInput uniform(std::size_t n, bool breaklines)
             dtm::Polyline line;
             const double y = 10'000.0 * (static_cast<double>(k) + 0.5) / lines;
             for (double x = 1.0; x < 9'999.0; x += 10.0) {
-                line.points.push_back({-750'000.0 + x, -1'050'000.0 + y + 3.0 * std::sin(x), 300.0});
+                line.points.push_back(
+                    {-750'000.0 + x, -1'050'000.0 + y + 3.0 * std::sin(x), 300.0});
             }
             input.breaklines.push_back(std::move(line));
         }
@@ -34,8 +34,7 @@ dtm::TerrainInput uniform(std::size_t n, bool breaklines)
     return input;
 }
 
-void run(benchmark::State& state, bool breaklines, unsigned threads)
-{
+void run(benchmark::State& state, bool breaklines, unsigned threads) {
     const dtm::TerrainInput input = uniform(static_cast<std::size_t>(state.range(0)), breaklines);
     dtm::TriangulateOptions options;
     options.threads = threads;

@@ -17,8 +17,7 @@
 
 namespace {
 
-void add_points(std::string& out, const std::vector<dtm::Point3>& points)
-{
+void add_points(std::string& out, const std::vector<dtm::Point3>& points) {
     const std::size_t at = out.size();
     const std::size_t bytes = points.size() * sizeof(dtm::Point3);
     out.resize(at + bytes);
@@ -27,9 +26,10 @@ void add_points(std::string& out, const std::vector<dtm::Point3>& points)
 }
 
 /// Everything a read gives (the points bit for bit), or its error.
-std::string digest(std::string_view text, dtm::io::InputRole role,
-                   const dtm::io::ReadOptions& options, const dtm::io::csv::Cuts& cuts)
-{
+std::string digest(std::string_view text,
+                   dtm::io::InputRole role,
+                   const dtm::io::ReadOptions& options,
+                   const dtm::io::csv::Cuts& cuts) {
     std::string out;
     try {
         const dtm::io::ReadResult r = dtm::io::csv::parse_csv_text(
@@ -60,12 +60,11 @@ std::string digest(std::string_view text, dtm::io::InputRole role,
 
 }  // namespace
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
-{
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::string_view text(reinterpret_cast<const char*>(data), size);
-    constexpr dtm::io::InputRole roles[] = {dtm::io::InputRole::points,
-                                            dtm::io::InputRole::breaklines,
-                                            dtm::io::InputRole::boundary, dtm::io::InputRole::holes};
+    constexpr dtm::io::InputRole roles[] = {
+        dtm::io::InputRole::points, dtm::io::InputRole::breaklines, dtm::io::InputRole::boundary,
+        dtm::io::InputRole::holes};
     const dtm::io::csv::Cuts tiny{1 + size % 61, 1 + size % 13};
     for (const dtm::io::InputRole role : roles) {
         for (const bool skip : {false, true}) {

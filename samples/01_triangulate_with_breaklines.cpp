@@ -12,8 +12,7 @@
 #include "dtm/algo/triangulate.hpp"
 #include "dtm/algo/validate.hpp"
 
-int main()
-{
+int main() {
     try {
         dtm::TerrainInput input;
         for (int j = 0; j <= 20; ++j) {  // 21 x 21 spot heights, 5 m apart, rising to the north

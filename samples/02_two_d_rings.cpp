@@ -15,8 +15,7 @@
 
 namespace {
 
-dtm::Polyline ring(std::initializer_list<dtm::Point2> corners)
-{
+dtm::Polyline ring(std::initializer_list<dtm::Point2> corners) {
     dtm::Polyline line;
     for (const dtm::Point2& p : corners) {
         line.points.push_back({p.x, p.y, std::numeric_limits<double>::quiet_NaN()});  // 2-D
@@ -27,15 +26,17 @@ dtm::Polyline ring(std::initializer_list<dtm::Point2> corners)
 
 }  // namespace
 
-int main()
-{
+int main() {
     try {
         dtm::TerrainInput input;
         for (int j = 0; j <= 30; ++j) {  // a gentle dome, a point every 4 m
             for (int i = 0; i <= 30; ++i) {
                 const double x = 4.0 * i + 0.5 * std::cos(j);
                 const double y = 4.0 * j;
-                input.points.push_back({x, y, 250.0 + 6.0 * std::exp(-((x - 60) * (x - 60) + (y - 60) * (y - 60)) / 2000.0)});
+                input.points.push_back(
+                    {x, y,
+                     250.0 +
+                         6.0 * std::exp(-((x - 60) * (x - 60) + (y - 60) * (y - 60)) / 2000.0)});
             }
         }
         input.boundaries.push_back(ring({{8, 6}, {112, 10}, {110, 114}, {5, 108}}));
@@ -45,10 +46,10 @@ int main()
         const dtm::SurfaceStats stats = dtm::surface_stats(result.tin);
         std::printf("%zu ring vertices took the height of the surface\n",
                     result.line_heights.from_surface);
-        std::printf("%zu triangles inside the boundary and outside the building: %.1f m2 "
-                    "(%zu removed)\n",
-                    stats.triangle_count, stats.planimetric_area,
-                    result.stats.removed_triangles);
+        std::printf(
+            "%zu triangles inside the boundary and outside the building: %.1f m2 "
+            "(%zu removed)\n",
+            stats.triangle_count, stats.planimetric_area, result.stats.removed_triangles);
         // the area is the boundary polygon's minus the building's, exactly: the rings are edges
         const double expected = 10776.0 - 280.0;
         std::printf("expected %.1f m2: %s\n", expected,

@@ -9,8 +9,10 @@ packages=(
     libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev libcgal-dev
     clang libclang-rt-14-dev python3
     libcairo2-dev fonts-dejavu-core poppler-utils
-    # test-only oracles: DXF reader, numpy statistics, QGIS processing (headless)
-    python3-ezdxf python3-numpy python3-qgis qgis-providers
+    libexpat1-dev libxml2-utils python3-lxml python3-ezdxf
+    python3-scipy strace python3-qgis clang-format
+    # test-only oracles (volumes): numpy statistics, QGIS processing algorithms (headless)
+    python3-numpy qgis-providers
 )
 
 missing=()

@@ -12,6 +12,8 @@ cd "$repo_root"
 build_dir=${1:-"$repo_root/build"}
 
 scripts/install-deps.sh
+# Source rules: no flags in library strings, no triangulator in io, clang-format clean.
+scripts/check-sources.sh
 scripts/build.sh "$build_dir" -DDTM_WERROR=ON
 
 ctest_options=(--test-dir "$build_dir" --output-on-failure -j2)

@@ -112,7 +112,7 @@ dtm::test::RunResult* BuildSample::result_ = nullptr;
 
 TEST_F(BuildSample, WritesEveryProductAndNoTemporaryIsLeft) {
     for (const char* name : {"tin.ply", "tin.2dm", "surface.vtp", "dem.tif", "hillshade.tif",
-                             "contours.gpkg", "dtm.qgs", "report.json"}) {
+                             "contours.gpkg", "map.pdf", "dtm.qgs", "report.json"}) {
         EXPECT_TRUE(fs::exists(*out_ / name)) << name;
         EXPECT_GT(fs::file_size(*out_ / name), 0u) << name;
     }
@@ -122,6 +122,20 @@ TEST_F(BuildSample, WritesEveryProductAndNoTemporaryIsLeft) {
     for (const auto& entry : fs::directory_iterator(*out_)) {
         EXPECT_NE(entry.path().filename().string().front(), '.') << "left behind: " << entry.path();
     }
+}
+
+TEST_F(BuildSample, MapSheetIsGeoreferencedAtTheReportedScale) {
+    const CPLJSONObject map = report().GetObj("map");
+    EXPECT_DOUBLE_EQ(map.GetDouble("scale"), 1000.0);  // the largest at which the site fits A3
+    EXPECT_GT(map.GetLong("labels_placed"), 3);
+    const Dataset pdf = open(*out_ / "map.pdf", GDAL_OF_RASTER);
+    ASSERT_TRUE(pdf);
+    const OGRSpatialReference* srs = pdf->GetSpatialRef();
+    ASSERT_NE(srs, nullptr);
+    EXPECT_STREQ(srs->GetAuthorityCode(nullptr), "5514");
+    const char* neat = pdf->GetMetadataItem("NEATLINE");
+    ASSERT_NE(neat, nullptr);
+    EXPECT_NE(std::string(neat).find("POLYGON"), std::string::npos);
 }
 
 TEST_F(BuildSample, TinFilesAgreeWithTheReportAndVtkReadsTheSurface) {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // `dtm grid`: exit codes, a GeoTIFF that GDAL opens with the CRS, NoData outside the TIN, exact
-// values on a planar surface, --extent, other drivers by extension, gdaldem derivatives.
+// values on a planar surface, --extent, other drivers by extension, gdaldem derivatives,
+// --interpolation.
 #include <gdal_priv.h>
 #include <gtest/gtest.h>
 #include <ogr_spatialref.h>
@@ -215,6 +216,56 @@ TEST(CliGrid, RealSjtskSurveyWithBreaklinesEqualsBruteForceOnItsTin) {
         }
     }
     EXPECT_GT(checked, 1000U);
+}
+
+TEST(CliGrid, InterpolationPicksTheSurfaceAndCubicFollowsACurvedOneCloser) {
+    const dtm::test::ScratchDir dir;
+    const auto bowl = [](double x, double y) { return 0.02 * (x * x + 0.5 * y * y + x * y); };
+    std::ostringstream csv;
+    csv << "x,y,z\n";
+    for (int i = 0; i <= 12; ++i) {
+        for (int j = 0; j <= 12; ++j) {
+            const double x = 5.0 * i + 0.7 * std::sin(j), y = 5.0 * j + 0.6 * std::cos(i);
+            csv << x << ',' << y << ',' << bowl(x, y) << '\n';
+        }
+    }
+    dtm::test::write_file(dir / "bowl.csv", csv.str());
+    double rmse[2] = {0.0, 0.0};
+    const char* methods[2] = {"linear", "CUBIC"};
+    for (int m = 0; m < 2; ++m) {
+        const auto out = dir / (std::string(methods[m]) + ".tif");
+        const auto r = dtm::test::run_dtm({"grid", (dir / "bowl.csv").string(), "-o", out.string(),
+                                           "--cell", "1", "--extent", "10,10,50,50",
+                                           "--interpolation", methods[m], "-q"});
+        ASSERT_EQ(r.exit_code, 0) << r.err;
+        Dataset ds = open_raster(out);
+        ASSERT_TRUE(ds);
+        std::vector<float> v(40 * 40);
+        ASSERT_EQ(ds->GetRasterBand(1)->RasterIO(GF_Read, 0, 0, 40, 40, v.data(), 40, 40,
+                                                 GDT_Float32, 0, 0, nullptr),
+                  CE_None);
+        double sum = 0.0;
+        for (int row = 0; row < 40; ++row) {
+            for (int col = 0; col < 40; ++col) {
+                const double e =
+                    v[static_cast<std::size_t>(row * 40 + col)] - bowl(10.5 + col, 49.5 - row);
+                sum += e * e;
+            }
+        }
+        rmse[m] = std::sqrt(sum / 1600.0);
+    }
+    EXPECT_LT(rmse[1], 0.2 * rmse[0]) << "linear " << rmse[0] << ", cubic " << rmse[1];
+    const auto lines = dtm::test::run_dtm({"contour", (dir / "bowl.csv").string(), "-o",
+                                           (dir / "c.geojson").string(), "--interval", "1",
+                                           "--interpolation", "cubic", "-q"});
+    EXPECT_EQ(lines.exit_code, 0) << lines.err;
+    EXPECT_TRUE(std::filesystem::exists(dir / "c.geojson"));
+    const auto bad =
+        dtm::test::run_dtm({"grid", (dir / "bowl.csv").string(), "-o", (dir / "x.tif").string(),
+                            "--cell", "1", "--interpolation", "spline"});
+    EXPECT_EQ(bad.exit_code, 2);
+    EXPECT_NE(bad.err.find("--interpolation"), std::string::npos) << bad.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "x.tif"));
 }
 
 }  // namespace

@@ -12,8 +12,7 @@ namespace {
 
 using dtm::io::PenRole;
 
-TEST(HpglArgs, PenRolesAndListsParseAndRejectNonsense)
-{
+TEST(HpglArgs, PenRolesAndListsParseAndRejectNonsense) {
     const auto roles = dtm::cli::parse_pen_roles(
         "2=breakline, 3=boundary,4=hole,1=ignore,5=soft-breakline,6=points,7=soft");
     EXPECT_EQ(roles.size(), 7u);
@@ -28,13 +27,13 @@ TEST(HpglArgs, PenRolesAndListsParseAndRejectNonsense)
     EXPECT_THROW((void)dtm::cli::parse_pen_list("5;6"), dtm::UsageError);
 }
 
-TEST(HpglArgs, MessagesNameTheFlagAndTheItem)
-{
+TEST(HpglArgs, MessagesNameTheFlagAndTheItem) {
     try {
         (void)dtm::cli::parse_pen_roles("2=breakline,3=ridge");
         FAIL() << "no exception";
     } catch (const dtm::UsageError& e) {
-        EXPECT_EQ(std::string(e.what()).rfind("--hpgl-pens: unknown role 'ridge'", 0), 0u) << e.what();
+        EXPECT_EQ(std::string(e.what()).rfind("--hpgl-pens: unknown role 'ridge'", 0), 0u)
+            << e.what();
     }
 }
 

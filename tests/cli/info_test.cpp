@@ -10,13 +10,11 @@ namespace {
 
 using dtm::test::run_dtm;
 
-bool contains(const std::string& text, const std::string& part)
-{
+bool contains(const std::string& text, const std::string& part) {
     return text.find(part) != std::string::npos;
 }
 
-TEST(CliInfo, JsonListsEveryInputWithItsCounts)
-{
+TEST(CliInfo, JsonListsEveryInputWithItsCounts) {
     const auto points = dtm::test::data_path("readers/czech_list.csv").string();
     const auto lines = dtm::test::data_path("readers/polylines.csv").string();
     const auto r = run_dtm({"info", points, "--breaklines", lines, "--crs", "EPSG:5514", "--json"});
@@ -32,8 +30,7 @@ TEST(CliInfo, JsonListsEveryInputWithItsCounts)
     EXPECT_TRUE(contains(r.out, "\"duplicates\": 0, \"skipped_lines\": 0")) << r.out;
 }
 
-TEST(CliInfo, TableShowsSkippedLinesAndWarnings)
-{
+TEST(CliInfo, TableShowsSkippedLinesAndWarnings) {
     const auto bad = dtm::test::data_path("readers/malformed.csv").string();
     const auto r = run_dtm({"info", bad, "--skip-bad-lines"});
     ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -41,8 +38,7 @@ TEST(CliInfo, TableShowsSkippedLinesAndWarnings)
     EXPECT_TRUE(contains(r.out, "skipped line 4:")) << r.out;
 }
 
-TEST(CliInfo, BadLineExitsTwoWithLocation)
-{
+TEST(CliInfo, BadLineExitsTwoWithLocation) {
     const auto bad = dtm::test::data_path("readers/malformed.csv").string();
     const auto r = run_dtm({"info", bad});
     EXPECT_EQ(r.exit_code, 2);
@@ -50,20 +46,17 @@ TEST(CliInfo, BadLineExitsTwoWithLocation)
     EXPECT_TRUE(r.out.empty());
 }
 
-TEST(CliInfo, MissingFileIsAUsageError)
-{
+TEST(CliInfo, MissingFileIsAUsageError) {
     const auto r = run_dtm({"info", "/nonexistent/points.csv"});
     EXPECT_EQ(r.exit_code, 2);
 }
 
-TEST(CliInfo, HurdvilleSurveyWithBoundaryAndHoles)
-{
+TEST(CliInfo, HurdvilleSurveyWithBoundaryAndHoles) {
     const std::string d = "points-breaklines-pputils-hurdville/";
     if (!dtm::test::shared_data_available(d + "nodes.csv")) GTEST_SKIP();
     const auto p = [&](const char* f) { return dtm::test::shared_data_path(d + f).string(); };
     const auto r = run_dtm({"info", p("nodes.csv"), "--soft-breaklines", p("lines.csv"),
-                            "--boundary", p("boundary.csv"), "--holes", p("holes.csv"),
-                            "--json"});
+                            "--boundary", p("boundary.csv"), "--holes", p("holes.csv"), "--json"});
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_TRUE(contains(r.out, "\"points\": 5552,")) << r.out;
     EXPECT_TRUE(contains(r.out, "\"duplicates\": 124,")) << r.out;
@@ -73,8 +66,7 @@ TEST(CliInfo, HurdvilleSurveyWithBoundaryAndHoles)
     EXPECT_TRUE(contains(r.out, "\"holes\": 16,")) << r.out;
 }
 
-TEST(CliInfo, ShapefilesReportTheirPrjCrs)
-{
+TEST(CliInfo, ShapefilesReportTheirPrjCrs) {
     const std::string f = "points-cz-sjtsk-jvf-dtm/derived/zps_points_pointz.shp";
     if (!dtm::test::shared_data_available(f)) GTEST_SKIP();
     const auto r = run_dtm({"info", dtm::test::shared_data_path(f).string(), "--json"});
@@ -87,24 +79,24 @@ TEST(CliInfo, ShapefilesReportTheirPrjCrs)
 
 namespace {
 
-TEST(CliInputs, RepeatableRoleOptionsTakeOneFileEachAndLeavePositionalsAlone)
-{
+TEST(CliInputs, RepeatableRoleOptionsTakeOneFileEachAndLeavePositionalsAlone) {
     const auto lines = dtm::test::data_path("readers/polylines.csv").string();
     const auto points = dtm::test::data_path("readers/count_line.xyz").string();
-    const auto r = run_dtm({"info", "--breaklines", lines, points, "--holes", lines, "--holes",
-                            points, "--json"});
+    const auto r = run_dtm(
+        {"info", "--breaklines", lines, points, "--holes", lines, "--holes", points, "--json"});
     ASSERT_EQ(r.exit_code, 0) << r.err;
     // order: positional points, then breaklines, then holes
-    const auto first = r.out.find("\"path\": \"" + points + "\", \"format\": \"text\", \"crs\": "
+    const auto first = r.out.find("\"path\": \"" + points +
+                                  "\", \"format\": \"text\", \"crs\": "
                                   "null, \"points\": 3,");
     EXPECT_NE(first, std::string::npos) << r.out;
-    EXPECT_TRUE(contains(r.out, "\"points\": 0, \"breaklines\": 0, \"breakline_vertices\": 0, "
-                                "\"boundaries\": 0, \"holes\": 3,"))
+    EXPECT_TRUE(contains(r.out,
+                         "\"points\": 0, \"triangles\": 0, \"breaklines\": 0, "
+                         "\"breakline_vertices\": 0, \"boundaries\": 0, \"holes\": 3,"))
         << r.out;  // the point file given as --holes: 3 seeds
 }
 
-TEST(CliInputs, HurdvilleSurveyTriangulatesWithBoundaryAndHoles)
-{
+TEST(CliInputs, HurdvilleSurveyTriangulatesWithBoundaryAndHoles) {
     const std::string d = "points-breaklines-pputils-hurdville/";
     if (!dtm::test::shared_data_available(d + "nodes.csv")) GTEST_SKIP();
     const auto p = [&](const char* f) { return dtm::test::shared_data_path(d + f).string(); };

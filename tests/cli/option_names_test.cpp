@@ -15,8 +15,7 @@
 
 namespace {
 
-TEST(OptionNames, FieldsInBackquotesBecomeFlags)
-{
+TEST(OptionNames, FieldsInBackquotesBecomeFlags) {
     EXPECT_EQ(dtm::cli::cli_text("`z_field`: expected a field named 'h'"),
               "--z-field: expected a field named 'h'");
     EXPECT_EQ(dtm::cli::cli_text("see `hpgl.pens`; no `default_crs` given"),
@@ -24,8 +23,7 @@ TEST(OptionNames, FieldsInBackquotesBecomeFlags)
     EXPECT_EQ(dtm::cli::cli_text("build: `out_dir` out is a file"), "build: -o out is a file");
 }
 
-TEST(OptionNames, OtherTextAndUnknownNamesAreKept)
-{
+TEST(OptionNames, OtherTextAndUnknownNamesAreKept) {
     EXPECT_EQ(dtm::cli::cli_text("expected `ND id x y z`"), "expected `ND id x y z`");
     EXPECT_EQ(dtm::cli::cli_text("`nope` and `z_field`"), "`nope` and --z-field");
     EXPECT_EQ(dtm::cli::cli_text("one ` quote"), "one ` quote");
@@ -33,8 +31,7 @@ TEST(OptionNames, OtherTextAndUnknownNamesAreKept)
     EXPECT_EQ(dtm::cli::flag_of("nope"), "");
 }
 
-TEST(OptionNames, EveryFieldTheLibraryNamesHasAFlag)
-{
+TEST(OptionNames, EveryFieldTheLibraryNamesHasAFlag) {
     const std::filesystem::path root = std::filesystem::path(DTM_SOURCE_DIR) / "libdtm";
     // every string literal on lines of code (comments may speak of `field`), and in it every
     // `name` or `name.name`

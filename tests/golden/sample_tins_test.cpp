@@ -24,11 +24,12 @@ namespace fs = std::filesystem;
 namespace {
 
 fs::path samples() { return fs::path(DTM_SOURCE_DIR) / "samples"; }
-fs::path expected_file() { return fs::path(DTM_SOURCE_DIR) / "tests/golden/expected/sample_tins.txt"; }
+fs::path expected_file() {
+    return fs::path(DTM_SOURCE_DIR) / "tests/golden/expected/sample_tins.txt";
+}
 
 /// The inputs of the README's runs of each sample.
-std::map<std::string, dtm::io::LoadOptions> sample_inputs()
-{
+std::map<std::string, dtm::io::LoadOptions> sample_inputs() {
     using dtm::io::InputRole;
     std::map<std::string, dtm::io::LoadOptions> all;
     const fs::path s = samples() / "sjtsk";
@@ -59,8 +60,7 @@ std::map<std::string, dtm::io::LoadOptions> sample_inputs()
 }
 
 /// FNV-1a, 64 bits, of a file's bytes, as 16 hex digits.
-std::string digest(const fs::path& file)
-{
+std::string digest(const fs::path& file) {
     std::uint64_t h = 0xcbf29ce484222325ULL;
     for (const char c : dtm::test::read_file(file)) {
         h = (h ^ static_cast<unsigned char>(c)) * 0x100000001b3ULL;
@@ -70,8 +70,7 @@ std::string digest(const fs::path& file)
     return text;
 }
 
-std::map<std::string, std::string> read_expected()
-{
+std::map<std::string, std::string> read_expected() {
     std::map<std::string, std::string> expected;
     std::istringstream lines(dtm::test::read_file(expected_file()));
     std::string name, value;
@@ -79,13 +78,12 @@ std::map<std::string, std::string> read_expected()
     return expected;
 }
 
-bool update_goldens()
-{
-    return std::getenv("DTM_UPDATE_GOLDEN") != nullptr || std::getenv("DTM_UPDATE_GOLDENS") != nullptr;
+bool update_goldens() {
+    return std::getenv("DTM_UPDATE_GOLDEN") != nullptr ||
+           std::getenv("DTM_UPDATE_GOLDENS") != nullptr;
 }
 
-TEST(SampleTins, DigestsAreTheSameForEveryTileCountAndMatchTheCommittedOnes)
-{
+TEST(SampleTins, DigestsAreTheSameForEveryTileCountAndMatchTheCommittedOnes) {
     const dtm::test::ScratchDir dir;
     const std::map<std::string, std::string> expected = read_expected();
     std::map<std::string, std::string> found;
@@ -96,7 +94,8 @@ TEST(SampleTins, DigestsAreTheSameForEveryTileCountAndMatchTheCommittedOnes)
             triangulation.tiles = tiles;
             const dtm::products::Surface surface = dtm::products::surface(loaded, triangulation);
             const fs::path ply = dir / (name + "-" + std::to_string(tiles) + ".ply");
-            dtm::io::write_tin_ply(surface.result.tin, ply, {.crs_wkt = loaded.crs_wkt, .ascii = false});
+            dtm::io::write_tin_ply(surface.result.tin, ply,
+                                   {.crs_wkt = loaded.crs_wkt, .ascii = false});
             const std::string d = digest(ply);
             if (tiles == 1) {
                 found[name] = d;
@@ -108,7 +107,8 @@ TEST(SampleTins, DigestsAreTheSameForEveryTileCountAndMatchTheCommittedOnes)
             const auto it = expected.find(name);
             ASSERT_NE(it, expected.end()) << name << " has no digest in " << expected_file();
             EXPECT_EQ(found[name], it->second)
-                << name << ": the TIN changed (DTM_UPDATE_GOLDEN=1 rewrites the digests if intended)";
+                << name
+                << ": the TIN changed (DTM_UPDATE_GOLDEN=1 rewrites the digests if intended)";
         }
     }
     if (update_goldens()) {

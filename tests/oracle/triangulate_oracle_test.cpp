@@ -15,25 +15,25 @@ namespace dtm {
 namespace {
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Cdt = CGAL::Constrained_Delaunay_triangulation_2<K, CGAL::Default, CGAL::Exact_predicates_tag>;
+using Cdt =
+    CGAL::Constrained_Delaunay_triangulation_2<K, CGAL::Default, CGAL::Exact_predicates_tag>;
 using Dt = CGAL::Delaunay_triangulation_2<K>;
 
 template <class T>
-std::set<test::XyTriangle> cgal_triangle_set(const T& t)
-{
+std::set<test::XyTriangle> cgal_triangle_set(const T& t) {
     std::set<test::XyTriangle> out;
     for (auto f = t.finite_faces_begin(); f != t.finite_faces_end(); ++f) {
         test::XyTriangle tri;
         for (int i = 0; i < 3; ++i) tri[i] = {f->vertex(i)->point().x(), f->vertex(i)->point().y()};
         int k = 0;
-        for (int i = 1; i < 3; ++i) if (tri[i] < tri[k]) k = i;
+        for (int i = 1; i < 3; ++i)
+            if (tri[i] < tri[k]) k = i;
         out.insert({tri[k], tri[(k + 1) % 3], tri[(k + 2) % 3]});
     }
     return out;
 }
 
-std::vector<K::Point_2> cgal_points(const std::vector<Point3>& pts)
-{
+std::vector<K::Point_2> cgal_points(const std::vector<Point3>& pts) {
     std::vector<K::Point_2> out;
     for (const Point3& p : pts) out.emplace_back(p.x, p.y);
     return out;
@@ -41,8 +41,7 @@ std::vector<K::Point_2> cgal_points(const std::vector<Point3>& pts)
 
 class OracleSeeds : public ::testing::TestWithParam<std::uint32_t> {};
 
-TEST_P(OracleSeeds, DelaunayEqualsCgalOnRandomPoints)
-{
+TEST_P(OracleSeeds, DelaunayEqualsCgalOnRandomPoints) {
     TerrainInput input;
     input.points = test::random_points(20000, GetParam(), test::sjtsk_e, test::sjtsk_n);
     const auto pts = cgal_points(input.points);
@@ -50,8 +49,7 @@ TEST_P(OracleSeeds, DelaunayEqualsCgalOnRandomPoints)
     EXPECT_EQ(test::triangle_set(triangulate(input).tin), cgal_triangle_set(dt));
 }
 
-TEST_P(OracleSeeds, ConstrainedDelaunayEqualsCgalWithBreaklines)
-{
+TEST_P(OracleSeeds, ConstrainedDelaunayEqualsCgalWithBreaklines) {
     TerrainInput input;
     input.points = test::random_points(10000, GetParam(), test::sjtsk_e, test::sjtsk_n);
     std::mt19937_64 rng(GetParam() + 100);

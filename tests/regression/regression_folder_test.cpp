@@ -9,8 +9,7 @@
 
 namespace {
 
-TEST(RegressionFolder, TestsAreNamedAfterTheirIssue)
-{
+TEST(RegressionFolder, TestsAreNamedAfterTheirIssue) {
     const std::filesystem::path folder = std::filesystem::path(DTM_SOURCE_DIR) / "tests/regression";
     const std::regex name(R"(issue_\d{4}_[a-z0-9_]+_test\.cpp)");
     for (const auto& entry : std::filesystem::directory_iterator(folder)) {

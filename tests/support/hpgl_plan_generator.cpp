@@ -21,15 +21,14 @@ struct Spot {
 
 std::string text(long long v) { return std::to_string(v); }
 
-std::string height_text(const Spot& s)
-{
+std::string height_text(const Spot& s) {
     char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%lld%c%02lld", s.cm / 100, s.comma ? ',' : '.', s.cm % 100);
+    std::snprintf(buffer, sizeof buffer, "%lld%c%02lld", s.cm / 100, s.comma ? ',' : '.',
+                  s.cm % 100);
     return buffer;
 }
 
-std::string number17(double v)
-{
+std::string number17(double v) {
     char buffer[40];
     std::snprintf(buffer, sizeof buffer, "%.17g", v);
     return buffer;
@@ -39,19 +38,23 @@ struct Layout {
     int cols, rows;
     std::vector<Spot> spots;
     long long frame_x, frame_y;  // upper-right frame corner
-    [[nodiscard]] const Spot& at(int i, int j) const { return spots[static_cast<std::size_t>(j * cols + i)]; }
-    [[nodiscard]] std::pair<long long, long long> xy(int i, int j) const { return {at(i, j).x, at(i, j).y}; }
+    [[nodiscard]] const Spot& at(int i, int j) const {
+        return spots[static_cast<std::size_t>(j * cols + i)];
+    }
+    [[nodiscard]] std::pair<long long, long long> xy(int i, int j) const {
+        return {at(i, j).x, at(i, j).y};
+    }
 };
 
 using Vertex = std::pair<long long, long long>;
 
-Layout make_layout(const HpglPlanOptions& o)
-{
+Layout make_layout(const HpglPlanOptions& o) {
     Layout l{o.columns, o.rows, {}, 0, 0};
     for (int j = 0; j < o.rows; ++j) {
         for (int i = 0; i < o.columns; ++i) {
             const long long cm = 30000 + 37 * i + 53 * j + (i * 7 + j * 3) % 10;
-            l.spots.push_back({first + spacing * i, first + spacing * j, cm, (i + 2 * j) % 4, (i + j) % 3 == 1});
+            l.spots.push_back(
+                {first + spacing * i, first + spacing * j, cm, (i + 2 * j) % 4, (i + j) % 3 == 1});
         }
     }
     l.frame_x = first + spacing * (o.columns - 1) + 1000;
@@ -59,8 +62,7 @@ Layout make_layout(const HpglPlanOptions& o)
     return l;
 }
 
-std::vector<Vertex> row_breakline(const Layout& l)
-{
+std::vector<Vertex> row_breakline(const Layout& l) {
     std::vector<Vertex> v;
     for (int i = 0; i < l.cols; ++i) {
         const auto [x, y] = l.xy(i, 1);
@@ -73,8 +75,7 @@ std::vector<Vertex> row_breakline(const Layout& l)
     return v;
 }
 
-std::vector<Vertex> column_breakline(const Layout& l)
-{
+std::vector<Vertex> column_breakline(const Layout& l) {
     std::vector<Vertex> v;
     for (int j = 2; j < l.rows; ++j) {
         const auto [x, y] = l.xy(1, j);
@@ -84,10 +85,11 @@ std::vector<Vertex> column_breakline(const Layout& l)
     return v;
 }
 
-std::vector<Vertex> soft_line() { return {{first + 400, first + 300}, {first + 800, first + 350}, {first + 1200, first + 300}}; }
+std::vector<Vertex> soft_line() {
+    return {{first + 400, first + 300}, {first + 800, first + 350}, {first + 1200, first + 300}};
+}
 
-std::vector<Vertex> boundary_ring(const Layout& l)
-{
+std::vector<Vertex> boundary_ring(const Layout& l) {
     std::vector<Vertex> v;
     for (int i = 0; i < l.cols; ++i) v.push_back(l.xy(i, 0));
     for (int j = 1; j < l.rows; ++j) v.push_back(l.xy(l.cols - 1, j));
@@ -96,15 +98,13 @@ std::vector<Vertex> boundary_ring(const Layout& l)
     return v;
 }
 
-std::vector<Vertex> hole_ring(const Layout& l)
-{
+std::vector<Vertex> hole_ring(const Layout& l) {
     const auto a = l.xy(2, 2);
     return {a, {a.first + 400, a.second}, l.xy(3, 2), l.xy(3, 3), l.xy(2, 3)};
 }
 
 /// Height of a vertex: the spot height on it, else linear along the polyline between them.
-std::vector<double> line_heights(const Layout& l, const std::vector<Vertex>& v, bool closed)
-{
+std::vector<double> line_heights(const Layout& l, const std::vector<Vertex>& v, bool closed) {
     std::vector<double> z(v.size(), std::nan(""));
     for (std::size_t k = 0; k < v.size(); ++k) {
         for (const Spot& s : l.spots) {
@@ -127,115 +127,130 @@ std::vector<double> line_heights(const Layout& l, const std::vector<Vertex>& v, 
     return z;
 }
 
-std::string plain_polyline(const std::vector<Vertex>& v, bool close)
-{
+std::string plain_polyline(const std::vector<Vertex>& v, bool close) {
     std::string s = "PU" + text(v[0].first) + "," + text(v[0].second) + ";PD";
-    for (std::size_t k = 1; k < v.size(); ++k) s += (k > 1 ? "," : "") + text(v[k].first) + "," + text(v[k].second);
+    for (std::size_t k = 1; k < v.size(); ++k)
+        s += (k > 1 ? "," : "") + text(v[k].first) + "," + text(v[k].second);
     if (close) s += "," + text(v[0].first) + "," + text(v[0].second);
     return s + ";PU;";
 }
 
 /// PE: pen-up absolute move to the first vertex, relative draws to the others.
-std::string pe_polyline(const std::vector<Vertex>& v, bool close, bool seven_bit, int fraction_bits)
-{
+std::string pe_polyline(const std::vector<Vertex>& v,
+                        bool close,
+                        bool seven_bit,
+                        int fraction_bits) {
     const long long f = 1LL << fraction_bits;
     std::string s = "PE";
     if (seven_bit) s += "7";
     if (fraction_bits > 0) s += ">" + encode_pe_number(fraction_bits, seven_bit);
-    s += "<=" + encode_pe_number(v[0].first * f, seven_bit) + encode_pe_number(v[0].second * f, seven_bit);
+    s += "<=" + encode_pe_number(v[0].first * f, seven_bit) +
+         encode_pe_number(v[0].second * f, seven_bit);
     std::vector<Vertex> path(v.begin() + 1, v.end());
     if (close) path.push_back(v[0]);
     Vertex at = v[0];
     for (const Vertex& p : path) {
-        s += encode_pe_number((p.first - at.first) * f, seven_bit) + encode_pe_number((p.second - at.second) * f, seven_bit);
+        s += encode_pe_number((p.first - at.first) * f, seven_bit) +
+             encode_pe_number((p.second - at.second) * f, seven_bit);
         at = p;
     }
     return s;
 }
 
-std::string plain_marker(const Spot& s)
-{
+std::string plain_marker(const Spot& s) {
     const std::string xy = text(s.x) + "," + text(s.y);
     if (s.style == 0) return "PU;SM*;PA" + xy + ";SM;";
     if (s.style == 1) return "PU;PA" + xy + ";CI20;";
     if (s.style == 3) {
         std::string arms = "PU;";
-        for (const auto& [dx, dy] : {Vertex{arm, 0}, Vertex{-arm, 0}, Vertex{0, arm}, Vertex{0, -arm}}) {
+        for (const auto& [dx, dy] :
+             {Vertex{arm, 0}, Vertex{-arm, 0}, Vertex{0, arm}, Vertex{0, -arm}}) {
             arms += "PU" + xy + ";PD" + text(s.x + dx) + "," + text(s.y + dy) + ";";
         }
         return arms + "PU;";
     }
-    return "PU" + text(s.x - arm) + "," + text(s.y) + ";PD" + text(s.x + arm) + "," + text(s.y) + ";PU" +
-           text(s.x) + "," + text(s.y - arm) + ";PD" + text(s.x) + "," + text(s.y + arm) + ";PU;";
+    return "PU" + text(s.x - arm) + "," + text(s.y) + ";PD" + text(s.x + arm) + "," + text(s.y) +
+           ";PU" + text(s.x) + "," + text(s.y - arm) + ";PD" + text(s.x) + "," + text(s.y + arm) +
+           ";PU;";
 }
 
-std::string pe_marker(const Spot& s)
-{
+std::string pe_marker(const Spot& s) {
     const std::string xy = text(s.x) + "," + text(s.y);
     if (s.style == 0) return "PUSM*PA" + xy + "SM;";
     if (s.style == 1) return "PUPA" + xy + "CI20";
     if (s.style == 3) {
         const auto e = [](long long v) { return encode_pe_number(v); };
-        return "PE<=" + e(s.x) + e(s.y) + e(arm) + e(0) + "<" + e(-arm) + e(0) + e(-arm) + e(0) + "<" + e(arm) +
-               e(0) + e(0) + e(arm) + "<" + e(0) + e(-arm) + e(0) + e(-arm) + ";PU";  // PE leaves the pen down
+        return "PE<=" + e(s.x) + e(s.y) + e(arm) + e(0) + "<" + e(-arm) + e(0) + e(-arm) + e(0) +
+               "<" + e(arm) + e(0) + e(0) + e(arm) + "<" + e(0) + e(-arm) + e(0) + e(-arm) +
+               ";PU";  // PE leaves the pen down
     }
-    return "PE<=" + encode_pe_number(s.x - arm) + encode_pe_number(s.y) + encode_pe_number(2 * arm) +
-           encode_pe_number(0) + "<" + encode_pe_number(-arm) + encode_pe_number(-arm) + encode_pe_number(0) +
-           encode_pe_number(2 * arm) + ";PU";
+    return "PE<=" + encode_pe_number(s.x - arm) + encode_pe_number(s.y) +
+           encode_pe_number(2 * arm) + encode_pe_number(0) + "<" + encode_pe_number(-arm) +
+           encode_pe_number(-arm) + encode_pe_number(0) + encode_pe_number(2 * arm) + ";PU";
 }
 
-std::vector<std::pair<Vertex, std::string>> parcel_numbers(const Layout& l)
-{
+std::vector<std::pair<Vertex, std::string>> parcel_numbers(const Layout& l) {
     std::vector<std::pair<Vertex, std::string>> out;
     int number = 101;
     for (int j = 0; j + 1 < l.rows; j += 2) {
         for (int i = 0; i + 1 < l.cols; i += 2) {
-            out.push_back({{l.at(i, j).x + spacing / 2, l.at(i, j).y + spacing / 2}, text(number++)});
+            out.push_back(
+                {{l.at(i, j).x + spacing / 2, l.at(i, j).y + spacing / 2}, text(number++)});
         }
     }
     return out;
 }
 
-std::string write_plain(const Layout& l)
-{
+std::string write_plain(const Layout& l) {
     std::string s = "IN;IP;SC;SP1;DI1,0;SI0.15,0.2;";
-    s += plain_polyline({{1000, 1000}, {l.frame_x, 1000}, {l.frame_x, l.frame_y}, {1000, l.frame_y}}, true);
+    s += plain_polyline(
+        {{1000, 1000}, {l.frame_x, 1000}, {l.frame_x, l.frame_y}, {1000, l.frame_y}}, true);
     for (const Spot& spot : l.spots) {
-        s += plain_marker(spot) + "PA" + text(spot.x + 60) + "," + text(spot.y + 40) + ";LB" + height_text(spot) + "\x03\n";
+        s += plain_marker(spot) + "PA" + text(spot.x + 60) + "," + text(spot.y + 40) + ";LB" +
+             height_text(spot) + "\x03\n";
     }
-    for (const auto& [at, label] : parcel_numbers(l)) s += "PA" + text(at.first) + "," + text(at.second) + ";LB" + label + "\x03";
+    for (const auto& [at, label] : parcel_numbers(l))
+        s += "PA" + text(at.first) + "," + text(at.second) + ";LB" + label + "\x03";
     s += "PA1200," + text(l.frame_y - 300) + ";LBVYSKOVY PLAN 1:500\x03\n";
-    s += "SP2;" + plain_polyline(row_breakline(l), false) + plain_polyline(column_breakline(l), false) +
-         plain_polyline(soft_line(), false) + "\n";
-    s += "SP3;" + plain_polyline(boundary_ring(l), true) + "\nSP4;" + plain_polyline(hole_ring(l), true);
+    s += "SP2;" + plain_polyline(row_breakline(l), false) +
+         plain_polyline(column_breakline(l), false) + plain_polyline(soft_line(), false) + "\n";
+    s += "SP3;" + plain_polyline(boundary_ring(l), true) + "\nSP4;" +
+         plain_polyline(hole_ring(l), true);
     return s + "SP0;\n";
 }
 
-std::string write_pcl(const Layout& l)
-{
+std::string write_pcl(const Layout& l) {
     std::string s = "\x1b%-12345X@PJL JOB NAME=\"height plan\"\r\n@PJL ENTER LANGUAGE=PCL\r\n";
-    s += "\x1b" "E\x1b&l1O\x1b*t300R\x1b*r1A\x1b*b6W";
+    s += "\x1b"
+         "E\x1b&l1O\x1b*t300R\x1b*r1A\x1b*b6W";
     s += std::string("PD\xff\x00\x1b;", 6);  // raster bytes: skipped by count, never parsed
-    s += "\x1b*rB\x1b%1BBPINPS" + text(l.frame_x + 1000) + "," + text(l.frame_y + 1000) + "RO0SP1PW0.25DI1,0SI0.15,0.2";
-    s += pe_polyline({{1000, 1000}, {l.frame_x, 1000}, {l.frame_x, l.frame_y}, {1000, l.frame_y}}, true, false, 0) + ";";
+    s += "\x1b*rB\x1b%1BBPINPS" + text(l.frame_x + 1000) + "," + text(l.frame_y + 1000) +
+         "RO0SP1PW0.25DI1,0SI0.15,0.2";
+    s += pe_polyline({{1000, 1000}, {l.frame_x, 1000}, {l.frame_x, l.frame_y}, {1000, l.frame_y}},
+                     true, false, 0) +
+         ";";
     std::size_t k = 0;
     for (const Spot& spot : l.spots) {
         s += pe_marker(spot) + "PA" + text(spot.x + 60) + "," + text(spot.y + 40);
-        s += (k++ % 4 == 3) ? "DT@,1;LB" + height_text(spot) + "@DT;" : "LB" + height_text(spot) + "\x03";
+        s += (k++ % 4 == 3) ? "DT@,1;LB" + height_text(spot) + "@DT;"
+                            : "LB" + height_text(spot) + "\x03";
     }
-    for (const auto& [at, label] : parcel_numbers(l)) s += "PA" + text(at.first) + "," + text(at.second) + "LB" + label + "\x03";
+    for (const auto& [at, label] : parcel_numbers(l))
+        s += "PA" + text(at.first) + "," + text(at.second) + "LB" + label + "\x03";
     s += "PA1200," + text(l.frame_y - 300) + "LBVYSKOVY PLAN 1:500\x03";
-    s += "SP2" + pe_polyline(row_breakline(l), false, false, 1) + ";" + pe_polyline(column_breakline(l), false, true, 0) +
-         ";" + pe_polyline(soft_line(), false, false, 0);  // no ';': ended by the next instruction
+    s += "SP2" + pe_polyline(row_breakline(l), false, false, 1) + ";" +
+         pe_polyline(column_breakline(l), false, true, 0) + ";" +
+         pe_polyline(soft_line(), false, false, 0);  // no ';': ended by the next instruction
     s += "SP3" + pe_polyline(boundary_ring(l), true, false, 0) + ";";
     s += "PE:" + encode_pe_number(4) + pe_polyline(hole_ring(l), true, false, 0).substr(2) + ";";
-    return s + "PUSP0PG;\x1b%0A\x1b" "E\x1b%-12345X@PJL EOJ\r\n\x1b%-12345X";
+    return s +
+           "PUSP0PG;\x1b%0A\x1b"
+           "E\x1b%-12345X@PJL EOJ\r\n\x1b%-12345X";
 }
 
 }  // namespace
 
-std::string encode_pe_number(long long value, bool seven_bit)
-{
+std::string encode_pe_number(long long value, bool seven_bit) {
     unsigned long long u = value < 0 ? static_cast<unsigned long long>(-value) * 2 + 1
                                      : static_cast<unsigned long long>(value) * 2;
     const unsigned base = seven_bit ? 32 : 64;
@@ -251,16 +266,14 @@ std::string encode_pe_number(long long value, bool seven_bit)
     }
 }
 
-Point2 HpglPlan::to_ground(Point2 p) const
-{
+Point2 HpglPlan::to_ground(Point2 p) const {
     const double m = options.scale / 1000.0 / 40.0;
     const double r = options.rotation_deg * std::numbers::pi / 180.0;
     const double c = std::cos(r), s = std::sin(r);
     return {options.origin_e + m * (c * p.x - s * p.y), options.origin_n + m * (s * p.x + c * p.y)};
 }
 
-HpglPlan make_hpgl_plan(const HpglPlanOptions& options)
-{
+HpglPlan make_hpgl_plan(const HpglPlanOptions& options) {
     HpglPlan plan;
     plan.options = options;
     const Layout l = make_layout(options);
@@ -268,7 +281,8 @@ HpglPlan make_hpgl_plan(const HpglPlanOptions& options)
         const auto z = line_heights(l, v, closed);
         std::vector<Point3> out;
         for (std::size_t k = 0; k < v.size(); ++k) {
-            const Point2 g = plan.to_ground({static_cast<double>(v[k].first), static_cast<double>(v[k].second)});
+            const Point2 g =
+                plan.to_ground({static_cast<double>(v[k].first), static_cast<double>(v[k].second)});
             out.push_back({g.x, g.y, z[k]});
         }
         return out;
@@ -279,7 +293,8 @@ HpglPlan make_hpgl_plan(const HpglPlanOptions& options)
     }
     plan.breaklines = {ground3(row_breakline(l), false), ground3(column_breakline(l), false)};
     for (const Vertex& v : soft_line()) {
-        plan.soft_breakline.push_back(plan.to_ground({static_cast<double>(v.first), static_cast<double>(v.second)}));
+        plan.soft_breakline.push_back(
+            plan.to_ground({static_cast<double>(v.first), static_cast<double>(v.second)}));
     }
     plan.boundary = ground3(boundary_ring(l), true);
     plan.hole = ground3(hole_ring(l), true);
@@ -287,15 +302,16 @@ HpglPlan make_hpgl_plan(const HpglPlanOptions& options)
     plan.labels = l.spots.size() + plan.parcel_labels + 1;
     plan.plain_hpgl = write_plain(l);
     plan.pcl_hpgl2 = write_pcl(l);
-    const std::vector<Point2> corners{{1000, 1000},
-                                      {static_cast<double>(l.frame_x), 1000},
-                                      {static_cast<double>(l.frame_x), static_cast<double>(l.frame_y)},
-                                      {1000, static_cast<double>(l.frame_y)}};
+    const std::vector<Point2> corners{
+        {1000, 1000},
+        {static_cast<double>(l.frame_x), 1000},
+        {static_cast<double>(l.frame_x), static_cast<double>(l.frame_y)},
+        {1000, static_cast<double>(l.frame_y)}};
     plan.control_csv = "px,py,E,N\n";
     for (std::size_t k = 0; k < corners.size(); ++k) {
         const Point2 g = plan.to_ground(corners[k]);
-        const std::string row = number17(corners[k].x) + "," + number17(corners[k].y) + "," + number17(g.x) + "," +
-                                number17(g.y) + "\n";
+        const std::string row = number17(corners[k].x) + "," + number17(corners[k].y) + "," +
+                                number17(g.x) + "," + number17(g.y) + "\n";
         plan.control_csv += row;
         if (k == 0 || k == 2) plan.control_csv_two += row;
     }

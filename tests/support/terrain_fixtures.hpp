@@ -23,9 +23,8 @@ inline constexpr double sjtsk_n = -1'050'000.0;
 inline double terrain_z(double x, double y) { return 300.0 + 0.01 * x - 0.02 * y; }
 
 /// @p count uniform random points in [x0, x0 + size) x [y0, y0 + size).
-inline std::vector<Point3> random_points(std::size_t count, std::uint32_t seed, double x0 = 0.0,
-                                         double y0 = 0.0, double size = 1000.0)
-{
+inline std::vector<Point3> random_points(
+    std::size_t count, std::uint32_t seed, double x0 = 0.0, double y0 = 0.0, double size = 1000.0) {
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> u(0.0, size);
     std::vector<Point3> pts(count);
@@ -39,9 +38,8 @@ inline std::vector<Point3> random_points(std::size_t count, std::uint32_t seed, 
 
 /// A regular grid of cols x rows points with spacing @p step, rotated by @p angle radians about
 /// its first point and shifted to (x0, y0): heavily cocircular input.
-inline std::vector<Point3> tilted_grid(int cols, int rows, double step, double angle, double x0,
-                                       double y0)
-{
+inline std::vector<Point3> tilted_grid(
+    int cols, int rows, double step, double angle, double x0, double y0) {
     std::vector<Point3> pts;
     const double c = std::cos(angle);
     const double s = std::sin(angle);
@@ -58,14 +56,14 @@ inline std::vector<Point3> tilted_grid(int cols, int rows, double step, double a
 using XyTriangle = std::array<std::pair<double, double>, 3>;
 
 /// The triangles of @p tin as sets of xy positions, rotated to start at the smallest position.
-inline std::set<XyTriangle> triangle_set(const Tin& tin)
-{
+inline std::set<XyTriangle> triangle_set(const Tin& tin) {
     std::set<XyTriangle> out;
     for (const Triangle& t : tin.triangles) {
         XyTriangle tri;
         for (int i = 0; i < 3; ++i) tri[i] = {tin.vertices[t.v[i]].x, tin.vertices[t.v[i]].y};
         int k = 0;
-        for (int i = 1; i < 3; ++i) if (tri[i] < tri[k]) k = i;
+        for (int i = 1; i < 3; ++i)
+            if (tri[i] < tri[k]) k = i;
         out.insert({tri[k], tri[(k + 1) % 3], tri[(k + 2) % 3]});
     }
     return out;

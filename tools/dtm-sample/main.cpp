@@ -4,6 +4,7 @@
 //
 //   dtm-sample write samples/sjtsk        regenerate every sample file
 //   dtm-sample z -750200 -1050100 ...     true z at S-JTSK (E, N) pairs
+//   dtm-sample z - < pairs.txt            the same for E N pairs read from stdin
 //   dtm-sample render OUT picture.png --breaklines samples/sjtsk/breaklines.shp
 //                                         the README picture from the products of `dtm build`
 #include <CLI/CLI.hpp>
@@ -72,9 +73,10 @@ int main(int argc, char** argv) {
     write->add_option("dir", dir, "Output folder (samples/sjtsk)")->required();
     write->add_option("--spacing", spacing, "Spacing of the spot heights in metres (3.5)")
         ->check(CLI::PositiveNumber);
-    std::vector<double> coordinates;
+    std::vector<std::string> coordinates;
     CLI::App* z = app.add_subcommand("z", "Print the true elevation at E N pairs (EPSG:5514)");
-    z->add_option("coordinates", coordinates, "E N [E N ...]")->required();
+    z->add_option("coordinates", coordinates, "E N [E N ...], or - to read the pairs from stdin")
+        ->required();
     std::string build_dir;
     std::string png;
     dtm::sample::RenderOptions render_options;
@@ -96,7 +98,20 @@ int main(int argc, char** argv) {
             dtm::sample::render_picture(build_dir, png, render_options);
             return 0;
         }
-        return write->parsed() ? write_sample(dir, spacing) : print_z(coordinates);
+        if (write->parsed()) {
+            return write_sample(dir, spacing);
+        }
+        std::vector<double> values;
+        if (coordinates.size() == 1 && coordinates[0] == "-") {
+            for (double v = 0.0; std::cin >> v;) {
+                values.push_back(v);
+            }
+        } else {
+            for (const std::string& c : coordinates) {
+                values.push_back(std::stod(c));
+            }
+        }
+        return print_z(values);
     } catch (const std::exception& e) {
         std::cerr << "dtm-sample: " << e.what() << '\n';
         return 1;

@@ -8,8 +8,10 @@
 #include <string>
 
 #include "command.hpp"
+#include "contour_flats_args.hpp"
 #include "dtm/products/build.hpp"
 #include "input_args.hpp"
+#include "interpolation_args.hpp"
 #include "option_names.hpp"
 #include "terminal_progress.hpp"
 #include "tin_args.hpp"
@@ -26,8 +28,7 @@ struct BuildArgs {
 };
 
 /// One short paragraph on stdout: what was built and where the report is.
-void print_summary(const products::BuildReport& r, const std::string& out_dir)
-{
+void print_summary(const products::BuildReport& r, const std::string& out_dir) {
     const PointFate& points = r.accounting.survey_points;
     std::printf(
         "dtm build: %zu points read (%zu used, %zu merged duplicates, %zu outside the "
@@ -39,13 +40,21 @@ void print_summary(const products::BuildReport& r, const std::string& out_dir)
         r.surface.vertex_count, r.surface.triangle_count, r.surface.constraint_count,
         r.conflicts.size(), r.dem.cols, r.dem.rows, r.dem.cell, r.contour_lines,
         r.contour_interval);
+    if (r.map_scale > 0.0) {
+        std::printf("dtm build: map.pdf at 1:%g, %zu contour labels (%zu positions without room)\n",
+                    r.map_scale, r.map_labels, r.map_label_failures);
+    }
+    if (r.has_volume) {
+        std::printf("dtm build: against the base: fill %.3f, cut %.3f, net %.3f (volume/)\n",
+                    r.volume.fill, r.volume.cut, r.volume.net());
+    }
     std::printf("dtm build: products and report.json in %s\n", out_dir.c_str());
 }
 
-int run_build(BuildArgs& args)
-{
+int run_build(BuildArgs& args) {
     const Progress progress = terminal_progress("build", args.quiet);
     args.build.wording = cli_text;
+    args.build.flat_areas.assign(args.input.flat_areas.begin(), args.input.flat_areas.end());
     if (!args.base.inputs.empty()) {
         InputArgs base = args.base;
         base.read = args.input.read;  // the reader options are the command's
@@ -54,14 +63,8 @@ int run_build(BuildArgs& args)
     }
     const products::BuildReport report =
         products::build(to_load_options(args.input), args.out_dir, args.build, progress);
-    if (!args.quiet) {
-        print_summary(report, args.out_dir);
-        if (report.has_volume) {
-            const VolumeResult& v = report.volume;
-            std::printf("dtm build: against the base: fill %.3f, cut %.3f, net %.3f (volume/)\n",
-                        v.fill, v.cut, v.net());
-        }
-    }
+    if (report.contour_flats && !args.quiet) print_contour_flats(*report.contour_flats, "build");
+    if (!args.quiet) print_summary(report, args.out_dir);
     if (report.crs_wkt.empty()) {
         std::fprintf(stderr,
                      "dtm build: warning: the inputs carry no CRS (give --crs): the products and "
@@ -72,11 +75,11 @@ int run_build(BuildArgs& args)
 
 }  // namespace
 
-Command build_command()
-{
+Command build_command() {
     return {"build",
-            "The main job: TIN, DEM, hillshade, contours, VTK surface, 2DM mesh, QGIS project "
-            "and report into one folder (with --base: volumes and a cut/fill map too)",
+            "The main job: TIN, DEM, hillshade, contours, contour map sheet (PDF), VTK surface, "
+            "2DM mesh, QGIS project with its print layout, and report into one folder (with "
+            "--base: volumes and a cut/fill map too)",
             [](CLI::App& app) {
                 auto args = std::make_shared<BuildArgs>();
                 add_input_options(app, args->input);
@@ -93,7 +96,13 @@ Command build_command()
                     ->check(CLI::PositiveNumber);
                 app.add_option("--index-every", args->build.index_every,
                                "Every N-th contour level is an index contour (default 5)");
+                app.add_option("--map-scale", args->build.map_scale,
+                               "Scale 1:N of map.pdf, an A3 sheet (default: the largest usual "
+                               "scale at which the site fits)")
+                    ->check(CLI::PositiveNumber);
                 add_tin_options(app, args->build.triangulate);
+                add_contour_flats_options(app, args->build.contour_flats);
+                add_interpolation_option(app, "--interpolation", args->build.interpolation);
                 app.add_flag("-q,--quiet", args->quiet, "No progress bar");
                 return [args]() { return run_build(*args); };
             }};

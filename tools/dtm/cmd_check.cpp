@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-// dtm check SURFACE POINTS -o residuals.csv [--stats stats.json] [--interpolation linear]
-// A surface against control points (parse -> products::run_check -> statistics on stdout).
-// SURFACE is a dtm .ply TIN or a point file triangulated on its own.
+// dtm check SURFACE POINTS -o residuals.csv [--stats stats.json] [--interpolation
+// linear|cubic|natural] A surface against control points (parse -> products::run_check ->
+// statistics on stdout). SURFACE is a dtm .ply TIN or a point file triangulated on its own.
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -10,6 +10,7 @@
 #include "command.hpp"
 #include "dtm/products/check.hpp"
 #include "input_args.hpp"
+#include "interpolation_args.hpp"
 #include "terminal_progress.hpp"
 #include "tin_args.hpp"
 
@@ -21,7 +22,7 @@ struct CheckArgs {
     std::string points;
     std::string output;
     std::string stats;
-    std::string interpolation = "linear";
+    Interpolation interpolation = Interpolation::linear;
     io::LoadOptions reader;
     TriangulateOptions tin;
     bool quiet = false;
@@ -62,8 +63,7 @@ Command check_command() {
                     ->check(CLI::ExistingFile);
                 app.add_option("-o,--output", args->output, "Residuals CSV")->required();
                 app.add_option("--stats", args->stats, "Also write the statistics as JSON here");
-                app.add_option("--interpolation", args->interpolation,
-                               "Interpolation of the surface between vertices (linear)");
+                add_interpolation_option(app, "--interpolation", args->interpolation);
                 add_reader_options(app, args->reader.read, args->reader.crs);
                 add_tin_options(app, args->tin);
                 app.add_flag("-q,--quiet", args->quiet, "No progress bar");

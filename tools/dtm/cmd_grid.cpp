@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // dtm grid INPUTS... -o DEM --cell C [--extent xmin,ymin,xmax,ymax] [--nodata V] [--cog]
-//          [--hillshade FILE] [--slope FILE] [--aspect FILE]
+//          [--interpolation linear|cubic|natural] [--hillshade FILE] [--slope FILE] [--aspect FILE]
 // The TIN surface sampled at cell centres (parse -> options -> library -> report).
 #include <iostream>
 #include <memory>
@@ -10,12 +10,16 @@
 #include <vector>
 
 #include "command.hpp"
+#include "contour_flats_args.hpp"
 #include "dtm/algo/rasterize.hpp"
 #include "dtm/core/error.hpp"
+#include "dtm/io/extension.hpp"
 #include "dtm/io/grid_writer.hpp"
 #include "dtm/io/inputs.hpp"
+#include "dtm/io/output_check.hpp"
 #include "dtm/products/surface.hpp"
 #include "input_args.hpp"
+#include "interpolation_args.hpp"
 #include "terminal_progress.hpp"
 #include "tin_args.hpp"
 
@@ -25,11 +29,13 @@ namespace {
 struct GridArgs {
     InputArgs input;
     TriangulateOptions tin;
+    products::ContourFlats flats = products::ContourFlats::automatic;
     std::string output;
     double cell = 0.0;
     std::string extent;
     float nodata = -9999.0F;
     bool cog = false;
+    Interpolation interpolation = Interpolation::linear;
     std::string hillshade, slope, aspect;
     bool quiet = false;
 };
@@ -76,10 +82,29 @@ private:
     float nodata_;
 };
 
+/// Every output and option combination, before any input is read (fail fast).
+void check_grid_args(const GridArgs& args) {
+    io::check_output(args.output, io::OutputKind::raster, "output");
+    const std::string extension = io::lower_extension(args.output);
+    if (args.cog && extension != "tif" && extension != "tiff") {
+        throw OptionError("cog", "grid: `cog` needs a .tif target, not " + args.output);
+    }
+    const std::pair<const std::string*, const char*> derived[] = {
+        {&args.hillshade, "hillshade"}, {&args.slope, "slope"}, {&args.aspect, "aspect"}};
+    for (const auto& [file, field] : derived) {
+        if (!file->empty()) io::check_output(*file, io::OutputKind::raster, field);
+    }
+    if (!args.extent.empty()) (void)parse_extent(args.extent);
+}
+
 int run_grid(const GridArgs& args) {
+    check_grid_args(args);
     const Progress progress = terminal_progress("grid", args.quiet);
     io::LoadedInputs inputs = io::load_inputs(to_load_options(args.input), progress.sub(0.0, 0.2));
-    const Tin tin = products::surface(inputs, args.tin, progress.sub(0.2, 0.5)).result.tin;
+    products::Surface surface = products::surface(
+        inputs, surface_options(args.input, args.tin, args.flats), progress.sub(0.2, 0.5));
+    if (surface.contour_flats && !args.quiet) print_contour_flats(*surface.contour_flats, "grid");
+    const Tin& tin = surface.result.tin;
     if (tin.triangles.empty()) {
         throw InputError("grid: the inputs give no triangle to rasterise");
     }
@@ -94,8 +119,13 @@ int run_grid(const GridArgs& args) {
     io::GridWriter writer(args.output, spec,
                           {.crs_wkt = inputs.crs_wkt, .nodata = args.nodata, .cog = args.cog});
     CountingSink counter(writer, args.nodata);
-    rasterize(tin, spec, {.nodata = args.nodata, .threads = args.tin.threads}, counter,
-              progress.sub(0.5, 0.9));
+    rasterize(tin, spec,
+              {.nodata = args.nodata,
+               .threads = args.tin.threads,
+               .interpolation = args.interpolation,
+               .gradients = {.threads = args.tin.threads,
+                             .crease_at_breaklines = !surface.contour_input}},
+              counter, progress.sub(0.5, 0.9));
     writer.commit();
     const std::pair<const std::string*, io::DemDerivative> derived[] = {
         {&args.hillshade, io::DemDerivative::hillshade},
@@ -127,6 +157,7 @@ Command grid_command() {
                 auto args = std::make_shared<GridArgs>();
                 add_input_options(app, args->input);
                 add_tin_options(app, args->tin);
+                add_contour_flats_options(app, args->flats);
                 app.add_option("-o,--output", args->output,
                                "DEM file; the extension picks the GDAL driver (default .tif: "
                                "tiled DEFLATE Float32 GeoTIFF; .asc, .img, ...)")
@@ -141,6 +172,7 @@ Command grid_command() {
                                "Value of cells outside the TIN, the boundary and holes "
                                "(default -9999)");
                 app.add_flag("--cog", args->cog, "Write a Cloud Optimized GeoTIFF");
+                add_interpolation_option(app, "--interpolation", args->interpolation);
                 app.add_option("--hillshade", args->hillshade, "Also write a hillshade (gdaldem)");
                 app.add_option("--slope", args->slope, "Also write slope in degrees (gdaldem)");
                 app.add_option("--aspect", args->aspect, "Also write aspect in degrees (gdaldem)");

@@ -18,13 +18,11 @@
 namespace dtm::cli {
 namespace {
 
-bool has_extent(const io::InputSummary& s)
-{
+bool has_extent(const io::InputSummary& s) {
     return s.points + s.breakline_vertices + s.boundaries + s.holes > 0;
 }
 
-void print_json(std::ostream& out, const io::LoadedInputs& loaded)
-{
+void print_json(std::ostream& out, const io::LoadedInputs& loaded) {
     using Layout = io::JsonWriter::Layout;
     io::JsonWriter json;
     json.begin_object({}, Layout::inline_);
@@ -38,7 +36,9 @@ void print_json(std::ostream& out, const io::LoadedInputs& loaded)
         } else {
             json.value("crs", s.crs);
         }
+        if (!s.crs_note.empty()) json.value("crs_note", s.crs_note);
         json.value("points", s.points);
+        json.value("triangles", s.triangles);
         json.value("breaklines", s.breaklines);
         json.value("breakline_vertices", s.breakline_vertices);
         json.value("boundaries", s.boundaries);
@@ -69,8 +69,7 @@ void print_json(std::ostream& out, const io::LoadedInputs& loaded)
     out << json.str();
 }
 
-void print_table(std::ostream& out, const io::LoadedInputs& loaded)
-{
+void print_table(std::ostream& out, const io::LoadedInputs& loaded) {
     for (const io::InputSummary& s : loaded.summaries) {
         std::ostringstream bbox;
         bbox.precision(12);
@@ -82,7 +81,9 @@ void print_table(std::ostream& out, const io::LoadedInputs& loaded)
         out << s.path.string() << "\n"
             << "  format             " << s.format << "\n"
             << "  crs                " << (s.crs.empty() ? "(none)" : s.crs) << "\n"
+            << (s.crs_note.empty() ? "" : "  crs identification " + s.crs_note + "\n")
             << "  points             " << s.points << "\n"
+            << "  triangles          " << s.triangles << "\n"
             << "  breaklines         " << s.breaklines << " (" << s.breakline_vertices
             << " vertices)\n"
             << "  boundaries         " << s.boundaries << "\n"
@@ -95,14 +96,14 @@ void print_table(std::ostream& out, const io::LoadedInputs& loaded)
             << "\n"
             << "  duplicates (xy)    " << s.duplicates << "\n"
             << "  skipped lines      " << s.skipped_lines << "\n";
-        for (const std::string& w : s.warnings) out << "  warning            " << cli_text(w) << "\n";
+        for (const std::string& w : s.warnings)
+            out << "  warning            " << cli_text(w) << "\n";
     }
 }
 
 }  // namespace
 
-Command info_command()
-{
+Command info_command() {
     return {"info", "Show what each input holds (format, CRS, counts, extent, duplicates)",
             [](CLI::App& app) {
                 auto args = std::make_shared<InputArgs>();

@@ -2,19 +2,26 @@
 // `dtm methods`: the triangulation methods of the source literature, listed and run one by one.
 //   dtm methods list [--json]
 //   dtm methods run NAME INPUT -o OUT.ply [--stats] [--param KEY=VALUE]... [--seed S]
-// Thin: parse -> methods::registry / MethodFn -> io::write_tin -> print.
+//   dtm methods compare [--methods a,b] [--n 1000,10000] [--dist uniform,gauss] [--repeat R]
+//                       [--sets S] [--seed S] [--threads T] [--cap-seconds C] -o DIR
+// Thin: parse -> methods::registry / MethodFn on lab::method_points -> lab::write_method_output
+// -> print; compare: parse -> lab::run_compare ->
+// lab::write_compare -> print.
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "command.hpp"
-#include "dtm/algo/line_heights.hpp"
 #include "dtm/core/error.hpp"
 #include "dtm/io/json_writer.hpp"
-#include "dtm/io/tin_file.hpp"
+#include "dtm/io/output_check.hpp"
+#include "dtm/lab/compare.hpp"
+#include "dtm/lab/run.hpp"
 #include "dtm/methods/registry.hpp"
 #include "input_args.hpp"
 #include "terminal_progress.hpp"
@@ -54,23 +61,12 @@ struct RunArgs {
     InputArgs input;
     std::string output;
     std::vector<std::string> params;
+    std::map<std::string, std::string> aliases;  ///< --swap X means --param swap=X
     std::uint64_t seed = 1;
     unsigned threads = 0;
     bool stats = false;
     bool quiet = false;
 };
-
-std::string counters_json(const methods::MethodCounters& c) {
-    std::string out = "{\"orient_calls\": " + std::to_string(c.orient_calls) +
-                      ", \"incircle_calls\": " + std::to_string(c.incircle_calls) +
-                      ", \"flips\": " + std::to_string(c.flips) +
-                      ", \"walk_steps\": " + std::to_string(c.walk_steps) +
-                      ", \"peak_bytes\": " + std::to_string(c.peak_bytes);
-    for (const auto& [key, value] : c.extra) {
-        out += ", " + io::json_string(key) + ": " + std::to_string(value);
-    }
-    return out + "}";
-}
 
 int run_method(const RunArgs& a) {
     const methods::MethodInfo* method = methods::find_method(a.name);
@@ -81,6 +77,9 @@ int run_method(const RunArgs& a) {
     methods::MethodOptions options;
     options.seed = a.seed;
     options.threads = a.threads;
+    for (const auto& [key, value] : a.aliases) {
+        if (!value.empty()) options.params[key] = value;
+    }
     for (const std::string& p : a.params) {
         const auto eq = p.find('=');
         if (eq == std::string::npos || eq == 0) {
@@ -88,77 +87,128 @@ int run_method(const RunArgs& a) {
         }
         options.params[p.substr(0, eq)] = p.substr(eq + 1);
     }
+    io::check_output(a.output, lab::method_output_kind(*method), "output");
+    if (!a.input.breaklines.empty() && !method->takes_constraints) {
+        throw UsageError("methods run: method '" + a.name + "' takes no breaklines");
+    }
     const Progress progress = terminal_progress("methods", a.quiet || a.stats);
     io::LoadedInputs loaded = io::load_inputs(to_load_options(a.input), progress.sub(0.0, 0.1));
-    // 2-D breakline vertices take the height of a survey point at their position, as in
-    // triangulate(); then they join the points and each breakline segment becomes a constraint.
-    (void)resolve_line_heights(loaded.terrain);
-    std::vector<Point3> points = std::move(loaded.terrain.points);
-    std::vector<methods::Segment> segments;
-    for (const Polyline& line : loaded.terrain.breaklines) {
-        for (std::size_t i = 0; i < line.points.size(); ++i) {
-            points.push_back(line.points[i]);
-            if (i > 0) {
-                const auto b = static_cast<VertexIndex>(points.size() - 1);
-                segments.emplace_back(b - 1, b);
-            }
-        }
-    }
-    if (!segments.empty() && !method->takes_constraints) {
+    const lab::MethodPoints input = lab::method_points(loaded.terrain);
+    if (!input.segments.empty() && !method->takes_constraints) {
         throw UsageError("methods run: method '" + a.name + "' takes no breaklines");
     }
     const auto start = std::chrono::steady_clock::now();
-    const methods::MethodResult result =
-        method->run(methods::MethodInput{points, segments}, options, progress.sub(0.1, 0.95));
+    const methods::MethodResult result = method->run(
+        methods::MethodInput{input.points, input.segments}, options, progress.sub(0.1, 0.95));
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    io::TinWriteOptions write_options;
-    write_options.crs_wkt = loaded.crs_wkt;
-    io::write_tin(result.tin, a.output, write_options);
+    lab::write_method_output(*method, result, a.output, loaded.crs_wkt);
     progress.report(1.0, "done");
     if (a.stats) {
-        std::cout << "{\"method\": " << io::json_string(a.name) << ", \"points\": " << points.size()
-                  << ", \"vertices\": " << result.tin.vertices.size()
-                  << ", \"triangles\": " << result.tin.triangles.size()
-                  << ", \"seconds\": " << io::json_number(seconds)
-                  << ", \"counters\": " << counters_json(result.counters)
-                  << (result.stats_json.empty() ? "" : ", ") << result.stats_json << "}"
+        std::cout << lab::method_stats_json(*method, input.points.size(), result, seconds)
                   << std::endl;
     }
+    return 0;
+}
+
+struct CompareArgs {
+    lab::CompareOptions options;
+    std::vector<std::string> distributions;
+    std::string output;
+    bool no_historical = false;
+    bool quiet = false;
+};
+
+int run_compare(CompareArgs& a) {
+    for (const std::string& d : a.distributions) {
+        const auto parsed = methods::parse_distribution(d);
+        if (!parsed) {
+            throw UsageError(
+                "methods compare: unknown distribution '" + d +
+                "' (uniform, gauss, cluster, arc, grid, circle, collinear, duplicates)");
+        }
+        a.options.distributions.push_back(*parsed);
+    }
+    a.options.historical = !a.no_historical;
+    const Progress progress = terminal_progress("methods compare", a.quiet);
+    const lab::CompareResult result = lab::run_compare(a.options, progress);
+    lab::write_compare(result, a.output);
+    std::size_t ok = 0, capped = 0, other = 0;
+    for (const lab::Measurement& c : result.cells) {
+        (c.status == lab::Status::ok ? ok : c.status == lab::Status::capped ? capped : other) += 1;
+    }
+    std::printf("%zu cells measured, %zu capped, %zu refused or failed: %s\n", ok, capped, other,
+                (std::filesystem::path(a.output) / "report.md").string().c_str());
     return 0;
 }
 
 }  // namespace
 
 Command methods_command() {
-    return {"methods",
-            "The triangulation methods of the source literature: list them, run one",
-            [](CLI::App& app) -> std::function<int()> {
-                app.require_subcommand(1);
-                auto run = std::make_shared<std::function<int()>>();
+    return {
+        "methods", "The triangulation methods of the source literature: list, run, compare",
+        [](CLI::App& app) -> std::function<int()> {
+            app.require_subcommand(1);
+            auto run = std::make_shared<std::function<int()>>();
 
-                auto json = std::make_shared<bool>(false);
-                CLI::App* list = app.add_subcommand("list", "List every method of the registry");
-                list->add_flag("--json", *json, "One JSON array with every field of the registry");
-                list->callback([run, json] { *run = [json] { return run_list(*json); }; });
+            auto json = std::make_shared<bool>(false);
+            CLI::App* list = app.add_subcommand("list", "List every method of the registry");
+            list->add_flag("--json", *json, "One JSON array with every field of the registry");
+            list->callback([run, json] { *run = [json] { return run_list(*json); }; });
 
-                auto args = std::make_shared<RunArgs>();
-                CLI::App* one = app.add_subcommand("run", "Run one method on a point input");
-                one->add_option("name", args->name, "Method name (dtm methods list)")->required();
-                add_input_options(*one, args->input);
-                one->add_option("-o,--output", args->output, "Output TIN (format by extension)")
-                    ->required();
-                one->add_option("--param", args->params,
-                                "Method parameter KEY=VALUE (repeatable; see dtm methods list)");
-                one->add_option("--seed", args->seed, "Seed of randomised methods (default 1)");
-                one->add_option("--threads", args->threads, "Threads of parallel methods");
-                one->add_flag("--stats", args->stats,
-                              "Print one JSON object with the counters and seconds");
-                one->add_flag("-q,--quiet", args->quiet, "No progress bar");
-                one->callback([run, args] { *run = [args] { return run_method(*args); }; });
+            auto args = std::make_shared<RunArgs>();
+            CLI::App* one = app.add_subcommand("run", "Run one method on a point input");
+            one->add_option("name", args->name, "Method name (dtm methods list)")->required();
+            add_input_options(*one, args->input);
+            one->add_option("-o,--output", args->output,
+                            "Output TIN by extension; polygon faces (pseudo: .ply, .gpkg, .shp); a "
+                            "folder of t001.ply ... (enumerate)")
+                ->required();
+            one->add_option("--param", args->params,
+                            "Method parameter KEY=VALUE (repeatable; see dtm methods list)");
+            for (const char* key : {"swap", "flip", "criterion"}) {
+                one->add_option(std::string("--") + key, args->aliases[key],
+                                std::string("Same as --param ") + key + "=VALUE");
+            }
+            one->add_option("--seed", args->seed, "Seed of randomised methods (default 1)");
+            one->add_option("--threads", args->threads, "Threads of parallel methods");
+            one->add_flag("--stats", args->stats,
+                          "Print one JSON object with the counters and seconds");
+            one->add_flag("-q,--quiet", args->quiet, "No progress bar");
+            one->callback([run, args] { *run = [args] { return run_method(*args); }; });
 
-                return [run] { return (*run)(); };
-            }};
+            auto cmp = std::make_shared<CompareArgs>();
+            CLI::App* compare =
+                app.add_subcommand("compare", "Run methods side by side and write a report");
+            compare
+                ->add_option("--methods", cmp->options.methods,
+                             "Methods to compare (default: all but enumerate)")
+                ->delimiter(',');
+            compare
+                ->add_option("--n", cmp->options.sizes, "Point counts (default 1000,10000,100000)")
+                ->delimiter(',');
+            compare
+                ->add_option("--dist", cmp->distributions,
+                             "Distributions (default uniform,gauss,cluster,arc)")
+                ->delimiter(',');
+            compare->add_option("--sets", cmp->options.sets, "Point sets per cell (default 1)");
+            compare->add_option("--repeat", cmp->options.repeat, "Runs per point set (default 1)");
+            compare->add_option("--seed", cmp->options.seed,
+                                "Seed of the first point set (default 1)");
+            compare->add_option("--threads", cmp->options.threads,
+                                "Threads of the parallel methods (default 1)");
+            compare->add_option("--cap-seconds", cmp->options.cap_seconds,
+                                "Skip a quadratic method where it would take longer (default 10)");
+            compare->add_option("--histogram-n", cmp->options.histogram_size,
+                                "Angle histograms at the largest N up to this (default 10000)");
+            compare->add_flag("--no-historical", cmp->no_historical,
+                              "Do not run uniform-grid at the sizes of the thesis' Fig. 36");
+            compare->add_option("-o,--output", cmp->output, "Output folder")->required();
+            compare->add_flag("-q,--quiet", cmp->quiet, "No progress bar");
+            compare->callback([run, cmp] { *run = [cmp] { return run_compare(*cmp); }; });
+
+            return [run] { return (*run)(); };
+        }};
 }
 
 }  // namespace dtm::cli

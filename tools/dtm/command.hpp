@@ -5,7 +5,6 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
-
 #include <functional>
 #include <string_view>
 
@@ -25,6 +24,8 @@ Command grid_command();
 Command contour_command();
 Command build_command();
 Command methods_command();
+Command voronoi_command();
+Command map_command();
 Command volume_command();
 Command profile_command();
 Command check_command();

@@ -22,15 +22,13 @@ constexpr std::array<std::pair<std::string_view, io::PenRole>, 8> role_names{{
     {"ignore", io::PenRole::ignore},
 }};
 
-std::string_view trim(std::string_view s)
-{
+std::string_view trim(std::string_view s) {
     while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
     while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
     return s;
 }
 
-int parse_pen(std::string_view text, std::string_view option)
-{
+int parse_pen(std::string_view text, std::string_view option) {
     text = trim(text);
     int pen = 0;
     bool ok = !text.empty() && text.size() <= 6;
@@ -45,8 +43,7 @@ int parse_pen(std::string_view text, std::string_view option)
 }
 
 /// "500" or "1:500".
-double parse_scale(const std::string& text)
-{
+double parse_scale(const std::string& text) {
     const std::string number = text.rfind("1:", 0) == 0 ? text.substr(2) : text;
     std::size_t used = 0;
     double value = 0.0;
@@ -56,15 +53,15 @@ double parse_scale(const std::string& text)
         used = 0;
     }
     if (used != number.size() || !(value > 0.0)) {
-        throw CLI::ValidationError("--hpgl-scale", "expected the scale denominator, for example 500 or 1:500");
+        throw CLI::ValidationError("--hpgl-scale",
+                                   "expected the scale denominator, for example 500 or 1:500");
     }
     return value;
 }
 
 }  // namespace
 
-std::map<int, io::PenRole> parse_pen_roles(std::string_view text)
-{
+std::map<int, io::PenRole> parse_pen_roles(std::string_view text) {
     std::map<int, io::PenRole> roles;
     while (!text.empty()) {
         const auto comma = text.find(',');
@@ -90,8 +87,7 @@ std::map<int, io::PenRole> parse_pen_roles(std::string_view text)
     return roles;
 }
 
-std::vector<int> parse_pen_list(std::string_view text)
-{
+std::vector<int> parse_pen_list(std::string_view text) {
     std::vector<int> pens;
     while (!text.empty()) {
         const auto comma = text.find(',');
@@ -102,8 +98,7 @@ std::vector<int> parse_pen_list(std::string_view text)
     return pens;
 }
 
-void add_hpgl_options(CLI::App& app, io::HpglOptions& options)
-{
+void add_hpgl_options(CLI::App& app, io::HpglOptions& options) {
     const std::string group = "HPGL plans";
     app.add_option_function<std::string>(
            "--hpgl-pens",
@@ -127,15 +122,18 @@ void add_hpgl_options(CLI::App& app, io::HpglOptions& options)
                    throw CLI::ValidationError(e.what());
                }
            },
-           "Pens whose integer labels are heights too, e.g. 5,6 (decimal labels are heights on every pen)")
+           "Pens whose integer labels are heights too, e.g. 5,6 (decimal labels are heights on "
+           "every pen)")
         ->group(group);
-    app.add_option("--hpgl-marker-radius", options.marker_radius_mm,
-                   "Search radius in paper millimetres from a height label to its marker, and from a "
-                   "line vertex to a spot height (default 3)")
+    app.add_option(
+           "--hpgl-marker-radius", options.marker_radius_mm,
+           "Search radius in paper millimetres from a height label to its marker, and from a "
+           "line vertex to a spot height (default 3)")
         ->check(CLI::NonNegativeNumber)
         ->group(group);
     app.add_option_function<std::string>(
-           "--hpgl-scale", [&options](const std::string& text) { options.scale = parse_scale(text); },
+           "--hpgl-scale",
+           [&options](const std::string& text) { options.scale = parse_scale(text); },
            "Plan scale denominator (500 or 1:500); with --hpgl-origin and --hpgl-rotation")
         ->group(group);
     app.add_option_function<std::vector<double>>(
@@ -148,13 +146,15 @@ void add_hpgl_options(CLI::App& app, io::HpglOptions& options)
         ->expected(2)
         ->delimiter(',')
         ->group(group);
-    app.add_option("--hpgl-rotation", options.rotation_deg,
-                   "Counter-clockwise angle in degrees of the plan's x axis from grid east (default 0)")
+    app.add_option(
+           "--hpgl-rotation", options.rotation_deg,
+           "Counter-clockwise angle in degrees of the plan's x axis from grid east (default 0)")
         ->group(group);
-    app.add_option("--hpgl-control", options.control_file,
-                   "CSV of control points px,py,E,N (px,py in plotter units, 40 per mm; paper mm with a "
-                   "px_mm,py_mm header): 2 points give a "
-                   "similarity, 3 or more a least-squares affine transform; excludes --hpgl-scale")
+    app.add_option(
+           "--hpgl-control", options.control_file,
+           "CSV of control points px,py,E,N (px,py in plotter units, 40 per mm; paper mm with a "
+           "px_mm,py_mm header): 2 points give a "
+           "similarity, 3 or more a least-squares affine transform; excludes --hpgl-scale")
         ->check(CLI::ExistingFile)
         ->excludes("--hpgl-scale")
         ->group(group);

@@ -7,11 +7,11 @@
 
 namespace dtm::cli {
 
-void add_input_options(CLI::App& app, InputArgs& args)
-{
-    app.add_option("inputs", args.inputs,
-                   "Survey points: text (x y z, id;Y;X;Z, lat/lon...), OGR vector files (shp, gpkg, "
-                   "geojson, dxf...: points, lines become breaklines), or a dtm .ply TIN")
+void add_input_options(CLI::App& app, InputArgs& args) {
+    app.add_option(
+           "inputs", args.inputs,
+           "Survey points: text (x y z, id;Y;X;Z, lat/lon...), OGR vector files (shp, gpkg, "
+           "geojson, dxf...: points, lines become breaklines), or a TIN (dtm .ply, LandXML .xml)")
         ->check(CLI::ExistingPath);
     const auto files = [&app](const char* name, std::vector<std::string>& into, const char* what) {
         app.add_option(name, into, what)->check(CLI::ExistingPath)->allow_extra_args(false);
@@ -24,11 +24,13 @@ void add_input_options(CLI::App& app, InputArgs& args)
           "Outer boundary: polygons (inner rings are holes) or closed lines; repeatable");
     files("--holes", args.holes,
           "Holes: polygons or closed lines, or points as hole seeds; repeatable");
+    files("--flat-areas", args.flat_areas,
+          "Real flats (lakes, ponds): closed lines or polygons at one height whose inside stays "
+          "flat when contour flats are removed; hard breaklines otherwise; repeatable");
     add_reader_options(app, args.read, args.crs);
 }
 
-void add_reader_options(CLI::App& app, io::ReadOptions& o, io::CrsOptions& crs)
-{
+void add_reader_options(CLI::App& app, io::ReadOptions& o, io::CrsOptions& crs) {
     app.add_option("--crs", crs.default_crs,
                    "CRS of inputs that carry none (EPSG:5514, WKT, PROJ)");
     app.add_option("--target-crs", crs.target_crs,
@@ -42,26 +44,30 @@ void add_reader_options(CLI::App& app, io::ReadOptions& o, io::CrsOptions& crs)
                    "OGR attribute holding the height (points, or one height per line)");
     app.add_flag("--skip-bad-lines", o.skip_bad_lines,
                  "Skip and count malformed text lines instead of failing");
+    app.add_flag("--retriangulate", o.retriangulate,
+                 "Surface inputs (LandXML, DXF 3DFACE): triangulate their points and lines "
+                 "instead of keeping their faces");
+    app.add_option("--surface", o.surface,
+                   "LandXML: the surface of this name (default: the first)");
     add_hpgl_options(app, o.hpgl);
 }
 
-void add_surface_options(CLI::App& app, const std::string& name, InputArgs& args)
-{
+void add_surface_options(CLI::App& app, const std::string& name, InputArgs& args) {
     const auto files = [&app](const std::string& flag, std::vector<std::string>& into,
                               const std::string& what) {
-        app.add_option(flag, into, what)->check(CLI::ExistingPath);
+        app.add_option(flag, into, what)->check(CLI::ExistingPath)->allow_extra_args(false);
     };
     files("--" + name, args.inputs,
           "The " + name + " surface: a dtm .ply TIN, or points (and lines) to triangulate");
-    files("--" + name + "-breaklines", args.breaklines, "Hard breaklines of the " + name + " surface");
+    files("--" + name + "-breaklines", args.breaklines,
+          "Hard breaklines of the " + name + " surface");
     files("--" + name + "-soft-breaklines", args.soft_breaklines,
           "Soft breaklines of the " + name + " surface");
     files("--" + name + "-boundary", args.boundaries, "Outer boundary of the " + name + " surface");
     files("--" + name + "-holes", args.holes, "Holes of the " + name + " surface");
 }
 
-io::LoadOptions to_load_options(const InputArgs& args)
-{
+io::LoadOptions to_load_options(const InputArgs& args) {
     io::LoadOptions options;
     options.read = args.read;
     options.crs = args.crs;
@@ -73,6 +79,7 @@ io::LoadOptions to_load_options(const InputArgs& args)
     add(args.soft_breaklines, io::InputRole::soft_breaklines);
     add(args.boundaries, io::InputRole::boundary);
     add(args.holes, io::InputRole::holes);
+    add(args.flat_areas, io::InputRole::breaklines);
     return options;
 }
 

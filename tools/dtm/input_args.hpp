@@ -5,7 +5,6 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
-
 #include <string>
 #include <vector>
 
@@ -19,7 +18,8 @@ struct InputArgs {
     std::vector<std::string> soft_breaklines;
     std::vector<std::string> boundaries;
     std::vector<std::string> holes;
-    io::ReadOptions read;  ///< what the readers take
+    std::vector<std::string> flat_areas;  ///< real flats (lakes): hard breaklines, loaded last
+    io::ReadOptions read;                 ///< what the readers take
     io::CrsOptions crs;
 };
 
@@ -27,7 +27,8 @@ struct InputArgs {
 void add_input_options(CLI::App& app, InputArgs& args);
 
 /// Declares the reader options alone (--crs, --target-crs, --columns, --layer, --where,
-/// --z-field, --skip-bad-lines, HP-GL options), for commands whose files are declared otherwise.
+/// --z-field, --skip-bad-lines, --retriangulate, --surface, HP-GL options), for commands whose
+/// files are declared otherwise.
 void add_reader_options(CLI::App& app, io::ReadOptions& read, io::CrsOptions& crs);
 
 /// Declares a second surface's files: --NAME FILE... (points, lines or a dtm .ply TIN) and
@@ -35,7 +36,8 @@ void add_reader_options(CLI::App& app, io::ReadOptions& read, io::CrsOptions& cr
 /// (--crs, --columns, --layer, ...) are the command's.
 void add_surface_options(CLI::App& app, const std::string& name, InputArgs& args);
 
-/// The LoadOptions for io::load_inputs and products::build.
+/// The LoadOptions for io::load_inputs and products::build (the --flat-areas files come last,
+/// as breaklines).
 [[nodiscard]] io::LoadOptions to_load_options(const InputArgs& args);
 
 }  // namespace dtm::cli

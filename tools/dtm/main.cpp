@@ -7,6 +7,7 @@
 #include <malloc.h>
 #endif
 
+#include <csignal>
 #include <exception>
 #include <iostream>
 #include <vector>
@@ -15,26 +16,28 @@
 #include "dtm/core/error.hpp"
 #include "option_names.hpp"
 
-int main(int argc, char** argv)
-{
+int main(int argc, char** argv) {
 #ifdef M_MMAP_THRESHOLD
     // Large arrays (points, meshes, TINs) come and go in phases; a fixed mmap threshold returns
     // each one to the system when it is freed (glibc's adaptive threshold would keep them in the
     // heap and the resident memory would add up across phases).
     mallopt(M_MMAP_THRESHOLD, 1 << 20);
 #endif
+    // Past a file-size limit (ulimit -f) write(2) fails with EFBIG and the writer reports it, as
+    // for a full disk, instead of SIGXFSZ killing the process with a core dump.
+    std::signal(SIGXFSZ, SIG_IGN);
     using namespace dtm::cli;
-    CLI::App app{"dtm: survey points and breaklines to a constrained Delaunay TIN, DEMs, contours "
-                 "and 3-D surfaces"};
+    CLI::App app{
+        "dtm: survey points and breaklines to a constrained Delaunay TIN, DEMs, contours "
+        "and 3-D surfaces"};
     app.set_version_flag("--version", std::string("dtm ") + DTM_VERSION);
     app.require_subcommand(0, 1);  // at most one; "none" is reported below, so that an unknown
                                    // word or option is named in the error instead
 
-    const std::vector<Command> commands{tin_command(), info_command(), grid_command(),
-                                        contour_command(), build_command(),
-                                        methods_command(), volume_command(),
-                                        profile_command(), check_command(),
-                                        sections_command()};
+    const std::vector<Command> commands{tin_command(),     info_command(),  grid_command(),
+                                        contour_command(), build_command(), methods_command(),
+                                        voronoi_command(), map_command(),   volume_command(),
+                                        profile_command(), check_command(), sections_command()};
     std::function<int()> run;
     for (const Command& command : commands) {
         CLI::App* sub = app.add_subcommand(std::string(command.name), std::string(command.summary));

@@ -11,7 +11,7 @@
 namespace dtm::cli {
 namespace {
 
-constexpr std::array<std::pair<std::string_view, std::string_view>, 32> flags{{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 46> flags{{
     // io::LoadOptions: the files of each role (TerrainInput's members)
     {"breaklines", "--breaklines"},
     {"soft_breaklines", "--soft-breaklines"},
@@ -26,6 +26,8 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 32> flags{{
     {"layer", "--layer"},
     {"where", "--where"},
     {"z_field", "--z-field"},
+    {"retriangulate", "--retriangulate"},
+    {"surface", "--surface"},
     {"hpgl.pens", "--hpgl-pens"},
     {"hpgl.height_pens", "--hpgl-height-pens"},
     {"hpgl.marker_radius_mm", "--hpgl-marker-radius"},
@@ -47,23 +49,35 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 32> flags{{
     {"index_every", "--index-every"},
     {"cog", "--cog"},
     {"levels", "--levels"},
+    // io::check_output: the outputs of tin, grid, contour and methods
+    {"output", "-o"},
+    {"report", "--report"},
+    {"hillshade", "--hillshade"},
+    {"slope", "--slope"},
+    {"aspect", "--aspect"},
+    // io::map::MapOptions, products::BuildOptions::map_scale
+    {"scale", "--scale"},
+    {"paper", "--paper"},
+    {"extent", "--extent"},
+    {"sheets", "--sheets"},
+    {"map_scale", "--map-scale"},
+    {"subdivisions", "--subdivisions"},
     // products::CheckJob, ProfileJob, SectionsJob
     {"interpolation", "--interpolation"},
     {"plot_format", "--plot"},
+    {"stats", "--stats"},
 }};
 
 }  // namespace
 
-std::string_view flag_of(std::string_view field) noexcept
-{
+std::string_view flag_of(std::string_view field) noexcept {
     for (const auto& [name, flag] : flags) {
         if (name == field) return flag;
     }
     return {};
 }
 
-std::string cli_text(std::string_view text)
-{
+std::string cli_text(std::string_view text) {
     std::string out;
     out.reserve(text.size());
     std::size_t at = 0;

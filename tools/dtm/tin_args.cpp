@@ -6,13 +6,13 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace dtm::cli {
 namespace {
 
 /// Bounds every parallel phase of this run (not only the triangulation's arena) to @p threads.
-void limit_threads(unsigned threads)
-{
+void limit_threads(unsigned threads) {
     static std::unique_ptr<tbb::global_control> control;
     if (threads > 0) {
         control = std::make_unique<tbb::global_control>(
@@ -22,8 +22,7 @@ void limit_threads(unsigned threads)
 
 }  // namespace
 
-void add_tin_options(CLI::App& app, TriangulateOptions& options)
-{
+void add_tin_options(CLI::App& app, TriangulateOptions& options) {
     const std::map<std::string, DuplicateRule> rules{{"first", DuplicateRule::first},
                                                      {"mean", DuplicateRule::mean},
                                                      {"min", DuplicateRule::min},
@@ -44,13 +43,23 @@ void add_tin_options(CLI::App& app, TriangulateOptions& options)
                    "0.001)")
         ->check(CLI::NonNegativeNumber);
     app.add_option_function<unsigned>(
-           "--threads",
-           [&options](unsigned threads) {
-               options.threads = threads;
-               limit_threads(threads);
-           },
-           "Worker threads for every phase: reading, triangulating, rasters, contours (default "
-           "0: all cores)");
+        "--threads",
+        [&options](unsigned threads) {
+            options.threads = threads;
+            limit_threads(threads);
+        },
+        "Worker threads for every phase: reading, triangulating, rasters, contours (default "
+        "0: all cores)");
+    std::vector<std::string> criteria;
+    for (const Criterion c : all_criteria()) criteria.emplace_back(criterion_name(c));
+    app.add_option_function<std::string>(
+           "--optimize",
+           [&options](const std::string& name) { options.optimize = *parse_criterion(name); },
+           "Lawson flips under a criterion after the CDT, breaklines kept: delaunay (default: "
+           "none), maxmin-angle, minmax-angle, shortest-diagonal, maxmin-circumradius, "
+           "minmax-circumradius, maxmin-area, maxmin-height, maxmin-inradius, normals-angle, "
+           "normal-jump (docs/optimize.md)")
+        ->check(CLI::IsMember(criteria));
     app.add_option_function<std::string>(
            "--tiles",
            [&options](const std::string& value) {

@@ -9,7 +9,8 @@
 
 namespace dtm::cli {
 
-/// Declares --snap, --duplicates, --max-edge, --z-tolerance, --threads, --tiles on @p app.
+/// Declares --snap, --duplicates, --max-edge, --z-tolerance, --threads, --optimize, --tiles on
+/// @p app.
 void add_tin_options(CLI::App& app, TriangulateOptions& options);
 
 }  // namespace dtm::cli

@@ -12,6 +12,8 @@
 //    zero-length parts.
 // 4. Output (serial, in level order): lines go to the ContourSink while later levels are still
 //    being traced, so memory holds only a few levels at once.
+// On the cubic and natural surfaces the same tracing runs on a refinement of the TIN that
+// samples the surface (contour_refined.cpp).
 //
 // Contours of different levels never meet: on the linear surface of a triangle the level sets
 // are disjoint parallel segments, and every output point is computed from its edge alone.
@@ -30,6 +32,7 @@
 #include <limits>
 #include <string>
 
+#include "algo/detail/contour_refined.hpp"
 #include "algo/detail/contour_smooth.hpp"
 #include "algo/detail/contour_trace.hpp"
 #include "dtm/core/error.hpp"
@@ -181,9 +184,10 @@ std::vector<Contour> trace_one_level(const Tin& tin,
                                      std::span<const TriangleIndex> crossing,
                                      std::pair<double, double> band,
                                      unsigned smooth,
-                                     std::vector<std::uint8_t>& visited) {
+                                     std::vector<std::uint8_t>& visited,
+                                     const detail::EdgeCrossing* edge_crossing) {
     std::vector<detail::RawChain> chains;
-    detail::trace_level(tin, level.value, crossing, visited, chains);
+    detail::trace_level(tin, level.value, crossing, visited, chains, edge_crossing);
     std::vector<Contour> out;
     for (const detail::RawChain& chain : chains) {
         for (detail::RawChain& piece : split_chain(chain)) {
@@ -203,7 +207,8 @@ void run_levels(const Tin& tin,
                 const LevelBuckets& buckets,
                 const ContourOptions& options,
                 ContourSink& sink,
-                const Progress& progress) {
+                const Progress& progress,
+                const detail::EdgeCrossing* edge_crossing) {
     std::vector<double> values;
     for (const ContourLevel& l : levels) {
         values.push_back(l.value);
@@ -225,7 +230,7 @@ void run_levels(const Tin& tin,
         const std::span<const TriangleIndex> crossing(buckets.triangles.data() + buckets.offsets[k],
                                                       buckets.offsets[k + 1] - buckets.offsets[k]);
         traced[k] = trace_one_level(tin, levels[k], crossing, level_band(values, k, options),
-                                    options.smooth, visited.local());
+                                    options.smooth, visited.local(), edge_crossing);
         return k;
     };
     auto emit = [&](std::size_t k) {
@@ -233,8 +238,7 @@ void run_levels(const Tin& tin,
             sink.add(c.level, c.line, c.closed);
         }
         std::vector<Contour>().swap(traced[k]);
-        progress.report(static_cast<double>(k + 1) / static_cast<double>(levels.size()),
-                        "contour");
+        progress.report(static_cast<double>(k + 1) / static_cast<double>(levels.size()), "contour");
     };
     const auto tokens = static_cast<std::size_t>(2 * tbb::this_task_arena::max_concurrency());
     tbb::parallel_pipeline(
@@ -289,19 +293,14 @@ std::vector<ContourLevel> contour_levels(double zmin, double zmax, const Contour
     return levels;
 }
 
-void contour(const Tin& tin,
-             const ContourOptions& options,
-             ContourSink& sink,
-             const Progress& progress) {
-    double zmin = std::numeric_limits<double>::infinity();
-    double zmax = -zmin;
-    for (const Triangle& t : tin.triangles) {
-        for (const VertexIndex v : t.v) {
-            zmin = std::min(zmin, tin.vertices[v].z);
-            zmax = std::max(zmax, tin.vertices[v].z);
-        }
-    }
-    const std::vector<ContourLevel> levels = contour_levels(zmin, zmax, options);
+namespace detail {
+
+void trace_contour_levels(const Tin& tin,
+                          const std::vector<ContourLevel>& levels,
+                          const ContourOptions& options,
+                          ContourSink& sink,
+                          const Progress& progress,
+                          const EdgeCrossing* edge_crossing) {
     if (levels.empty()) {
         return;
     }
@@ -313,10 +312,54 @@ void contour(const Tin& tin,
     progress.report(0.0, "contour");
     if (options.threads > 0) {
         tbb::task_arena arena(static_cast<int>(options.threads));
-        arena.execute([&] { run_levels(tin, levels, buckets, options, sink, progress); });
+        arena.execute(
+            [&] { run_levels(tin, levels, buckets, options, sink, progress, edge_crossing); });
     } else {
-        run_levels(tin, levels, buckets, options, sink, progress);
+        run_levels(tin, levels, buckets, options, sink, progress, edge_crossing);
     }
+}
+
+}  // namespace detail
+
+void contour(const Tin& tin,
+             const ContourOptions& options,
+             ContourSink& sink,
+             const Progress& progress) {
+    if (options.surface != Interpolation::linear) {
+        const auto prepare = [&] {
+            return TinInterpolant::prepare(tin, options.surface, options.gradients,
+                                           progress.sub(0.0, 0.2));
+        };
+        const TinInterpolant interpolant =
+            options.threads > 0
+                ? tbb::task_arena(static_cast<int>(options.threads)).execute(prepare)
+                : prepare();
+        detail::contour_refined(tin, interpolant, options, sink, progress.sub(0.2, 1.0));
+        return;
+    }
+    double zmin = std::numeric_limits<double>::infinity();
+    double zmax = -zmin;
+    for (const Triangle& t : tin.triangles) {
+        for (const VertexIndex v : t.v) {
+            zmin = std::min(zmin, tin.vertices[v].z);
+            zmax = std::max(zmax, tin.vertices[v].z);
+        }
+    }
+    detail::trace_contour_levels(tin, contour_levels(zmin, zmax, options), options, sink, progress);
+}
+
+void contour(const Tin& tin,
+             const TinInterpolant& interpolant,
+             const ContourOptions& options,
+             ContourSink& sink,
+             const Progress& progress) {
+    if (interpolant.method() == Interpolation::linear) {
+        ContourOptions linear = options;
+        linear.surface = Interpolation::linear;
+        contour(tin, linear, sink, progress);
+        return;
+    }
+    detail::contour_refined(tin, interpolant, options, sink, progress);
 }
 
 std::vector<Contour> contour(const Tin& tin,

@@ -21,15 +21,13 @@ namespace dtm {
 namespace {
 
 struct XyHash {
-    std::size_t operator()(const Point2& p) const noexcept
-    {
+    std::size_t operator()(const Point2& p) const noexcept {
         const std::size_t a = std::hash<double>{}(p.x);
         return a ^ (std::hash<double>{}(p.y) + 0x9e3779b97f4a7c15ULL + (a << 6) + (a >> 2));
     }
 };
 
-bool lacks_height(const std::vector<Polyline>& lines)
-{
+bool lacks_height(const std::vector<Polyline>& lines) {
     return std::any_of(lines.begin(), lines.end(), [](const Polyline& l) {
         return std::any_of(l.points.begin(), l.points.end(),
                            [](const Point3& p) { return std::isnan(p.z); });
@@ -37,8 +35,7 @@ bool lacks_height(const std::vector<Polyline>& lines)
 }
 
 /// Step 1 (and the error of a hard breakline vertex left without a height).
-std::size_t heights_from_points(TerrainInput& t)
-{
+std::size_t heights_from_points(TerrainInput& t) {
     std::unordered_map<Point2, double, XyHash> z_at;
     z_at.reserve(t.points.size());
     for (const Point3& p : t.points) z_at.emplace(p.xy(), p.z);
@@ -69,9 +66,9 @@ std::size_t heights_from_points(TerrainInput& t)
 }
 
 /// Step 2: boundary and hole vertices from the surface of the points and hard breaklines.
-std::size_t rings_from_surface(TerrainInput& t, const LineHeightOptions& options,
-                               const Progress& progress)
-{
+std::size_t rings_from_surface(TerrainInput& t,
+                               const LineHeightOptions& options,
+                               const Progress& progress) {
     std::size_t missing = 0;
     for (const auto* rings : {&t.boundaries, &t.holes}) {
         for (const Polyline& l : *rings) {
@@ -84,8 +81,9 @@ std::size_t rings_from_surface(TerrainInput& t, const LineHeightOptions& options
     surface.points = t.points;
     surface.breaklines = t.breaklines;
     if (surface.points.size() < 3) {
-        throw InputError("boundary/hole vertices have no heights and there are fewer than 3 "
-                         "survey points to take them from");
+        throw InputError(
+            "boundary/hole vertices have no heights and there are fewer than 3 "
+            "survey points to take them from");
     }
     TriangulateOptions triangulation;
     triangulation.threads = options.threads;
@@ -105,9 +103,9 @@ std::size_t rings_from_surface(TerrainInput& t, const LineHeightOptions& options
 
 }  // namespace
 
-LineHeightReport resolve_line_heights(TerrainInput& input, const LineHeightOptions& options,
-                                      const Progress& progress)
-{
+LineHeightReport resolve_line_heights(TerrainInput& input,
+                                      const LineHeightOptions& options,
+                                      const Progress& progress) {
     LineHeightReport report;
     if (!lacks_height(input.breaklines) && !lacks_height(input.boundaries) &&
         !lacks_height(input.holes) && !lacks_height(input.soft_breaklines)) {

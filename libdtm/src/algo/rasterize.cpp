@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
 // TIN to DEM by scan conversion.
 //
-// The surface of a TIN is piecewise linear: inside a triangle the height is the barycentric
-// (linear) interpolation of its three vertex heights. A DEM samples it at cell centres
-// (GDAL's "pixel is area" convention; gdal_grid -a linear samples the same points).
+// The linear surface of a TIN is the barycentric interpolation of each triangle's vertex
+// heights; the cubic (Clough-Tocher) and natural-neighbour surfaces are evaluated per triangle
+// by a "shader" chosen once per run (interpolation.hpp). A DEM samples the surface at cell
+// centres (GDAL's "pixel is area" convention; gdal_grid -a linear samples the same points).
 //
 // 1. Bucketing (sequential, O(triangles)). The raster is cut into bands of whole rows. Each
 //    triangle goes into the bucket of every band its y-extent overlaps (a CSR array: counts,
@@ -23,8 +24,9 @@
 // top-left rule of rasterisers (an edge a->b of a counter-clockwise triangle owns its points if
 // it goes downwards, or is horizontal going west); an edge on the border of the TIN (hull,
 // boundary, hole: no neighbour) always owns its points, so the domain is closed. Values on an
-// edge are interpolated along the edge from its lower-numbered vertex, so either triangle would
-// give the same bits; a centre on a vertex gets the vertex height exactly.
+// edge are interpolated along the edge from its lower-numbered vertex (linear: the segment;
+// cubic: the edge's cubic), so either triangle would give the same bits; a centre on a vertex
+// gets the vertex height exactly.
 //
 // References: J. Pineda, "A parallel algorithm for polygon rasterization", SIGGRAPH 1988 (edge
 // functions, top-left rule); J. R. Shewchuk, "Adaptive precision floating-point arithmetic and
@@ -32,6 +34,7 @@
 #include "dtm/algo/rasterize.hpp"
 
 #include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_pipeline.h>
 #include <tbb/task_arena.h>
@@ -129,7 +132,7 @@ Buckets make_buckets(const Tin& tin, const GridSpec& spec, std::size_t band_rows
 /// One triangle prepared for scan conversion.
 class ScanTriangle {
 public:
-    ScanTriangle(const Tin& tin, const Triangle& t) : tin_(tin), tri_(t) {
+    ScanTriangle(const Tin& tin, const Triangle& t) : tri_(t) {
         for (int i = 0; i < 3; ++i) {
             p_[i] = &tin.vertices[t.v[static_cast<std::size_t>(i)]];
         }
@@ -173,9 +176,9 @@ public:
         return hit;
     }
 
-    /// Exact: does the triangle own the point (inside, or on an edge it owns)? On success,
-    /// @p z is the interpolated height.
-    bool sample(double x, double y, float& z) const {
+    /// Exact: does the triangle own the point (inside, or on an edge it owns)? Returns
+    /// outside, inside, on_edge + e or on_vertex + i.
+    [[nodiscard]] int classify(double x, double y) const {
         int on_edge = -1;
         int zero_count = 0;
         for (int e = 0; e < 3; ++e) {
@@ -183,22 +186,30 @@ public:
             const Point3& b = *p_[(e + 2) % 3];
             const int s = geom::orient2d(a.x, a.y, b.x, b.y, x, y);
             if (s < 0 || (s == 0 && !owns_[e])) {
-                return false;
+                return outside;
             }
             if (s == 0) {
                 on_edge = e;
                 ++zero_count;
             }
         }
-        if (zero_count >= 2) {  // on a vertex
-            z = static_cast<float>(vertex_at(x, y));
-        } else if (on_edge >= 0) {
-            z = static_cast<float>(along_edge(on_edge, x, y));
-        } else {
-            z = static_cast<float>(plane(x, y));
+        if (zero_count >= 2) {
+            for (int i = 0; i < 3; ++i) {
+                if (p_[i]->x == x && p_[i]->y == y) {
+                    return on_vertex + i;
+                }
+            }
+            return inside;  // unreachable for a non-degenerate triangle
         }
-        return true;
+        return on_edge >= 0 ? on_edge_0 + on_edge : inside;
     }
+
+    static constexpr int outside = -1;
+    static constexpr int inside = 0;
+    static constexpr int on_edge_0 = 1;
+    static constexpr int on_vertex = 4;
+
+    [[nodiscard]] double vertex_z(int i) const { return p_[i]->z; }
 
     /// Height at a point known to be inside (used for the filled interior of a span).
     [[nodiscard]] double plane(double x, double y) const {
@@ -215,18 +226,26 @@ public:
         return -1;
     }
 
+    /// Edge @p e (opposite vertex e) as corners (from, to), from its lower-numbered vertex, and
+    /// the parameter of (x, y) along it.
+    void edge_parameter(int e, double x, double y, int& from, int& to, double& t) const {
+        from = (e + 1) % 3;
+        to = (e + 2) % 3;
+        if (tri_.v[static_cast<std::size_t>(to)] < tri_.v[static_cast<std::size_t>(from)]) {
+            std::swap(from, to);
+        }
+        const Point3& p = *p_[from];
+        const Point3& q = *p_[to];
+        const double dx = q.x - p.x, dy = q.y - p.y;
+        t = ((x - p.x) * dx + (y - p.y) * dy) / (dx * dx + dy * dy);
+    }
+
     /// Linear interpolation along edge @p e (opposite vertex e), from its lower-numbered vertex.
     [[nodiscard]] double along_edge(int e, double x, double y) const {
-        VertexIndex i = tri_.v[static_cast<std::size_t>((e + 1) % 3)];
-        VertexIndex j = tri_.v[static_cast<std::size_t>((e + 2) % 3)];
-        if (j < i) {
-            std::swap(i, j);
-        }
-        const Point3& p = tin_.vertices[i];
-        const Point3& q = tin_.vertices[j];
-        const double dx = q.x - p.x, dy = q.y - p.y;
-        const double t = ((x - p.x) * dx + (y - p.y) * dy) / (dx * dx + dy * dy);
-        return p.z + t * (q.z - p.z);
+        int from = 0, to = 0;
+        double t = 0.0;
+        edge_parameter(e, x, y, from, to, t);
+        return p_[from]->z + t * (p_[to]->z - p_[from]->z);
     }
 
 private:
@@ -240,16 +259,6 @@ private:
         return b.y < a.y || (b.y == a.y && b.x < a.x);
     }
 
-    [[nodiscard]] double vertex_at(double x, double y) const {
-        for (int i = 0; i < 3; ++i) {
-            if (p_[i]->x == x && p_[i]->y == y) {
-                return p_[i]->z;
-            }
-        }
-        return plane(x, y);  // unreachable for a non-degenerate triangle
-    }
-
-    const Tin& tin_;
     const Triangle& tri_;
     const Point3* p_[3]{};
     double dzdx_ = 0.0;
@@ -257,21 +266,76 @@ private:
     bool owns_[3]{};
 };
 
+/// Heights of the linear surface: the triangle's plane.
+class LinearShader {
+public:
+    void begin(const ScanTriangle& tri, TriangleIndex) { tri_ = &tri; }
+    [[nodiscard]] double interior(double x, double y) const { return tri_->plane(x, y); }
+    [[nodiscard]] double on_edge(int e, double x, double y) const {
+        return tri_->along_edge(e, x, y);
+    }
+
+private:
+    const ScanTriangle* tri_ = nullptr;
+};
+
+/// Heights of the Clough-Tocher surface: one patch per triangle.
+class CubicShader {
+public:
+    CubicShader(const Tin& tin, const TinGradients& gradients) : surface_(tin, gradients) {}
+    void begin(const ScanTriangle& tri, TriangleIndex t) {
+        tri_ = &tri;
+        patch_ = surface_.patch(t);
+    }
+    [[nodiscard]] double interior(double x, double y) const { return patch_.value(x, y); }
+    [[nodiscard]] double on_edge(int e, double x, double y) const {
+        int from = 0, to = 0;
+        double t = 0.0;
+        tri_->edge_parameter(e, x, y, from, to, t);
+        return patch_.edge_value(from, to, t);
+    }
+
+private:
+    CubicSurface surface_;
+    CloughTocherPatch patch_;
+    const ScanTriangle* tri_ = nullptr;
+};
+
+/// Heights of the natural-neighbour surface: one cavity per centre.
+class NaturalShader {
+public:
+    NaturalShader(const NaturalNeighbourSurface& surface, NaturalNeighbourSurface::Workspace& ws)
+        : surface_(surface), ws_(ws) {}
+    void begin(const ScanTriangle&, TriangleIndex t) { t_ = t; }
+    [[nodiscard]] double interior(double x, double y) const {
+        return surface_.value(t_, x, y, ws_);
+    }
+    [[nodiscard]] double on_edge(int, double x, double y) const { return interior(x, y); }
+
+private:
+    const NaturalNeighbourSurface& surface_;
+    NaturalNeighbourSurface::Workspace& ws_;
+    TriangleIndex t_ = 0;
+};
+
 /// Scan-converts one triangle over the rows [row0, row0 + row_count) into @p band.
+template <class Shader>
 void scan_triangle(const Tin& tin,
-                   const Triangle& t,
+                   TriangleIndex index,
                    std::array<std::int32_t, 2> rows,
                    const GridSpec& spec,
                    std::size_t row0,
                    std::size_t row_count,
-                   std::span<float> band) {
+                   std::span<float> band,
+                   Shader& shader) {
     const auto first = std::max<std::ptrdiff_t>(rows[0], static_cast<std::ptrdiff_t>(row0));
     const auto last =
         std::min<std::ptrdiff_t>(rows[1], static_cast<std::ptrdiff_t>(row0 + row_count) - 1);
     if (first > last) {
         return;
     }
-    const ScanTriangle tri(tin, t);
+    const ScanTriangle tri(tin, tin.triangles[index]);
+    shader.begin(tri, index);
     const double max_col = static_cast<double>(spec.cols) - 1.0;
     for (auto r = static_cast<std::size_t>(first); r <= static_cast<std::size_t>(last); ++r) {
         const double y = spec.center_y(r);
@@ -294,10 +358,19 @@ void scan_triangle(const Tin& tin,
                 return false;
             }
             if (flat < 0 && x > xl + tol && x < xr - tol) {
-                z = static_cast<float>(tri.plane(x, y));
+                z = static_cast<float>(shader.interior(x, y));
                 return true;
             }
-            return tri.sample(x, y, z);
+            const int hit = tri.classify(x, y);
+            if (hit == ScanTriangle::outside) {
+                return false;
+            }
+            z = static_cast<float>(hit >= ScanTriangle::on_vertex
+                                       ? tri.vertex_z(hit - ScanTriangle::on_vertex)
+                                   : hit >= ScanTriangle::on_edge_0
+                                       ? shader.on_edge(hit - ScanTriangle::on_edge_0, x, y)
+                                       : shader.interior(x, y));
+            return true;
         };
         float* out = band.data() + (r - row0) * spec.cols;
         auto lo = static_cast<std::size_t>(clo);
@@ -316,7 +389,8 @@ void scan_triangle(const Tin& tin,
         out[hi] = z;
         for (std::size_t c = lo + 1; c < hi; ++c) {
             const double x = spec.center_x(c);
-            out[c] = static_cast<float>(flat >= 0 ? tri.along_edge(flat, x, y) : tri.plane(x, y));
+            out[c] =
+                static_cast<float>(flat >= 0 ? shader.on_edge(flat, x, y) : shader.interior(x, y));
         }
     }
 }
@@ -331,11 +405,21 @@ std::size_t choose_band_rows(const GridSpec& spec, const RasterizeOptions& optio
 }
 
 void run_pipeline(const Tin& tin,
+                  const TinInterpolant& interpolant,
                   const GridSpec& spec,
                   const RasterizeOptions& options,
                   const Buckets& buckets,
                   GridSink& sink,
                   const Progress& progress) {
+    const NaturalNeighbourSurface natural(tin, interpolant.barriers());
+    tbb::enumerable_thread_specific<NaturalNeighbourSurface::Workspace> workspaces;
+    const auto scan_band = [&](std::size_t b, std::size_t row0, std::size_t row_count,
+                               std::span<float> values, auto& shader) {
+        for (std::size_t k = buckets.offsets[b]; k < buckets.offsets[b + 1]; ++k) {
+            const TriangleIndex t = buckets.triangles[k];
+            scan_triangle(tin, t, buckets.rows[t], spec, row0, row_count, values, shader);
+        }
+    };
     std::size_t next = 0;
     const auto tokens = static_cast<std::size_t>(2 * tbb::this_task_arena::max_concurrency());
     auto source = [&](tbb::flow_control& fc) -> std::size_t {
@@ -353,9 +437,15 @@ void run_pipeline(const Tin& tin,
         const std::size_t row0 = b * buckets.band_rows;
         const std::size_t row_count = std::min(buckets.band_rows, spec.rows - row0);
         std::vector<float> values(row_count * spec.cols, options.nodata);
-        for (std::size_t k = buckets.offsets[b]; k < buckets.offsets[b + 1]; ++k) {
-            const TriangleIndex t = buckets.triangles[k];
-            scan_triangle(tin, tin.triangles[t], buckets.rows[t], spec, row0, row_count, values);
+        if (interpolant.method() == Interpolation::cubic) {
+            CubicShader shader(tin, interpolant.gradients());
+            scan_band(b, row0, row_count, values, shader);
+        } else if (interpolant.method() == Interpolation::natural) {
+            NaturalShader shader(natural, workspaces.local());
+            scan_band(b, row0, row_count, values, shader);
+        } else {
+            LinearShader shader;
+            scan_band(b, row0, row_count, values, shader);
         }
         bands[b] = std::move(values);
         return b;
@@ -368,9 +458,10 @@ void run_pipeline(const Tin& tin,
                         "rasterize");
     };
     tbb::parallel_pipeline(
-        tokens, tbb::make_filter<void, std::size_t>(tbb::filter_mode::serial_in_order, source) &
-                    tbb::make_filter<std::size_t, std::size_t>(tbb::filter_mode::parallel, compute) &
-                    tbb::make_filter<std::size_t, void>(tbb::filter_mode::serial_in_order, emit));
+        tokens,
+        tbb::make_filter<void, std::size_t>(tbb::filter_mode::serial_in_order, source) &
+            tbb::make_filter<std::size_t, std::size_t>(tbb::filter_mode::parallel, compute) &
+            tbb::make_filter<std::size_t, void>(tbb::filter_mode::serial_in_order, emit));
 }
 
 /// Collects the streamed bands into a Grid.
@@ -389,6 +480,7 @@ private:
 }  // namespace
 
 void rasterize(const Tin& tin,
+               const TinInterpolant& interpolant,
                const GridSpec& spec,
                const RasterizeOptions& options,
                GridSink& sink,
@@ -401,15 +493,38 @@ void rasterize(const Tin& tin,
         throw UsageError("rasterize: " + std::to_string(spec.cols) + " x " +
                          std::to_string(spec.rows) + " cells is too large");
     }
+    // The interpolant is indexed by triangle, so it serves the renumbered copy as well.
     const Tin local = detail::with_coherent_vertices(tin);
     const Buckets buckets = make_buckets(local, spec, choose_band_rows(spec, options));
     progress.report(0.0, "rasterize");
+    const auto run = [&] {
+        run_pipeline(local, interpolant, spec, options, buckets, sink, progress);
+    };
     if (options.threads > 0) {
         tbb::task_arena arena(static_cast<int>(options.threads));
-        arena.execute([&] { run_pipeline(local, spec, options, buckets, sink, progress); });
+        arena.execute(run);
     } else {
-        run_pipeline(local, spec, options, buckets, sink, progress);
+        run();
     }
+}
+
+void rasterize(const Tin& tin,
+               const GridSpec& spec,
+               const RasterizeOptions& options,
+               GridSink& sink,
+               const Progress& progress) {
+    if (options.interpolation == Interpolation::linear) {
+        rasterize(tin, TinInterpolant{}, spec, options, sink, progress);
+        return;
+    }
+    const auto prepare = [&] {
+        return TinInterpolant::prepare(tin, options.interpolation, options.gradients,
+                                       progress.sub(0.0, 0.3));
+    };
+    const TinInterpolant interpolant =
+        options.threads > 0 ? tbb::task_arena(static_cast<int>(options.threads)).execute(prepare)
+                            : prepare();
+    rasterize(tin, interpolant, spec, options, sink, progress.sub(0.3, 1.0));
 }
 
 Grid rasterize(const Tin& tin,

@@ -40,8 +40,7 @@ struct CellGrid {
     double cell_w = 1.0;
     double cell_h = 1.0;
 
-    void fit(const Box2& b, std::size_t target_cells)
-    {
+    void fit(const Box2& b, std::size_t target_cells) {
         box = b;
         const double w = std::max(b.xmax - b.xmin, std::numeric_limits<double>::min());
         const double h = std::max(b.ymax - b.ymin, std::numeric_limits<double>::min());
@@ -52,18 +51,15 @@ struct CellGrid {
         cell_w = w / static_cast<double>(cols);
         cell_h = h / static_cast<double>(rows);
     }
-    [[nodiscard]] std::size_t col(double x) const
-    {
+    [[nodiscard]] std::size_t col(double x) const {
         const double c = std::floor((x - box.xmin) / cell_w);
         return c <= 0.0 ? 0 : std::min(cols - 1, static_cast<std::size_t>(c));
     }
-    [[nodiscard]] std::size_t row(double y) const
-    {
+    [[nodiscard]] std::size_t row(double y) const {
         const double r = std::floor((y - box.ymin) / cell_h);
         return r <= 0.0 ? 0 : std::min(rows - 1, static_cast<std::size_t>(r));
     }
-    [[nodiscard]] bool contains(Point2 p) const
-    {
+    [[nodiscard]] bool contains(Point2 p) const {
         return p.x >= box.xmin && p.x <= box.xmax && p.y >= box.ymin && p.y <= box.ymax;
     }
 };
@@ -92,8 +88,7 @@ namespace {
 Point2 xy(const Point3& p) { return {p.x, p.y}; }
 
 /// Orientations of @p p against the three sides of @p t (side s: v[s+1] -> v[s+2]).
-std::array<int, 3> sides_of(const Tin& tin, const Triangle& t, Point2 p)
-{
+std::array<int, 3> sides_of(const Tin& tin, const Triangle& t, Point2 p) {
     std::array<int, 3> o{};
     for (unsigned s = 0; s < 3; ++s) {
         o[s] = geom::orient2d(tin.vertex(t.v[(s + 1) % 3]), tin.vertex(t.v[(s + 2) % 3]), p);
@@ -102,8 +97,7 @@ std::array<int, 3> sides_of(const Tin& tin, const Triangle& t, Point2 p)
 }
 
 /// The location of @p p in triangle @p t, given that no side has it strictly outside.
-TinLocation classify(TriangleIndex t, const std::array<int, 3>& o)
-{
+TinLocation classify(TriangleIndex t, const std::array<int, 3>& o) {
     const int zeros = (o[0] == 0) + (o[1] == 0) + (o[2] == 0);
     for (std::uint8_t s = 0; s < 3; ++s) {
         if (zeros == 1 && o[s] == 0) return {TinLocation::Kind::edge, {t, s}};
@@ -115,8 +109,7 @@ TinLocation classify(TriangleIndex t, const std::array<int, 3>& o)
 }
 
 /// True if the border of @p tin is one loop that never turns right: the TIN is its convex hull.
-bool covers_its_hull(const Tin& tin)
-{
+bool covers_its_hull(const Tin& tin) {
     std::vector<VertexIndex> next(tin.vertices.size(), no_vertex);
     std::size_t border = 0;
     VertexIndex any = no_vertex;
@@ -147,8 +140,7 @@ bool covers_its_hull(const Tin& tin)
 
 }  // namespace
 
-SurfaceSampler::SurfaceSampler(const Tin& tin) : tin_(&tin), indices_(std::make_unique<Indices>())
-{
+SurfaceSampler::SurfaceSampler(const Tin& tin) : tin_(&tin), indices_(std::make_unique<Indices>()) {
     Box2 box;
     for (const Triangle& t : tin.triangles) {
         for (const VertexIndex v : t.v) box.add(tin.vertex(v));
@@ -174,8 +166,7 @@ SurfaceSampler::SurfaceSampler(SurfaceSampler&&) noexcept = default;
 SurfaceSampler& SurfaceSampler::operator=(SurfaceSampler&&) noexcept = default;
 SurfaceSampler::~SurfaceSampler() = default;
 
-TinLocation SurfaceSampler::locate(Point2 p, Cursor& cursor) const
-{
+TinLocation SurfaceSampler::locate(Point2 p, Cursor& cursor) const {
     const Tin& tin = *tin_;
     const Indices& ix = *indices_;
     if (tin.triangles.empty() || !ix.grid.contains(p)) return {};
@@ -224,23 +215,25 @@ TinLocation SurfaceSampler::locate(Point2 p, Cursor& cursor) const
     return {};
 }
 
-double SurfaceSampler::height_at(const TinLocation& where, Point2 q) const
-{
+double SurfaceSampler::height_at(const TinLocation& where, Point2 q) const {
     const Tin& tin = *tin_;
     switch (where.kind) {
-    case TinLocation::Kind::outside: return std::numeric_limits<double>::quiet_NaN();
-    case TinLocation::Kind::vertex: return tin.vertex(origin(tin, where.edge)).z;
-    case TinLocation::Kind::edge: {
-        const VertexIndex u = origin(tin, where.edge);
-        const VertexIndex w = destination(tin, where.edge);
-        const Point3& a = tin.vertex(std::min(u, w));
-        const Point3& b = tin.vertex(std::max(u, w));
-        const double dx = b.x - a.x;
-        const double dy = b.y - a.y;
-        const double t = ((q.x - a.x) * dx + (q.y - a.y) * dy) / (dx * dx + dy * dy);
-        return a.z + t * (b.z - a.z);
-    }
-    case TinLocation::Kind::triangle: break;
+        case TinLocation::Kind::outside:
+            return std::numeric_limits<double>::quiet_NaN();
+        case TinLocation::Kind::vertex:
+            return tin.vertex(origin(tin, where.edge)).z;
+        case TinLocation::Kind::edge: {
+            const VertexIndex u = origin(tin, where.edge);
+            const VertexIndex w = destination(tin, where.edge);
+            const Point3& a = tin.vertex(std::min(u, w));
+            const Point3& b = tin.vertex(std::max(u, w));
+            const double dx = b.x - a.x;
+            const double dy = b.y - a.y;
+            const double t = ((q.x - a.x) * dx + (q.y - a.y) * dy) / (dx * dx + dy * dy);
+            return a.z + t * (b.z - a.z);
+        }
+        case TinLocation::Kind::triangle:
+            break;
     }
     const Triangle& tri = tin.triangles[where.edge.triangle];
     const Point3& a = tin.vertex(tri.v[0]);
@@ -252,21 +245,18 @@ double SurfaceSampler::height_at(const TinLocation& where, Point2 q) const
     return u * a.z + v * b.z + (1.0 - u - v) * c.z;
 }
 
-double SurfaceSampler::height(Point2 p, Cursor& cursor) const
-{
+double SurfaceSampler::height(Point2 p, Cursor& cursor) const {
     return height_at(locate(p, cursor), p);
 }
 
-double SurfaceSampler::height_or_nearest(Point2 p, Cursor& cursor) const
-{
+double SurfaceSampler::height_or_nearest(Point2 p, Cursor& cursor) const {
     const TinLocation where = locate(p, cursor);
     if (where.kind != TinLocation::Kind::outside) return height_at(where, p);
     const VertexIndex v = nearest_vertex(p);
     return v == no_vertex ? std::numeric_limits<double>::quiet_NaN() : tin_->vertex(v).z;
 }
 
-void TriangleGrid::build(const Tin& tin, const Box2& box)
-{
+void TriangleGrid::build(const Tin& tin, const Box2& box) {
     CellGrid& g = grid;
     g.fit(box, tin.triangles.size());
     const auto span = [&](const Triangle& t, auto&& visit) {
@@ -288,19 +278,17 @@ void TriangleGrid::build(const Tin& tin, const Box2& box)
 
 namespace {
 
-void build_kd(std::vector<VertexIndex>& kd, std::size_t lo, std::size_t hi, int axis,
-              const Tin& tin)
-{
+void build_kd(
+    std::vector<VertexIndex>& kd, std::size_t lo, std::size_t hi, int axis, const Tin& tin) {
     if (hi - lo < 2) return;
     const std::size_t mid = lo + (hi - lo) / 2;
-    std::nth_element(kd.begin() + static_cast<std::ptrdiff_t>(lo),
-                     kd.begin() + static_cast<std::ptrdiff_t>(mid),
-                     kd.begin() + static_cast<std::ptrdiff_t>(hi),
-                     [&](VertexIndex a, VertexIndex b) {
-                         const double ka = axis == 0 ? tin.vertex(a).x : tin.vertex(a).y;
-                         const double kb = axis == 0 ? tin.vertex(b).x : tin.vertex(b).y;
-                         return ka < kb || (ka == kb && a < b);
-                     });
+    std::nth_element(
+        kd.begin() + static_cast<std::ptrdiff_t>(lo), kd.begin() + static_cast<std::ptrdiff_t>(mid),
+        kd.begin() + static_cast<std::ptrdiff_t>(hi), [&](VertexIndex a, VertexIndex b) {
+            const double ka = axis == 0 ? tin.vertex(a).x : tin.vertex(a).y;
+            const double kb = axis == 0 ? tin.vertex(b).x : tin.vertex(b).y;
+            return ka < kb || (ka == kb && a < b);
+        });
     build_kd(kd, lo, mid, 1 - axis, tin);
     build_kd(kd, mid + 1, hi, 1 - axis, tin);
 }
@@ -312,8 +300,7 @@ struct Nearest {
     double best = std::numeric_limits<double>::infinity();
     VertexIndex best_vertex = no_vertex;
 
-    void search(std::size_t lo, std::size_t hi, int axis)
-    {
+    void search(std::size_t lo, std::size_t hi, int axis) {
         if (lo >= hi) return;
         const std::size_t mid = lo + (hi - lo) / 2;
         const VertexIndex v = kd[mid];
@@ -344,8 +331,7 @@ struct Nearest {
 
 }  // namespace
 
-VertexIndex SurfaceSampler::nearest_vertex(Point2 p) const
-{
+VertexIndex SurfaceSampler::nearest_vertex(Point2 p) const {
     const Tin& tin = *tin_;
     if (tin.triangles.empty()) return no_vertex;
     Indices& ix = *indices_;

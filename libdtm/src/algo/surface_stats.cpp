@@ -12,10 +12,10 @@
 // Summen"), so the result does not depend on the triangle count in any visible digit.
 #include "dtm/algo/surface_stats.hpp"
 
-#include "algo/detail/compensated_sum.hpp"
-
 #include <cmath>
 #include <vector>
+
+#include "algo/detail/compensated_sum.hpp"
 
 namespace dtm {
 namespace {

@@ -10,7 +10,8 @@
 //   3. constraints inserted into the same triangles by cavity retriangulation, crossings split
 //      with interpolated heights (detail/constraint_batch.cpp, detail/mesh_edit.cpp,
 //      detail/mesh_edit_segment.cpp);
-//   4. the TIN: the triangle array itself, in place, in canonical order (detail/tin_build_triangles.cpp);
+//   4. the TIN: the triangle array itself, in place, in canonical order
+//   (detail/tin_build_triangles.cpp);
 //      the domain: outside the boundary, holes and long border triangles removed
 //      (detail/tin_build_domain.cpp, detail/tin_build_finish.cpp).
 // First, 2-D line vertices get heights (resolve_line_heights: from survey points at the same
@@ -43,8 +44,7 @@ namespace {
 
 using detail::MergedInput;
 
-double seconds_since(std::chrono::steady_clock::time_point start)
-{
+double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
@@ -58,22 +58,24 @@ struct Kernel {
     double seconds_constrain = 0.0;
 };
 
-std::size_t parallel_cutoff(std::size_t n, const TriangulateOptions& options)
-{
-    const unsigned threads =
-        options.threads > 0 ? options.threads
-                            : static_cast<unsigned>(tbb::this_task_arena::max_concurrency());
+std::size_t parallel_cutoff(std::size_t n, const TriangulateOptions& options) {
+    const unsigned threads = options.threads > 0
+                                 ? options.threads
+                                 : static_cast<unsigned>(tbb::this_task_arena::max_concurrency());
     if (options.tiles == 1 || (options.tiles == 0 && (threads <= 1 || n < 200'000))) return 0;
-    const std::size_t tiles = options.tiles > 0 ? options.tiles : 8 * static_cast<std::size_t>(threads);
+    const std::size_t tiles =
+        options.tiles > 0 ? options.tiles : 8 * static_cast<std::size_t>(threads);
     return std::max<std::size_t>(n / tiles, 4);
 }
 
 /// The kernel over the merged vertices (with @p with_soft, all of them; else those with known
 /// heights) with the segments among them inserted. With @p keep_heights, or when there are
 /// segments, the heights per kernel vertex are kept in Kernel::z.
-Kernel build_kernel(const MergedInput& in, bool with_soft, bool keep_heights,
-                    const TriangulateOptions& options, const Progress& progress)
-{
+Kernel build_kernel(const MergedInput& in,
+                    bool with_soft,
+                    bool keep_heights,
+                    const TriangulateOptions& options,
+                    const Progress& progress) {
     Kernel k;
     auto start = std::chrono::steady_clock::now();
     detail::BigArray<detail::KernelPoint> points;
@@ -110,13 +112,14 @@ Kernel build_kernel(const MergedInput& in, bool with_soft, bool keep_heights,
     const detail::BigArray<detail::KernelPoint>& kp = k.triangles.points;
     std::vector<detail::VertexId> kernel_of(in.vertices.size(), no_vertex);
     k.z.resize(kernel_count);
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, kernel_count, 1 << 14), [&](const auto& r) {
-        for (std::size_t v = r.begin(); v < r.end(); ++v) {
-            const VertexIndex id = kp[v].id;  // distinct: no write conflicts
-            kernel_of[id] = static_cast<detail::VertexId>(v);
-            k.z[v] = in.vertices[id].z;
-        }
-    });
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, kernel_count, 1 << 14),
+                      [&](const auto& r) {
+                          for (std::size_t v = r.begin(); v < r.end(); ++v) {
+                              const VertexIndex id = kp[v].id;  // distinct: no write conflicts
+                              kernel_of[id] = static_cast<detail::VertexId>(v);
+                              k.z[v] = in.vertices[id].z;
+                          }
+                      });
     for (detail::InputSegment& seg : segments) {
         seg.a = kernel_of[seg.a];
         seg.b = kernel_of[seg.b];
@@ -137,9 +140,9 @@ Kernel build_kernel(const MergedInput& in, bool with_soft, bool keep_heights,
 
 /// Heights of soft-breakline-only vertices, interpolated on the surface built without them (the
 /// kernel of the other vertices with their constraints, sampled as a Tin by SurfaceSampler).
-void interpolate_soft_heights(MergedInput& in, const TriangulateOptions& options,
-                              const Progress& progress)
-{
+void interpolate_soft_heights(MergedInput& in,
+                              const TriangulateOptions& options,
+                              const Progress& progress) {
     Kernel k = build_kernel(in, false, true, options, progress);
     std::vector<Point3> vertices = in.vertices;  // the soft-only ones are on no triangle
     const detail::BigArray<detail::KernelPoint>& kp = k.triangles.points;
@@ -156,8 +159,7 @@ void interpolate_soft_heights(MergedInput& in, const TriangulateOptions& options
     for (std::size_t i = 0; i < in.vertices.size(); ++i) in.z_known[i] = true;
 }
 
-void check_not_degenerate(const MergedInput& in)
-{
+void check_not_degenerate(const MergedInput& in) {
     const std::size_t n = in.vertices.size();
     if (n < 3) {
         throw InputError("triangulation needs at least 3 distinct points; the input has " +
@@ -170,9 +172,9 @@ void check_not_degenerate(const MergedInput& in)
                      " distinct points are collinear: there is no surface to triangulate");
 }
 
-TriangulateResult run(TerrainInput&& input, const TriangulateOptions& options,
-                      const Progress& outer)
-{
+TriangulateResult run(TerrainInput&& input,
+                      const TriangulateOptions& options,
+                      const Progress& outer) {
     TriangulateResult result;
     result.line_heights =
         resolve_line_heights(input, {options.threads, options.tiles}, outer.sub(0.0, 0.1));
@@ -187,8 +189,7 @@ TriangulateResult run(TerrainInput&& input, const TriangulateOptions& options,
     bool has_soft = false;
     for (const bool known : merged.z_known) has_soft = has_soft || !known;
     if (has_soft) interpolate_soft_heights(merged, options, progress.sub(0.0, 0.3));
-    Kernel k =
-        build_kernel(merged, true, false, options, progress.sub(has_soft ? 0.3 : 0.0, 0.95));
+    Kernel k = build_kernel(merged, true, false, options, progress.sub(has_soft ? 0.3 : 0.0, 0.95));
 
     start = std::chrono::steady_clock::now();
     std::vector<Point3> vertices = std::move(merged.vertices);
@@ -229,22 +230,27 @@ TriangulateResult run(TerrainInput&& input, const TriangulateOptions& options,
         result.input_to_vertex.resize(merged_count);  // kernel's memory is released
         std::iota(result.input_to_vertex.begin(), result.input_to_vertex.end(), VertexIndex{0});
     }
+    if (options.optimize != Criterion::delaunay) {
+        result.stats.optimize =
+            optimize_tin(result.tin, {.criterion = options.optimize, .threads = options.threads},
+                         progress.sub(1.0, 1.0));
+    }
     return result;
 }
 
 }  // namespace
 
-TriangulateResult triangulate(TerrainInput&& input, const TriangulateOptions& options,
-                              const Progress& progress)
-{
+TriangulateResult triangulate(TerrainInput&& input,
+                              const TriangulateOptions& options,
+                              const Progress& progress) {
     if (options.threads == 0) return run(std::move(input), options, progress);
     tbb::task_arena arena(static_cast<int>(options.threads));
     return arena.execute([&] { return run(std::move(input), options, progress); });
 }
 
-TriangulateResult triangulate(const TerrainInput& input, const TriangulateOptions& options,
-                              const Progress& progress)
-{
+TriangulateResult triangulate(const TerrainInput& input,
+                              const TriangulateOptions& options,
+                              const Progress& progress) {
     TerrainInput copy = input;
     return triangulate(std::move(copy), options, progress);
 }

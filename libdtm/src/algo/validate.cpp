@@ -21,20 +21,17 @@ namespace {
 
 constexpr std::size_t max_problems = 10;
 
-void add(CheckReport& report, const std::string& problem)
-{
+void add(CheckReport& report, const std::string& problem) {
     if (report.problems.size() < max_problems) report.problems.push_back(problem);
 }
 
-std::uint64_t edge_key(VertexIndex a, VertexIndex b)
-{
+std::uint64_t edge_key(VertexIndex a, VertexIndex b) {
     if (a > b) std::swap(a, b);
     return (static_cast<std::uint64_t>(a) << 32) | b;
 }
 
 struct XyHash {
-    std::size_t operator()(const std::pair<double, double>& p) const noexcept
-    {
+    std::size_t operator()(const std::pair<double, double>& p) const noexcept {
         return std::hash<double>()(p.first) * 31u ^ std::hash<double>()(p.second);
     }
 };
@@ -42,11 +39,11 @@ struct XyHash {
 /// q lies on segment a-b: exactly, or within rounding of it. After two breaklines cross, each is
 /// continued from the rounded intersection point, and a vertex exactly on such a piece can sit a
 /// few units of the last place off the original segment: 1 micrometre plus 1e-9 of the length.
-bool on_or_next_to(const Point3& a, const Point3& b, const Point3& q)
-{
+bool on_or_next_to(const Point3& a, const Point3& b, const Point3& q) {
     const double lo_x = std::min(a.x, b.x), hi_x = std::max(a.x, b.x);
     const double lo_y = std::min(a.y, b.y), hi_y = std::max(a.y, b.y);
-    if (geom::orient2d(a, b, q) == 0) return lo_x <= q.x && q.x <= hi_x && lo_y <= q.y && q.y <= hi_y;
+    if (geom::orient2d(a, b, q) == 0)
+        return lo_x <= q.x && q.x <= hi_x && lo_y <= q.y && q.y <= hi_y;
     const double dx = b.x - a.x, dy = b.y - a.y;
     const double length = std::hypot(dx, dy);
     const double tolerance = 1e-6 + 1e-9 * length;
@@ -60,8 +57,7 @@ bool on_or_next_to(const Point3& a, const Point3& b, const Point3& q)
 /// which vertices lie near a segment. Used only for segments the chain search did not find.
 class TriangleGrid {
 public:
-    explicit TriangleGrid(const Tin& tin) : tin_(tin)
-    {
+    explicit TriangleGrid(const Tin& tin) : tin_(tin) {
         for (const Point3& v : tin.vertices) box_.add(v);
         const double w = std::max(box_.xmax - box_.xmin, 1e-300);
         const double h = std::max(box_.ymax - box_.ymin, 1e-300);
@@ -82,12 +78,12 @@ public:
     }
 
     /// p lies in a triangle of the TIN or on its border.
-    [[nodiscard]] bool covers(const Point2& p) const
-    {
+    [[nodiscard]] bool covers(const Point2& p) const {
         if (p.x < box_.xmin || p.x > box_.xmax || p.y < box_.ymin || p.y > box_.ymax) return false;
         for (const TriangleIndex t : buckets_[row(p.y) * cols_ + col(p.x)]) {
             const auto& v = tin_.triangles[t].v;
-            const Point3 &a = tin_.vertices[v[0]], &b = tin_.vertices[v[1]], &c = tin_.vertices[v[2]];
+            const Point3 &a = tin_.vertices[v[0]], &b = tin_.vertices[v[1]],
+                         &c = tin_.vertices[v[2]];
             if (geom::orient2d(a, b, p) >= 0 && geom::orient2d(b, c, p) >= 0 &&
                 geom::orient2d(c, a, p) >= 0) {
                 return true;
@@ -98,9 +94,9 @@ public:
 
     /// The vertices of triangles in the cells around segment a-b for which keep(v) holds.
     template <class Keep>
-    [[nodiscard]] std::vector<VertexIndex> vertices_near(const Point3& a, const Point3& b,
-                                                         Keep keep) const
-    {
+    [[nodiscard]] std::vector<VertexIndex> vertices_near(const Point3& a,
+                                                         const Point3& b,
+                                                         Keep keep) const {
         std::set<VertexIndex> found;
         for (std::size_t r = row(std::min(a.y, b.y)); r <= row(std::max(a.y, b.y)); ++r) {
             for (std::size_t c = col(std::min(a.x, b.x)); c <= col(std::max(a.x, b.x)); ++c) {
@@ -115,13 +111,11 @@ public:
     }
 
 private:
-    [[nodiscard]] std::size_t col(double x) const
-    {
+    [[nodiscard]] std::size_t col(double x) const {
         const double i = std::floor((x - box_.xmin) / cell_);
         return static_cast<std::size_t>(std::clamp(i, 0.0, static_cast<double>(cols_ - 1)));
     }
-    [[nodiscard]] std::size_t row(double y) const
-    {
+    [[nodiscard]] std::size_t row(double y) const {
         const double i = std::floor((y - box_.ymin) / cell_);
         return static_cast<std::size_t>(std::clamp(i, 0.0, static_cast<double>(rows_ - 1)));
     }
@@ -136,15 +130,34 @@ private:
 
 }  // namespace
 
-std::string CheckReport::text() const
-{
+CheckReport verify_tin(const Tin& tin,
+                       const TerrainInput& input,
+                       std::span<const VertexIndex> input_to_vertex,
+                       Criterion criterion) {
+    CheckReport all = verify_topology(tin);
+    const auto append = [&all](const CheckReport& r) {
+        all.problems.insert(all.problems.end(), r.problems.begin(), r.problems.end());
+    };
+    if (criterion == Criterion::delaunay) {
+        append(verify_constrained_delaunay(tin));
+    } else {
+        for (const auto& [a, b] : improvable_edges(tin, criterion, 5)) {
+            all.problems.push_back("edge " + std::to_string(a) + "-" + std::to_string(b) +
+                                   " is not locally optimal under " +
+                                   std::string(criterion_name(criterion)));
+        }
+    }
+    append(verify_constraints(tin, input, input_to_vertex));
+    return all;
+}
+
+std::string CheckReport::text() const {
     std::ostringstream out;
     for (const std::string& p : problems) out << p << '\n';
     return out.str();
 }
 
-CheckReport verify_topology(const Tin& tin)
-{
+CheckReport verify_topology(const Tin& tin) {
     CheckReport report;
     const std::size_t nv = tin.vertices.size();
     const std::size_t nt = tin.triangles.size();
@@ -173,10 +186,11 @@ CheckReport verify_topology(const Tin& tin)
             const Triangle& other = tin.triangles[n];
             bool back = false;
             for (int j = 0; j < 3; ++j) {
-                back = back || (other.n[j] == t && other.v[(j + 1) % 3] == b &&
-                                other.v[(j + 2) % 3] == a);
+                back = back ||
+                       (other.n[j] == t && other.v[(j + 1) % 3] == b && other.v[(j + 2) % 3] == a);
             }
-            if (!back) add(report, name + ": neighbour " + std::to_string(n) + " does not link back");
+            if (!back)
+                add(report, name + ": neighbour " + std::to_string(n) + " does not link back");
         }
     }
     for (const ConstrainedEdge& c : tin.constraints) {
@@ -188,8 +202,7 @@ CheckReport verify_topology(const Tin& tin)
     return report;
 }
 
-CheckReport verify_constrained_delaunay(const Tin& tin)
-{
+CheckReport verify_constrained_delaunay(const Tin& tin) {
     CheckReport report;
     std::unordered_set<std::uint64_t> constrained;
     for (const ConstrainedEdge& c : tin.constraints) constrained.insert(edge_key(c.a, c.b));
@@ -214,12 +227,13 @@ CheckReport verify_constrained_delaunay(const Tin& tin)
     return report;
 }
 
-CheckReport verify_constraints(const Tin& tin, const TerrainInput& input,
-                               std::span<const VertexIndex> input_to_vertex)
-{
+CheckReport verify_constraints(const Tin& tin,
+                               const TerrainInput& input,
+                               std::span<const VertexIndex> input_to_vertex) {
     CheckReport report;
     std::unordered_map<std::pair<double, double>, VertexIndex, XyHash> at;
-    for (VertexIndex v = 0; v < tin.vertices.size(); ++v) at[{tin.vertices[v].x, tin.vertices[v].y}] = v;
+    for (VertexIndex v = 0; v < tin.vertices.size(); ++v)
+        at[{tin.vertices[v].x, tin.vertices[v].y}] = v;
     std::unordered_set<std::pair<double, double>, XyHash> given;
     for (const Point3& p : input.points) given.insert({p.x, p.y});
     std::vector<bool> used(tin.vertices.size(), false);
@@ -314,8 +328,9 @@ CheckReport verify_constraints(const Tin& tin, const TerrainInput& input,
                 if (va == vb) continue;
                 if (!used[va] || !used[vb]) {  // an end beyond the boundary or in a hole
                     if (!present_where_inside(va, vb)) {
-                        add(report, name + ": not present as constrained edges where it crosses "
-                                           "the surface");
+                        add(report, name +
+                                        ": not present as constrained edges where it crosses "
+                                        "the surface");
                     }
                     continue;
                 }
@@ -326,8 +341,10 @@ CheckReport verify_constraints(const Tin& tin, const TerrainInput& input,
         }
     };
     // All input vertices first (so "added" means added by the triangulator), then the chains.
-    for (const auto* lines : {&input.breaklines, &input.soft_breaklines, &input.boundaries, &input.holes}) {
-        for (const Polyline& line : *lines) for (const Point3& p : line.points) given.insert({p.x, p.y});
+    for (const auto* lines :
+         {&input.breaklines, &input.soft_breaklines, &input.boundaries, &input.holes}) {
+        for (const Polyline& line : *lines)
+            for (const Point3& p : line.points) given.insert({p.x, p.y});
     }
     check_lines(input.breaklines, "breakline");
     check_lines(input.boundaries, "boundary");
@@ -336,8 +353,7 @@ CheckReport verify_constraints(const Tin& tin, const TerrainInput& input,
     return report;
 }
 
-double tin_area(const Tin& tin)
-{
+double tin_area(const Tin& tin) {
     double sum = 0.0;
     double compensation = 0.0;
     for (const Triangle& t : tin.triangles) {

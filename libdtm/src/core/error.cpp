@@ -5,9 +5,10 @@
 
 namespace dtm {
 namespace {
-std::string located(const std::filesystem::path& file, std::size_t line, std::size_t column,
-                    const std::string& what)
-{
+std::string located(const std::filesystem::path& file,
+                    std::size_t line,
+                    std::size_t column,
+                    const std::string& what) {
     std::string text = file.string();
     if (line > 0) text += ":" + std::to_string(line);
     if (column > 0) text += ":" + std::to_string(column);
@@ -15,17 +16,18 @@ std::string located(const std::filesystem::path& file, std::size_t line, std::si
 }
 }  // namespace
 
-InputError::InputError(std::filesystem::path file, std::size_t line, std::size_t column,
+InputError::InputError(std::filesystem::path file,
+                       std::size_t line,
+                       std::size_t column,
                        const std::string& what)
-    : Error(located(file, line, column, what)), file_(std::move(file)), line_(line), column_(column)
-{
-}
+    : Error(located(file, line, column, what)),
+      file_(std::move(file)),
+      line_(line),
+      column_(column) {}
 
 InputError::InputError(const std::string& what) : Error(what) {}
 
 OptionError::OptionError(std::string field, const std::string& what)
-    : UsageError(what), field_(std::move(field))
-{
-}
+    : UsageError(what), field_(std::move(field)) {}
 
 }  // namespace dtm

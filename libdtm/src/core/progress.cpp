@@ -17,13 +17,11 @@ struct Progress::Shared {
     std::string last_what;
 };
 
-Progress::Progress(ProgressFn fn) : shared_(std::make_shared<Shared>())
-{
+Progress::Progress(ProgressFn fn) : shared_(std::make_shared<Shared>()) {
     shared_->fn = std::move(fn);
 }
 
-void Progress::report(double fraction, std::string_view what) const
-{
+void Progress::report(double fraction, std::string_view what) const {
     if (!shared_) return;
     check();
     fraction = fraction < 0.0 ? 0.0 : (fraction > 1.0 ? 1.0 : fraction);
@@ -39,21 +37,18 @@ void Progress::report(double fraction, std::string_view what) const
     check();
 }
 
-void Progress::check() const
-{
+void Progress::check() const {
     if (shared_ && shared_->cancelled.load(std::memory_order_relaxed)) throw Cancelled();
 }
 
-Progress Progress::sub(double begin, double end) const
-{
+Progress Progress::sub(double begin, double end) const {
     Progress child = *this;
     child.begin_ = begin_ + (end_ - begin_) * begin;
     child.end_ = begin_ + (end_ - begin_) * end;
     return child;
 }
 
-void Progress::cancel() const noexcept
-{
+void Progress::cancel() const noexcept {
     if (shared_) shared_->cancelled.store(true);
 }
 

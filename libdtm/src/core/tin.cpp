@@ -1,25 +1,27 @@
 // SPDX-License-Identifier: MIT
 // Tin helpers: constraint kind names and half-edge twins (neighbour links rebuilt from the
 // triangles: tin_links.cpp).
-#include <cstdint>
-
 #include "dtm/core/tin.hpp"
+
+#include <cstdint>
 
 namespace dtm {
 
-const char* constraint_kind_name(ConstraintKind kind) noexcept
-{
+const char* constraint_kind_name(ConstraintKind kind) noexcept {
     switch (kind) {
-    case ConstraintKind::breakline: return "breakline";
-    case ConstraintKind::soft_breakline: return "soft breakline";
-    case ConstraintKind::boundary: return "boundary";
-    case ConstraintKind::hole: return "hole";
+        case ConstraintKind::breakline:
+            return "breakline";
+        case ConstraintKind::soft_breakline:
+            return "soft breakline";
+        case ConstraintKind::boundary:
+            return "boundary";
+        case ConstraintKind::hole:
+            return "hole";
     }
     return "breakline";
 }
 
-HalfEdge twin(const Tin& tin, HalfEdge e)
-{
+HalfEdge twin(const Tin& tin, HalfEdge e) {
     const TriangleIndex across = tin.triangles[e.triangle].n[e.side];
     if (across == no_triangle) return {};
     const Triangle& other = tin.triangles[across];

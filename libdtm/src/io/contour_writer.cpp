@@ -3,6 +3,8 @@
 // Features are written inside transactions of 50 000 (GeoPackage is an SQLite file: one
 // transaction per feature would be very slow). DXF has no attribute table: the layer of each
 // entity (CONTOUR_INDEX or CONTOUR) carries the index flag and the z the elevation.
+#include "dtm/io/contour_writer.hpp"
+
 #include <cpl_error.h>
 #include <cpl_string.h>
 #include <gdal.h>
@@ -15,9 +17,8 @@
 #include <mutex>
 
 #include "dtm/core/error.hpp"
-#include "dtm/io/extension.hpp"
 #include "dtm/io/atomic_file.hpp"
-#include "dtm/io/contour_writer.hpp"
+#include "dtm/io/extension.hpp"
 
 namespace dtm::io {
 namespace fs = std::filesystem;

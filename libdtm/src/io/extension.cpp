@@ -6,8 +6,7 @@
 
 namespace dtm::io {
 
-std::string lower_extension(const std::filesystem::path& path)
-{
+std::string lower_extension(const std::filesystem::path& path) {
     std::string extension = path.extension().string();
     if (!extension.empty()) extension.erase(0, 1);
     std::transform(extension.begin(), extension.end(), extension.begin(),

@@ -7,6 +7,8 @@
 // rasteriser produces them. Drivers that can only CreateCopy (COG, Arc/Info ASCII, ...) get a
 // staging GeoTIFF next to the target, copied at commit() and then removed, so memory stays
 // bounded whatever the raster size.
+#include "dtm/io/grid_writer.hpp"
+
 #include <cpl_conv.h>
 #include <cpl_error.h>
 #include <cpl_string.h>
@@ -15,14 +17,14 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdlib>
 #include <mutex>
 #include <optional>
 #include <sstream>
 
 #include "dtm/core/error.hpp"
-#include "dtm/io/extension.hpp"
 #include "dtm/io/atomic_file.hpp"
-#include "dtm/io/grid_writer.hpp"
+#include "dtm/io/extension.hpp"
 
 namespace dtm::io {
 namespace fs = std::filesystem;
@@ -129,6 +131,34 @@ GDALDatasetH create_geotiff(const fs::path& path,
     return ds;
 }
 
+/// A GeoTIFF GDAL wrote, read back for its block index: GDAL does not report every failed
+/// write(2) when it closes a file (full disk, file-size limit), which would leave a block
+/// without bytes that reads as empty. @throws Error naming @p target
+void check_geotiff_blocks(const fs::path& written, const fs::path& target) {
+    GDALDatasetH ds = GDALOpen(written.c_str(), GA_ReadOnly);
+    if (ds == nullptr) {
+        throw_gdal("cannot write " + target.string() + " (it does not read back)");
+    }
+    GDALRasterBandH band = GDALGetRasterBand(ds, 1);
+    int bx = 0, by = 0;
+    GDALGetBlockSize(band, &bx, &by);
+    const int nx = (GDALGetRasterXSize(ds) + bx - 1) / std::max(bx, 1);
+    const int ny = (GDALGetRasterYSize(ds) + by - 1) / std::max(by, 1);
+    bool whole = true;
+    for (int y = 0; y < ny && whole; ++y) {
+        for (int x = 0; x < nx && whole; ++x) {
+            const std::string key = "BLOCK_SIZE_" + std::to_string(x) + "_" + std::to_string(y);
+            const char* size = GDALGetMetadataItem(band, key.c_str(), "TIFF");
+            whole = size != nullptr && std::atoll(size) > 0;
+        }
+    }
+    GDALClose(ds);
+    if (!whole) {
+        throw Error("grid: cannot write " + target.string() +
+                    ": the file is incomplete (a write failed: full disk or file-size limit?)");
+    }
+}
+
 }  // namespace
 
 struct GridWriter::State {
@@ -216,6 +246,9 @@ void GridWriter::commit() {
     if (CPLGetLastErrorType() >= CE_Failure) {
         throw_gdal("cannot write " + state_->out.target().string());
     }
+    if (state_->driver == "GTiff") {
+        check_geotiff_blocks(state_->out.temp_path(), state_->out.target());
+    }
     state_->out.commit();
 }
 
@@ -244,6 +277,7 @@ void write_dem_derivative(const fs::path& dem, const fs::path& target, DemDeriva
                        : kind == DemDerivative::slope   ? "slope"
                                                         : "aspect";
     int usage_error = FALSE;
+    CPLErrorReset();
     GDALDatasetH result =
         GDALDEMProcessing(out.temp_path().c_str(), src, mode, nullptr, options, &usage_error);
     GDALDEMProcessingOptionsFree(options);
@@ -251,7 +285,13 @@ void write_dem_derivative(const fs::path& dem, const fs::path& target, DemDeriva
     if (result == nullptr) {
         throw_gdal(std::string("cannot compute the ") + mode + " of " + dem.string());
     }
+    // GDAL reports a failed write (full disk, file-size limit) as an error and still returns
+    // the dataset: the error, not the pointer, says whether the file is whole.
     GDALClose(result);
+    if (CPLGetLastErrorType() >= CE_Failure) {
+        throw_gdal(std::string("cannot write the ") + mode + " " + target.string());
+    }
+    if (driver == "GTiff") check_geotiff_blocks(out.temp_path(), target);
     out.commit();
 }
 

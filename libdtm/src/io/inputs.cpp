@@ -2,9 +2,11 @@
 // Loading every input of a subcommand into one TerrainInput in one planar CRS:
 //   1. each file goes to its reader (the table in reader.cpp); the first TIN a reader returns
 //      (a dtm .ply) is the surface, used as it is;
-//   2. its CRS is the one the file carries, else CrsOptions::default_crs; S-JTSK positive (Y, X) become
+//   2. its CRS is the one the file carries, else CrsOptions::default_crs; S-JTSK positive (Y, X)
+//   become
 //      Krovak East-North; the summary is taken here, in the input's own CRS;
-//   3. the output CRS is CrsOptions::target_crs, else the first input's CRS; a geographic output CRS is
+//   3. the output CRS is CrsOptions::target_crs, else the first input's CRS; a geographic output
+//   CRS is
 //      replaced by the UTM zone of the data (GeographicLib); every input is transformed into it;
 // Line vertices without a height keep NaN z: triangulate() gives them one
 // (algo/line_heights.hpp), and `dtm info` shows the lines as they are.
@@ -12,6 +14,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 #include "dtm/algo/duplicates.hpp"
@@ -28,8 +33,7 @@ struct Loaded {
 };
 
 /// The WKT of a CRS option; a definition GDAL does not know is an OptionError naming @p field.
-std::string option_crs(const std::string& definition, const char* field)
-{
+std::string option_crs(const std::string& definition, const char* field) {
     try {
         return crs_to_wkt(definition);
     } catch (const UsageError& e) {
@@ -37,8 +41,7 @@ std::string option_crs(const std::string& definition, const char* field)
     }
 }
 
-void summarize(InputSummary& s, const TerrainInput& t)
-{
+void summarize(InputSummary& s, const TerrainInput& t) {
     s.points = t.points.size();
     s.breaklines = t.breaklines.size() + t.soft_breaklines.size();
     s.breakline_vertices = 0;
@@ -68,9 +71,33 @@ void summarize(InputSummary& s, const TerrainInput& t)
     s.duplicates = count_repeated_positions(t.points);
 }
 
-Loaded read_one(const InputFile& file, const LoadOptions& options, const Progress& progress,
-                std::optional<Tin>& tin)
-{
+/// The CRS a reader found, identified (io::identify_crs) from the file's .prj text when it has
+/// one (what ArcGIS wrote, before GDAL's own interpretation), else from the reader's WKT.
+void identify_file_crs(const InputFile& file, ReadResult& result) {
+    if (result.crs_wkt.empty()) return;
+    std::filesystem::path prj = file.path;
+    prj.replace_extension(".prj");
+    std::string source = result.crs_wkt;
+    std::error_code ec;
+    if (prj != file.path && std::filesystem::is_regular_file(prj, ec)) {
+        std::ifstream in(prj, std::ios::binary);
+        std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        if (!text.empty()) source = std::move(text);
+    }
+    CrsIdentity id;
+    try {
+        id = identify_crs(source);
+    } catch (const InputError&) {
+        id = identify_crs(result.crs_wkt);  // a .prj GDAL cannot read: the reader's CRS
+    }
+    result.crs_wkt = std::move(id.wkt);
+    result.summary.crs_note = std::move(id.note);
+}
+
+Loaded read_one(const InputFile& file,
+                const LoadOptions& options,
+                const Progress& progress,
+                std::optional<Tin>& tin) {
     Loaded loaded;
     loaded.result = find_reader(file.path).read(file, options.read, progress);
     if (loaded.result.tin) {
@@ -82,6 +109,7 @@ Loaded read_one(const InputFile& file, const LoadOptions& options, const Progres
         }
         loaded.result.tin.reset();
     }
+    identify_file_crs(file, loaded.result);
     loaded.crs_wkt = loaded.result.crs_wkt;
     if (loaded.crs_wkt.empty() && !options.crs.default_crs.empty()) {
         loaded.crs_wkt = option_crs(options.crs.default_crs, "default_crs");
@@ -107,16 +135,15 @@ struct Target {
     std::optional<UtmZone> utm;
 };
 
-Target choose_target(const LoadOptions& options, const std::vector<Loaded>& loaded)
-{
+Target choose_target(const LoadOptions& options, const std::vector<Loaded>& loaded) {
     Target target;
     if (!options.crs.target_crs.empty()) {
         target.wkt = option_crs(options.crs.target_crs, "target_crs");
         if (crs_is_geographic(target.wkt)) {
             throw OptionError("target_crs",
                               "`target_crs`: expected a projected CRS (metres), found the "
-                             "geographic " + crs_label(target.wkt) +
-                             "; triangulating degrees is wrong");
+                              "geographic " +
+                                  crs_label(target.wkt) + "; triangulating degrees is wrong");
         }
         return target;
     }
@@ -135,15 +162,13 @@ Target choose_target(const LoadOptions& options, const std::vector<Loaded>& load
     return target;
 }
 
-bool wgs84_like(const std::string& wkt)
-{
+bool wgs84_like(const std::string& wkt) {
     const std::string label = crs_label(wkt);
     return label == "EPSG:4326" || label == "EPSG:4258" || label == "EPSG:4979" ||
            label == "EPSG:4937" || label == "OGC:CRS84";
 }
 
-void to_target(Loaded& l, const Target& target)
-{
+void to_target(Loaded& l, const Target& target) {
     const std::string name = l.result.summary.path.string();
     if (l.crs_wkt.empty() || target.wkt.empty()) {
         if (!target.wkt.empty()) {
@@ -166,8 +191,7 @@ void to_target(Loaded& l, const Target& target)
 /// Moves @p from to the end of @p to; the first input's array is taken over, not copied (a
 /// copy of the points would be the peak of reading).
 template <class T>
-void append(std::vector<T>& to, std::vector<T>& from)
-{
+void append(std::vector<T>& to, std::vector<T>& from) {
     if (to.empty()) {
         std::swap(to, from);
         return;
@@ -175,8 +199,7 @@ void append(std::vector<T>& to, std::vector<T>& from)
     to.insert(to.end(), std::make_move_iterator(from.begin()), std::make_move_iterator(from.end()));
 }
 
-void merge(LoadedInputs& out, Loaded& l)
-{
+void merge(LoadedInputs& out, Loaded& l) {
     TerrainInput& t = l.result.terrain;
     const std::size_t before = out.terrain.points.size();
     const bool labelled = !l.result.labels.ids.empty() || !out.labels.ids.empty();
@@ -200,8 +223,7 @@ void merge(LoadedInputs& out, Loaded& l)
 
 }  // namespace
 
-LoadedInputs load_inputs(const LoadOptions& options, const Progress& progress)
-{
+LoadedInputs load_inputs(const LoadOptions& options, const Progress& progress) {
     if (options.files.empty()) throw UsageError("expected at least one input file");
     LoadedInputs out;
     std::vector<Loaded> loaded;
@@ -210,8 +232,8 @@ LoadedInputs load_inputs(const LoadOptions& options, const Progress& progress)
     for (std::size_t i = 0; i < options.files.size(); ++i) {
         const double at = static_cast<double>(i);
         const bool had_tin = out.tin.has_value();
-        loaded.push_back(read_one(options.files[i], options, progress.sub(at / n, (at + 1) / n),
-                                  out.tin));
+        loaded.push_back(
+            read_one(options.files[i], options, progress.sub(at / n, (at + 1) / n), out.tin));
         if (!had_tin && out.tin) tin_input = i;
     }
     const Target target = choose_target(options, loaded);

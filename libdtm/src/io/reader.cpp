@@ -6,6 +6,8 @@
 // column goes to OGR before the text reader sees it. A new format is one row (and its
 // formats/<name>.hpp/.cpp); a reader may return a TIN (ReadResult::tin) as well as points and
 // lines.
+#include "dtm/io/reader.hpp"
+
 #include <algorithm>
 #include <array>
 #include <fstream>
@@ -14,10 +16,13 @@
 #include "dtm/core/error.hpp"
 #include "dtm/io/extension.hpp"
 #include "dtm/io/formats/csv.hpp"
+#include "dtm/io/formats/dxf.hpp"
 #include "dtm/io/formats/hpgl.hpp"
+#include "dtm/io/formats/jvf.hpp"
+#include "dtm/io/formats/landxml.hpp"
 #include "dtm/io/formats/ogr.hpp"
 #include "dtm/io/formats/ply.hpp"
-#include "dtm/io/reader.hpp"
+#include "dtm/io/formats/raster_dem.hpp"
 
 namespace dtm::io {
 namespace {
@@ -27,25 +32,39 @@ bool text_has_geometry_column(const FileHead& head) { return csv_has_geometry_co
 constexpr std::array<std::string_view, 1> ply_ext{"ply"};
 constexpr std::array<std::string_view, 5> csv_ext{"csv", "txt", "xyz", "pts", "asc"};
 constexpr std::array<std::string_view, 5> hpgl_ext{"hpgl", "plt", "hgl", "hpg", "prn"};
-constexpr std::array<std::string_view, 14> ogr_ext{"shp",  "gpkg", "geojson", "json", "dxf",
-                                                   "kml",  "gml",  "sqlite",  "fgb",  "gpx",
-                                                   "tab",  "mif",  "vfk",     "gdb"};
-constexpr std::array<ReaderInfo, 5> reader_table{{
+constexpr std::array<std::string_view, 1> dxf_ext{"dxf"};
+constexpr std::array<std::string_view, 13> ogr_ext{"shp", "gpkg",   "geojson", "json", "kml",
+                                                   "gml", "sqlite", "fgb",     "gpx",  "tab",
+                                                   "mif", "vfk",    "gdb"};
+constexpr std::array<std::string_view, 1> xml_ext{"xml"};
+constexpr std::array<std::string_view, 1> grid_asc_ext{"asc"};
+constexpr std::array<std::string_view, 8> raster_ext{"tif", "tiff", "vrt", "img",
+                                                     "dem", "bil",  "hgt", "nc"};
+constexpr std::array<ReaderInfo, 10> reader_table{{
     {"ply", "dtm PLY TIN (the surface itself: vertices, triangles, constrained edges, CRS)",
      ply_ext, nullptr, &read_ply},
+    {"ascii-grid", "ESRI ASCII grid DEM (.asc starting with ncols ...): cells as points",
+     grid_asc_ext, &is_ascii_grid, &read_raster_dem},
     {"csv-wkt", "Delimited text with a WKT or geometry column, read by OGR", csv_ext,
      &text_has_geometry_column, &read_ogr_text},
     {"csv", "Delimited text points or shapeid,x,y[,z] polylines", csv_ext, nullptr, &read_csv},
+    {"jvf", "JVF DTM 1.4 (Czech technical map, root JVFDTM): points and terrain edges", xml_ext,
+     &is_jvf, &read_jvf},
+    {"landxml", "LandXML 1.0-1.2 surface (root LandXML): its TIN, or points and lines", xml_ext,
+     &is_landxml, &read_landxml},
     {"hpgl", "HP-GL/HP-GL2 plotter plans: spot heights, breaklines by pen", hpgl_ext, nullptr,
      &read_hpgl},
+    {"dxf", "DXF: 3DFACEs as a TIN, else points and lines through OGR", dxf_ext, nullptr,
+     &read_dxf},
+    {"raster", "Raster DEM read by GDAL (GeoTIFF, ...): cells as points, NoData skipped",
+     raster_ext, nullptr, &read_raster_dem},
     {"ogr", "Any OGR vector source: points, lines, polygons", ogr_ext, nullptr, &read_ogr},
 }};
 
 /// Bytes a sniff may look at.
 constexpr std::size_t head_size = std::size_t{64} << 10;
 
-bool takes_extension(const ReaderInfo& r, const std::string& ext)
-{
+bool takes_extension(const ReaderInfo& r, const std::string& ext) {
     return r.extensions.empty() ||
            std::find(r.extensions.begin(), r.extensions.end(), ext) != r.extensions.end();
 }
@@ -54,8 +73,7 @@ bool takes_extension(const ReaderInfo& r, const std::string& ext)
 
 std::span<const ReaderInfo> readers() { return reader_table; }
 
-const ReaderInfo& find_reader(const FileHead& head)
-{
+const ReaderInfo& find_reader(const FileHead& head) {
     for (const ReaderInfo& r : reader_table) {
         if (takes_extension(r, head.extension) && (r.sniff == nullptr || r.sniff(head))) return r;
     }
@@ -72,8 +90,7 @@ const ReaderInfo& find_reader(const FileHead& head)
                          head.path.extension().string() + "'");
 }
 
-const ReaderInfo& find_reader(const std::filesystem::path& file)
-{
+const ReaderInfo& find_reader(const std::filesystem::path& file) {
     FileHead head{file, lower_extension(file), {}};
     const bool sniffs = std::any_of(reader_table.begin(), reader_table.end(), [&](const auto& r) {
         return r.sniff != nullptr && takes_extension(r, head.extension);

@@ -3,6 +3,8 @@
 // makes every TIN output atomic (temporary sibling, then rename; see atomic_file.cpp). A format
 // is one row: its extension, a description for messages, and a function that writes exactly the
 // path it is given.
+#include "dtm/io/tin_file.hpp"
+
 #include <algorithm>
 #include <array>
 #include <string>
@@ -10,11 +12,12 @@
 #include "dtm/core/error.hpp"
 #include "dtm/io/atomic_file.hpp"
 #include "dtm/io/extension.hpp"
+#include "dtm/io/formats/dxf.hpp"
+#include "dtm/io/formats/landxml.hpp"
 #include "dtm/io/formats/mesh_2dm.hpp"
 #include "dtm/io/formats/ogr_tin.hpp"
 #include "dtm/io/formats/ply.hpp"
 #include "dtm/io/formats/vtk_surface.hpp"
-#include "dtm/io/tin_file.hpp"
 
 namespace dtm::io {
 namespace {
@@ -33,6 +36,10 @@ constexpr std::array tin_writer_table{
     TinWriterInfo{"2dm", "SMS 2DM mesh (a QGIS mesh layer through MDAL)", &write_2dm},
     TinWriterInfo{"vtp", "VTK XML PolyData: triangles, breaklines, elevation", &write_vtp},
     TinWriterInfo{"gpkg", "GeoPackage: one PolygonZ feature per triangle", &write_ogr_tin},
+    TinWriterInfo{"xml", "LandXML 1.2 surface: points, faces, breaklines, boundaries",
+                  &write_landxml},
+    TinWriterInfo{"dxf", "DXF R12 for CAD: 3DFACE triangles, breaklines as 3-D polylines",
+                  &write_tin_dxf},
     TinWriterInfo{"shp", "ESRI Shapefile: one PolygonZ feature per triangle", &write_ogr_tin},
 };
 

@@ -8,13 +8,22 @@
 #include "dc.hpp"
 #include "delaunay_distance.hpp"
 #include "dewall.hpp"
+#include "enumerate.hpp"
+#include "greedy.hpp"
+#include "greedy_gilbert.hpp"
+#include "greedy_naive.hpp"
 #include "incremental_kirkpatrick.hpp"
 #include "incremental_walk.hpp"
 #include "lawson_flip.hpp"
 #include "lifting.hpp"
+#include "monotone.hpp"
+#include "pseudo.hpp"
 #include "randomized_dag.hpp"
 #include "topological_dc.hpp"
 #include "uniform_grid.hpp"
+#include "voronoi_dc.hpp"
+#include "voronoi_incremental.hpp"
+#include "voronoi_topological.hpp"
 
 namespace dtm::methods {
 namespace {
@@ -25,6 +34,10 @@ const std::array kMethods{
     MethodInfo{"dc", Family::delaunay, "000 §3.7; Guibas-Stolfi 1985", "O(n log n) worst case",
                "the production kernel: divide and conquer in parallel tiles, exact merges",
                true, false, Output::triangulation, "", &run_dc},
+    MethodInfo{"enumerate", Family::enumeration, "000 §2.3 [HOSCH]",
+               "O(T n^2) for T triangulations (n <= 12)",
+               "every triangulation of up to 12 points and the optimum under each criterion", false,
+               true, Output::all_triangulations, "", &run_enumerate},
     MethodInfo{"lawson-flip", Family::delaunay, "000 §2.4.1, §2.3; 004 Alg. 2; 003",
                "O(n^2) flips (004), plus the initial triangulation",
                "Lawson's local improvement: a sweep triangulation, then flips of illegal edges",
@@ -38,6 +51,35 @@ const std::array kMethods{
                "O(n log n) expected (randomized 3-D hull)",
                "lower convex hull of the points lifted to the paraboloid (exact orient3d)",
                false, false, Output::triangulation, "", &run_lifting},
+    MethodInfo{"greedy-naive", Family::greedy, "000 §3.1a; 004 Alg. 1; Preparata-Shamos 1985",
+               "O(n^3)",
+               "greedy triangulation: all pairs by length, each tested against every edge", true,
+               true, Output::triangulation, "", &run_greedy_naive},
+    MethodInfo{"greedy-gilbert", Family::greedy, "000 §3.1b, §3.1.1; Gilbert 1979",
+               "O(n^2 log n) time, O(n^2) memory",
+               "greedy triangulation with one segment tree per point (at most 5000 points)", true,
+               true, Output::triangulation, "", &run_greedy_gilbert},
+    MethodInfo{"greedy", Family::greedy, "000 §3.1; Dickerson et al. 1997",
+               "O(n log n) observed on uniform points",
+               "greedy triangulation by length phases among still-open points (same edges)", true,
+               false, Output::triangulation, "", &run_greedy},
+    MethodInfo{"monotone", Family::constrained, "000 §3.2; Preparata-Shamos 1985", "O(n log n)",
+               "constrained triangulation: regularisation by two plane sweeps, y-monotone "
+               "polygons by the stack method",
+               true, false, Output::triangulation, "domain=hull|rectangle", &run_monotone},
+    MethodInfo{"voronoi-dc", Family::voronoi, "000 §3.4; Shamos-Hoey 1975", "O(n log n)",
+               "Voronoi diagram by divide and conquer: the dividing chain sigma on a DCEL", false,
+               false, Output::voronoi, "", &run_voronoi_dc},
+    MethodInfo{"voronoi-incremental", Family::voronoi, "000 §3.5; Green-Sibson 1978",
+               "O(n) average, O(n^2) worst",
+               "incremental Voronoi diagram with three auxiliary generators, trusting each sign",
+               false, false, Output::voronoi, "faults=P (test: corrupt in-circle signs)",
+               &run_voronoi_incremental},
+    MethodInfo{"voronoi-topological", Family::voronoi, "000 §3.6; Sugihara-Iri 1992",
+               "O(n) average, O(n^2) worst",
+               "topology-oriented incremental Voronoi diagram: valid topology under any signs",
+               false, false, Output::voronoi, "faults=P (test: corrupt in-circle signs)",
+               &run_voronoi_topological},
     MethodInfo{"topological-dc", Family::delaunay, "000 §3.7; Oishi and Sugihara 1993 [OIS93]",
                "O(N log N) average and worst case (000)",
                "topology-oriented divide and conquer: Guibas-Stolfi merge under conditions 1-6",
@@ -64,6 +106,14 @@ const std::array kMethods{
                "randomized incremental insertion, point location in the history DAG",
                false, false, Output::triangulation,
                "super-triangle=symbolic|finite order=random|brio", &run_randomized_dag},
+    MethodInfo{"pseudo", Family::pseudo, "001 (Hobza 2010, Trcka 2007)",
+               "O(n log n) observed (001 §4.1)",
+               "pseudo-triangulation by incremental insertion with the generalized flip", false,
+               false, Output::polygon_faces,
+               "swap=none|post|incremental flip=brute|fast criterion=random|min-length|"
+               "max-length|maxmin-angle|minmax-angle|maxmin-sum-angle|minmax-sum-angle|"
+               "maxmin-angle-hull|minmax-angle-hull",
+               &run_pseudo},
 };
 // clang-format on
 

@@ -1,12 +1,15 @@
 // SPDX-License-Identifier: MIT
 // The main job: read -> surface -> product steps -> report -> commit.
 //
-//   io::load_inputs ─> LoadedInputs ─> products::surface ─> Tin ─┬─ write_tin ─> tin.ply tin.2dm surface.vtp
-//   (every reader)      (one CRS)      (as is, or triangulate)   ├─ dem ───────> dem.tif hillshade.tif
-//                                                               ├─ contours ──> contours.gpkg
-//                                                               ├─ volume ────> volume/ (with a base)
-//                                                               ├─ project ───> dtm.qgs
-//                                                               └─ report ────> report.json
+//   io::load_inputs ─> LoadedInputs ─> products::surface ─> Tin
+//   (every reader)      (one CRS)      (as is, or triangulate)
+//     ─┬─ write_tin ─> tin.ply tin.2dm surface.vtp
+//      ├─ dem ───────> dem.tif hillshade.tif
+//      ├─ contours ──> contours.gpkg
+//      ├─ map ───────> map.pdf
+//      ├─ volume ────> volume/ (with a base)
+//      ├─ project ───> dtm.qgs
+//      └─ report ────> report.json
 //
 // Every file goes into one io::AtomicDirectory, committed only after the report: a failed or
 // cancelled run leaves the output folder as it was. The steps run in the order of the table
@@ -22,6 +25,7 @@
 #include "dtm/algo/surface_stats.hpp"
 #include "dtm/core/error.hpp"
 #include "dtm/io/atomic_file.hpp"
+#include "dtm/io/output_check.hpp"
 #include "dtm/products/surface.hpp"
 
 namespace dtm::products {
@@ -35,21 +39,23 @@ constexpr detail::BuildStep steps[] = {
     {"write_tin", 0.60, nullptr, &detail::write_tin_files},
     {"dem", 0.80, nullptr, &detail::write_dem},
     {"contours", 0.90, nullptr, &detail::write_contours},
-    {"volume", 0.95, &detail::wants_volume, &detail::write_volume},
-    {"project", 0.95, nullptr, &detail::write_project},
+    {"map", 0.95, nullptr, &detail::write_map_sheet},
+    {"volume", 0.97, &detail::wants_volume, &detail::write_volume},
+    {"project", 0.97, nullptr, &detail::write_project},
 };
 
 /// Progress of reading and triangulating (the steps follow).
 constexpr double read_end = 0.10;
+constexpr double triangulate_end = 0.40;
 constexpr double surface_end = 0.45;
 
 /// Times the stages of the run for the report.
 class Stopwatch {
 public:
-    void lap(std::string_view stage)
-    {
+    void lap(std::string_view stage) {
         const auto now = std::chrono::steady_clock::now();
-        timings_.push_back({std::string(stage), std::chrono::duration<double>(now - last_).count()});
+        timings_.push_back(
+            {std::string(stage), std::chrono::duration<double>(now - last_).count()});
         last_ = now;
     }
     [[nodiscard]] std::vector<StageTime> take() { return std::move(timings_); }
@@ -59,36 +65,47 @@ private:
     std::vector<StageTime> timings_;
 };
 
-fs::path folder(fs::path out_dir)
-{
+fs::path folder(fs::path out_dir) {
     return out_dir.filename().empty() ? out_dir.parent_path() : out_dir;  // "out/" -> "out"
 }
 
 }  // namespace
 
-BuildReport build(const io::LoadOptions& inputs, const fs::path& out_dir,
-                  const BuildOptions& options, const Progress& progress)
-{
+BuildReport build(const io::LoadOptions& inputs,
+                  const fs::path& out_dir,
+                  const BuildOptions& options,
+                  const Progress& progress) {
     const fs::path target = folder(out_dir);
-    std::error_code ec;
-    if (fs::exists(target, ec) && !fs::is_directory(target, ec)) {
-        throw OptionError("out_dir",
-                          "build: `out_dir` " + target.string() + " is a file, not a folder");
-    }
+    io::check_output(target, io::OutputKind::folder, "out_dir");  // before any input is read
     Stopwatch clock;
     io::AtomicDirectory out(target);
     io::LoadedInputs loaded = io::load_inputs(inputs, progress.sub(0.0, read_end));
     clock.lap("read");
-    Surface s = surface(loaded, options.triangulate, progress.sub(read_end, surface_end));
+    SurfaceOptions surface_options;
+    surface_options.triangulate = options.triangulate;
+    surface_options.contour_flats = options.contour_flats;
+    surface_options.lines_are_contours = !inputs.read.z_field.empty();
+    surface_options.flat_areas = options.flat_areas;
+    Surface s = surface(loaded, surface_options, progress.sub(read_end, triangulate_end));
     const SurfaceStats stats = surface_stats(s.result.tin);
     if (stats.triangle_count == 0) {
-        throw InputError("build: the triangulation has no triangle (is everything outside the "
-                         "boundary?)");
+        throw InputError(
+            "build: the triangulation has no triangle (is everything outside the "
+            "boundary?)");
     }
+    GradientOptions gradients;
+    gradients.threads = options.triangulate.threads;
+    gradients.crease_at_breaklines = !s.contour_input;
+    const TinInterpolant interpolant = TinInterpolant::prepare(
+        s.result.tin, options.interpolation, gradients, progress.sub(triangulate_end, surface_end));
     clock.lap("triangulate");
 
     BuildReport report;
-    detail::BuildContext context{options, s.result.tin, loaded.crs_wkt, stats, out, report};
+    report.contour_flats = std::move(s.contour_flats);
+    report.interpolation = interpolation_name(options.interpolation);
+    detail::BuildContext context{options, s.result.tin, interpolant, loaded.crs_wkt,
+                                 stats,   out,          report,      &loaded.summaries,
+                                 {}};
     double at = surface_end;
     for (const detail::BuildStep& step : steps) {
         if (step.wanted != nullptr && !step.wanted(options)) continue;

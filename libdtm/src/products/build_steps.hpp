@@ -5,13 +5,17 @@
 /// on) is in build.cpp.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
+#include "dtm/algo/interpolation.hpp"
 #include "dtm/algo/surface_stats.hpp"
 #include "dtm/core/progress.hpp"
 #include "dtm/core/tin.hpp"
 #include "dtm/io/atomic_file.hpp"
+#include "dtm/io/formats/qgis_project.hpp"
 #include "dtm/products/build.hpp"
 
 namespace dtm::products::detail {
@@ -20,21 +24,23 @@ namespace dtm::products::detail {
 struct BuildContext {
     const BuildOptions& options;
     const Tin& tin;
-    const std::string& crs_wkt;  ///< CRS of the TIN; empty if unknown
+    const TinInterpolant& interpolant;  ///< options.interpolation on tin, for the DEM and contours
+    const std::string& crs_wkt;         ///< CRS of the TIN; empty if unknown
     const SurfaceStats& surface;
     io::AtomicDirectory& out;
     BuildReport& report;
+    const std::vector<io::InputSummary>* inputs = nullptr;  ///< what was read (names of sources)
+    std::optional<io::QgisLayout> map_layout;  ///< map.pdf's sheet, for the QGIS print layout
 
     /// @p text as options.wording words it.
-    [[nodiscard]] std::string worded(std::string_view text) const
-    {
+    [[nodiscard]] std::string worded(std::string_view text) const {
         return options.wording ? options.wording(text) : std::string(text);
     }
 };
 
 struct BuildStep {
-    std::string_view stage;  ///< its name in the report's timings
-    double progress_end;     ///< the overall fraction done when it has finished
+    std::string_view stage;               ///< its name in the report's timings
+    double progress_end;                  ///< the overall fraction done when it has finished
     bool (*wanted)(const BuildOptions&);  ///< nullptr: always run
     void (*run)(BuildContext& context, const Progress& progress);
 };
@@ -45,6 +51,8 @@ void write_tin_files(BuildContext& context, const Progress& progress);
 void write_dem(BuildContext& context, const Progress& progress);
 /// contours.gpkg; report.contour_* (contour_step.cpp).
 void write_contours(BuildContext& context, const Progress& progress);
+/// map.pdf, the contour map sheet; report.map_*, map_layout (map_step.cpp).
+void write_map_sheet(BuildContext& context, const Progress& progress);
 /// With BuildOptions::base: volume/ (volume.json, volume.txt, difference.ply, difference.tif,
 /// cut_fill.gpkg, zero_lines.dxf); report.volume (volume_step.cpp).
 bool wants_volume(const BuildOptions& options);

@@ -9,6 +9,7 @@
 #include "dtm/core/error.hpp"
 #include "dtm/io/atomic_file.hpp"
 #include "dtm/io/json_writer.hpp"
+#include "dtm/io/output_check.hpp"
 
 namespace dtm::products {
 namespace fs = std::filesystem;
@@ -28,12 +29,10 @@ void write_atomic(const fs::path& path, const std::string& text) {
 
 }  // namespace
 
-std::unique_ptr<SurfaceHeight> make_surface_height(const std::string& name, const Tin& tin) {
-    if (name == "linear") {
-        return std::make_unique<LinearSurface>(tin);
-    }
-    throw OptionError("interpolation",
-                      "`interpolation` " + name + ": not available (known: linear)");
+std::unique_ptr<SurfaceHeight> make_surface_height(const Tin& tin,
+                                                   const TinInterpolant& interpolant) {
+    if (interpolant.method() == Interpolation::linear) return std::make_unique<LinearSurface>(tin);
+    return std::make_unique<InterpolatedSurface>(tin, interpolant);
 }
 
 std::string check_json(const CheckReport& r) {
@@ -70,12 +69,15 @@ std::string check_json(const CheckReport& r) {
 }
 
 CheckReport run_check(const CheckJob& job, const fs::path& csv, const Progress& progress) {
+    io::check_output(csv, io::OutputKind::any_file, "output");  // before any input is read
+    if (!job.stats.empty()) io::check_output(job.stats, io::OutputKind::any_file, "stats");
     const LoadedSurface surface = load_surface(job.surface, {}, progress.sub(0.0, 0.6));
     const ControlPoints points = load_points(job.points, job.point_reader, surface.crs_wkt);
-    const std::unique_ptr<SurfaceHeight> height =
-        make_surface_height(job.interpolation, surface.tin);
+    const TinInterpolant interpolant =
+        TinInterpolant::prepare(surface.tin, job.interpolation, {}, progress.sub(0.6, 0.7));
+    const std::unique_ptr<SurfaceHeight> height = make_surface_height(surface.tin, interpolant);
     const std::vector<CheckResult> results =
-        check_points(*height, points.points, progress.sub(0.6, 0.9));
+        check_points(*height, points.points, progress.sub(0.7, 0.9));
     CheckReport report;
     report.stats = check_statistics(results);
     std::string text = "id,x,y,z,surface_z,residual,status\n";

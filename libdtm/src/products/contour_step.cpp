@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Build step "contours": contour lines traced exactly on the TIN into a GeoPackage.
+// Build step "contours": contour lines traced exactly on the TIN (or on its cubic or
+// natural-neighbour surface, BuildOptions::interpolation) into a GeoPackage.
 #include "build_steps.hpp"
 #include "dtm/algo/contour.hpp"
 #include "dtm/io/contour_writer.hpp"
@@ -7,12 +8,12 @@
 
 namespace dtm::products::detail {
 
-void write_contours(BuildContext& context, const Progress& progress)
-{
+void write_contours(BuildContext& context, const Progress& progress) {
     const bool given = context.options.interval > 0.0;
     ContourOptions options;
     options.interval = given ? context.options.interval : default_interval(context.surface);
     options.index_every = context.options.index_every;
+    options.threads = context.options.triangulate.threads;
     BuildReport& report = context.report;
     report.contour_interval = options.interval;
     report.index_every = options.index_every;
@@ -22,7 +23,7 @@ void write_contours(BuildContext& context, const Progress& progress)
     io::ContourWriteOptions write_options;
     write_options.crs_wkt = context.crs_wkt;
     io::ContourWriter writer(context.out.add("contours.gpkg"), write_options);
-    contour(context.tin, options, writer, progress);
+    contour(context.tin, context.interpolant, options, writer, progress);
     writer.commit();
     report.contour_lines = writer.feature_count();
 }

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Build step "dem": the TIN sampled at cell centres into a GeoTIFF DEM, and GDAL's hillshade of it.
+// Build step "dem": the TIN's surface (BuildOptions::interpolation) sampled at cell centres
+// into a GeoTIFF DEM, and GDAL's hillshade of it.
 #include "build_steps.hpp"
 #include "dtm/algo/rasterize.hpp"
 #include "dtm/io/grid_writer.hpp"
@@ -7,8 +8,7 @@
 
 namespace dtm::products::detail {
 
-void write_dem(BuildContext& context, const Progress& progress)
-{
+void write_dem(BuildContext& context, const Progress& progress) {
     const bool given = context.options.cell > 0.0;
     const double cell = given ? context.options.cell : default_cell(context.surface);
     context.report.cell_rule = given ? context.worded("given (`cell`)") : default_cell_rule;
@@ -17,7 +17,9 @@ void write_dem(BuildContext& context, const Progress& progress)
     options.crs_wkt = context.crs_wkt;
     const std::filesystem::path dem = context.out.add("dem.tif");
     io::GridWriter writer(dem, spec, options);
-    rasterize(context.tin, spec, RasterizeOptions{}, writer, progress.sub(0.0, 0.8));
+    RasterizeOptions raster;
+    raster.threads = context.options.triangulate.threads;
+    rasterize(context.tin, context.interpolant, spec, raster, writer, progress.sub(0.0, 0.8));
     writer.commit();
     progress.report(0.8, "hillshade");
     io::write_dem_derivative(dem, context.out.add("hillshade.tif"), io::DemDerivative::hillshade);

@@ -3,6 +3,7 @@
 // the products: CSV, GeoPackage, DXF and plots.
 #include "dtm/products/profile.hpp"
 
+#include <cctype>
 #include <cstdio>
 #include <fstream>
 
@@ -10,8 +11,9 @@
 #include "dtm/io/atomic_file.hpp"
 #include "dtm/io/draw/canvas.hpp"
 #include "dtm/io/formats/crs.hpp"
-#include "dtm/io/formats/dxf_writer.hpp"
+#include "dtm/io/formats/dxf.hpp"
 #include "dtm/io/formats/vector_file.hpp"
+#include "dtm/io/output_check.hpp"
 #include "dtm/products/profile_plot.hpp"
 #include "products/detail/staged_folder.hpp"
 
@@ -19,8 +21,8 @@ namespace dtm::products {
 namespace fs = std::filesystem;
 
 std::vector<LoadedSurface> load_surfaces(const std::vector<SurfaceSource>& sources,
-                                   std::vector<std::string>& notes,
-                                   const Progress& progress) {
+                                         std::vector<std::string>& notes,
+                                         const Progress& progress) {
     std::vector<LoadedSurface> out;
     const double n = static_cast<double>(sources.size());
     for (std::size_t i = 0; i < sources.size(); ++i) {
@@ -36,6 +38,15 @@ std::vector<LoadedSurface> load_surfaces(const std::vector<SurfaceSource>& sourc
 }
 
 namespace {
+
+/// @p name as an R12 layer name: characters other than letters, digits, '_', '-', '$' become '_'.
+std::string dxf_layer_name(std::string name) {
+    for (char& c : name) {
+        const auto u = static_cast<unsigned char>(c);
+        if (!(std::isalnum(u) || c == '_' || c == '-' || c == '$')) c = '_';
+    }
+    return name;
+}
 
 void write_csv(const fs::path& path,
                const std::vector<Polyline>& lines,
@@ -85,10 +96,11 @@ void write_vectors(const fs::path& folder,
                                               {"run", T::integer},
                                               {"chainage_from", T::real},
                                               {"chainage_to", T::real}});
-    io::DxfWriter dxf(folder / "profile.dxf");
+    std::vector<io::DxfLayer> layers;
     for (std::size_t s = 0; s < names.size(); ++s) {
-        dxf.add_layer({"PROFILE_" + names[s], static_cast<int>(1 + s % 6)});
+        layers.push_back({dxf_layer_name("PROFILE_" + names[s]), static_cast<int>(1 + s % 6)});
     }
+    io::DxfWriter dxf(folder / "profile.dxf", layers);
     for (std::size_t s = 0; s < names.size(); ++s) {
         for (std::size_t l = 0; l < sections[s].size(); ++l) {
             const Profile& p = sections[s][l];
@@ -98,12 +110,12 @@ void write_vectors(const fs::path& folder,
                     layer, pts,
                     {static_cast<long long>(l + 1), names[s], static_cast<long long>(r + 1),
                      p.runs[r].points.front().chainage, p.runs[r].points.back().chainage});
-                dxf.polyline_3d("PROFILE_" + names[s], pts);
+                dxf.polyline(layers[s].name, pts, false);
             }
         }
     }
     gpkg.commit();
-    dxf.commit();
+    dxf.finish();
 }
 
 std::vector<std::string> write_plots(const fs::path& folder,
@@ -160,6 +172,7 @@ ProfileReport run_profile(const ProfileJob& job,
         job.plot_format != "png") {
         throw OptionError("plot_format", "profile: `plot_format` must be pdf, svg, png or none");
     }
+    io::check_output(out_dir, io::OutputKind::folder, "out_dir");  // before any input is read
     io::AtomicDirectory staging(out_dir);
     ProfileReport report;
     const std::vector<LoadedSurface> surfaces =

@@ -7,8 +7,7 @@
 
 namespace dtm::products::detail {
 
-void write_project(BuildContext& context, const Progress&)
-{
+void write_project(BuildContext& context, const Progress&) {
     const io::AtomicDirectory& out = context.out;
     const auto layer = [&out](const char* name) {
         return out.contains(name) ? std::filesystem::path(name) : std::filesystem::path();
@@ -29,6 +28,7 @@ void write_project(BuildContext& context, const Progress&)
         context.report.contour_interval *
         static_cast<double>(std::max<std::size_t>(context.report.index_every, 1));
     project.mesh = layer("tin.2dm");
+    project.layout = context.map_layout;
     project.cut_fill = layer("volume/cut_fill.gpkg");
     io::write_qgis_project(project, context.out.add("dtm.qgs"));
 }

@@ -25,6 +25,7 @@ void write_inputs(io::JsonWriter& json, const BuildReport& report) {
         json.value("path", in.path.generic_string());
         json.value("format", in.format);
         json.value("crs", in.crs);
+        if (!in.crs_note.empty()) json.value("crs_note", in.crs_note);
         json.value("points", in.points);
         json.value("breaklines", in.breaklines);
         json.value("breakline_vertices", in.breakline_vertices);
@@ -94,6 +95,30 @@ void write_tin(io::JsonWriter& json, const BuildReport& report) {
     json.value("breakline_intersections", report.triangulation.intersections);
     json.value("removed_triangles", report.triangulation.removed_triangles);
     json.end();
+    if (report.contour_flats) {
+        const ContourFlatsReport& f = *report.contour_flats;
+        json.begin_object("contour_flats");
+        json.value("triangles_before", f.triangles_before);
+        json.value("flat_before", f.flat_before);
+        json.value("triangles_after", f.triangles_after);
+        json.value("flat_after", f.flat_after);
+        json.value("regions", f.regions);
+        json.value("real_flats", f.true_flats);
+        json.value("unresolved", f.unresolved);
+        json.value("points_added", f.points_added);
+        json.begin_array("estimated_peaks");
+        for (const EstimatedPeak& p : f.peaks) {
+            json.begin_object({}, io::JsonWriter::Layout::inline_);
+            json.value("kind", p.summit ? "summit" : "pit");
+            json.value("x", p.at.x);
+            json.value("y", p.at.y);
+            json.value("z", p.at.z);
+            json.value("contour", p.contour);
+            json.end();
+        }
+        json.end();
+        json.end();
+    }
     json.begin_object("conflicts");
     json.value("count", report.conflicts.size());
     json.begin_array("items");
@@ -132,6 +157,7 @@ void write_surface(io::JsonWriter& json, const BuildReport& report) {
 
 void write_products(io::JsonWriter& json, const BuildReport& report) {
     json.begin_object("dem");
+    json.value("interpolation", report.interpolation);
     json.value("cell", report.dem.cell);
     json.value("cell_rule", report.cell_rule);
     json.value("cols", report.dem.cols);
@@ -146,6 +172,14 @@ void write_products(io::JsonWriter& json, const BuildReport& report) {
     json.value("levels", report.contour_levels);
     json.value("lines", report.contour_lines);
     json.end();
+    if (report.map_scale > 0.0) {
+        json.begin_object("map");
+        json.value("scale", report.map_scale);
+        json.value("labels_placed", report.map_labels);
+        json.value("label_positions_without_room", report.map_label_failures);
+        json.value("spot_heights", report.map_spot_heights);
+        json.end();
+    }
     if (report.has_volume) {
         const VolumeResult& v = report.volume;
         json.begin_object("volume");  // the figures of volume/volume.json

@@ -7,8 +7,7 @@
 
 namespace dtm::products {
 
-double nice_floor(double value)
-{
+double nice_floor(double value) {
     const double power = std::pow(10.0, std::floor(std::log10(value)));
     const double mantissa = value / power;
     for (const double step : {5.0, 2.5, 2.0}) {
@@ -17,8 +16,7 @@ double nice_floor(double value)
     return power;
 }
 
-double nice_next(double value)
-{
+double nice_next(double value) {
     const double power = std::pow(10.0, std::floor(std::log10(value)));
     for (const double step : {2.0, 2.5, 5.0, 10.0}) {
         if (step * power > value * (1.0 + 1e-12)) return step * power;
@@ -26,8 +24,7 @@ double nice_next(double value)
     return 10.0 * power;
 }
 
-double default_cell(const SurfaceStats& surface)
-{
+double default_cell(const SurfaceStats& surface) {
     const double spacing =
         std::sqrt(surface.planimetric_area /
                   static_cast<double>(std::max<std::size_t>(surface.vertex_count, 1)));
@@ -38,8 +35,7 @@ double default_cell(const SurfaceStats& surface)
     return cell;
 }
 
-double default_interval(const SurfaceStats& surface)
-{
+double default_interval(const SurfaceStats& surface) {
     const double range = surface.z_max - surface.z_min;
     return range > 0.0 ? nice_floor(range / 20.0) : 1.0;
 }

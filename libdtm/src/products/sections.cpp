@@ -12,9 +12,10 @@
 #include "dtm/core/error.hpp"
 #include "dtm/io/draw/canvas.hpp"
 #include "dtm/io/formats/vector_file.hpp"
+#include "dtm/io/json_writer.hpp"
+#include "dtm/io/output_check.hpp"
 #include "dtm/products/profile.hpp"
 #include "dtm/products/profile_plot.hpp"
-#include "dtm/io/json_writer.hpp"
 #include "products/detail/staged_folder.hpp"
 
 namespace dtm::products {
@@ -157,6 +158,7 @@ SectionsReport run_sections(const SectionsJob& job,
     if (job.surfaces.empty()) {
         throw UsageError("sections: give at least one surface");
     }
+    io::check_output(out_dir, io::OutputKind::folder, "out_dir");  // before any input is read
     io::AtomicDirectory staging(out_dir);
     SectionsReport r;
     const std::vector<LoadedSurface> surfaces =

@@ -7,8 +7,7 @@
 
 namespace dtm::products::detail {
 
-void write_tin_files(BuildContext& context, const Progress& progress)
-{
+void write_tin_files(BuildContext& context, const Progress& progress) {
     io::TinWriteOptions options;
     options.crs_wkt = context.crs_wkt;
     const std::array<const char*, 3> names{"tin.ply", "tin.2dm", "surface.vtp"};

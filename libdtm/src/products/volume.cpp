@@ -13,6 +13,7 @@
 #include <chrono>
 #include <cmath>
 #include <fstream>
+#include <span>
 
 #include "dtm/algo/cut_fill.hpp"
 #include "dtm/algo/difference_surface.hpp"
@@ -20,36 +21,26 @@
 #include "dtm/algo/volume_surfaces.hpp"
 #include "dtm/core/error.hpp"
 #include "dtm/io/formats/crs.hpp"
-#include "dtm/io/formats/dxf_writer.hpp"
+#include "dtm/io/formats/dxf.hpp"
 #include "dtm/io/formats/vector_file.hpp"
 #include "dtm/io/grid_writer.hpp"
+#include "dtm/io/output_check.hpp"
 #include "dtm/io/tin_file.hpp"
+#include "dtm/products/rules.hpp"
 #include "products/detail/staged_folder.hpp"
 
 namespace dtm::products {
 namespace fs = std::filesystem;
 namespace {
 
-/// Largest of 1, 2, 2.5, 5 x 10^k not above @p value.
-double nice_floor(double value) {
-    const double power = std::pow(10.0, std::floor(std::log10(value)));
-    const double mantissa = value / power;
-    for (const double step : {5.0, 2.5, 2.0}) {
-        if (mantissa >= step) {
-            return step * power;
-        }
-    }
-    return power;
-}
-
-double default_cell(const Tin& tin, double area) {
+/// The difference GeoTIFF's cell: the mean vertex spacing over @p area, rounded down by nice_floor,
+/// enlarged while the grid would pass 25 million cells.
+double difference_cell(const Tin& tin, double area) {
     const double spacing =
         std::sqrt(area / static_cast<double>(std::max<std::size_t>(tin.vertices.size(), 1)));
     double cell = nice_floor(std::max(spacing, 1e-3));
     const Box2 b = tin_bounds(tin);
-    while ((b.xmax - b.xmin) / cell * (b.ymax - b.ymin) / cell > 25e6) {
-        cell *= 2.0;
-    }
+    while ((b.xmax - b.xmin) / cell * (b.ymax - b.ymin) / cell > 25e6) cell = nice_next(cell);
     return cell;
 }
 
@@ -78,20 +69,20 @@ void write_map(const CutFillMap& map,
                          {std::string(r.fill ? "fill" : "cut"), r.area, r.volume, r.max_depth});
         (r.fill ? report.fill_regions : report.cut_regions) += 1;
     }
-    io::DxfWriter dxf(folder / "zero_lines.dxf");
-    dxf.add_layer({"ZERO_LINE", 1});
+    const io::DxfLayer zero_layer{"ZERO_LINE", 1};
+    io::DxfWriter dxf(folder / "zero_lines.dxf", std::span(&zero_layer, 1));
     for (const ZeroLine& z : map.zero_lines) {
         const double length = line_length(z);
         gpkg.add_line(lines, z.points, {length, static_cast<long long>(z.closed ? 1 : 0)});
-        dxf.polyline_3d("ZERO_LINE",
-                        z.closed ? std::span(z.points).first(z.points.size() - 1)
-                                 : std::span<const Point3>(z.points),
-                        z.closed);
+        dxf.polyline(zero_layer.name,
+                     z.closed ? std::span(z.points).first(z.points.size() - 1)
+                              : std::span<const Point3>(z.points),
+                     z.closed);
         report.zero_line_length += length;
     }
     report.zero_lines = map.zero_lines.size();
     gpkg.commit();
-    dxf.commit();
+    dxf.finish();
     report.files.insert(report.files.end(), {"cut_fill.gpkg", "zero_lines.dxf"});
 }
 
@@ -129,7 +120,7 @@ void write_volume_products(const Tin& top,
         io::write_tin(diff.tin, folder / "difference.ply", {.crs_wkt = report.crs_wkt});
         report.files.emplace_back("difference.ply");
         report.cell =
-            job.cell > 0.0 ? job.cell : default_cell(diff.tin, report.volume.overlap_area);
+            job.cell > 0.0 ? job.cell : difference_cell(diff.tin, report.volume.overlap_area);
         const GridSpec spec = snapped_grid_spec(tin_bounds(diff.tin), report.cell);
         io::GridWriter grid(folder / "difference.tif", spec, {.crs_wkt = report.crs_wkt});
         rasterize(diff.tin, spec, {.threads = job.threads}, grid, progress.sub(0.6, 0.8));
@@ -149,6 +140,7 @@ VolumeReport run_volume(const VolumeJob& job, const fs::path& out_dir, const Pro
     if (!(job.swell > 0.0)) {
         throw UsageError("volume: the swell factor must be positive");
     }
+    io::check_output(out_dir, io::OutputKind::folder, "out_dir");  // before any input is read
     io::AtomicDirectory staging(out_dir);
     VolumeReport report;
     LoadedSurface top = load_surface(job.top, {}, progress.sub(0.0, 0.15));
@@ -195,7 +187,8 @@ VolumeReport run_volume(const VolumeJob& job, const fs::path& out_dir, const Pro
                       std::string(job.within.empty() ? "" : " (clipped to the polygon)");
     }
     const Tin* base_tin = job.base_kind == VolumeBaseKind::plane ? nullptr : &base.tin;
-    write_volume_products(top.tin, base_tin, job, staging.staging(), report, progress.sub(0.5, 0.99));
+    write_volume_products(top.tin, base_tin, job, staging.staging(), report,
+                          progress.sub(0.5, 0.99));
     report.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     detail::commit_files(staging, report.files);

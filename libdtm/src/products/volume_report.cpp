@@ -7,8 +7,8 @@
 #include <string>
 
 #include "dtm/io/formats/crs.hpp"
-#include "dtm/products/volume.hpp"
 #include "dtm/io/json_writer.hpp"
+#include "dtm/products/volume.hpp"
 
 namespace dtm::products {
 
@@ -25,7 +25,7 @@ std::string volume_json(const VolumeReport& r) {
     json.end();
     json.begin_object("base");
     json.value("source", r.base);
-    json.boolean("plane", v.base_is_plane);
+    json.value("plane", v.base_is_plane);
     json.value("triangles", r.base_triangles);
     json.end();
     if (!r.within.empty()) {
@@ -112,7 +112,8 @@ std::string volume_protocol(const VolumeReport& r) {
     if (!r.within.empty()) {
         add("Within:                   %s\n", r.within.c_str());
     }
-    add("Coordinate system:        %s\n", r.crs_wkt.empty() ? "none given" : io::crs_label(r.crs_wkt).c_str());
+    add("Coordinate system:        %s\n",
+        r.crs_wkt.empty() ? "none given" : io::crs_label(r.crs_wkt).c_str());
     add("Method: exact TIN volume - both surfaces overlaid, the height difference integrated\n"
         "in closed form over each of %zu pieces (no grid, no sampling).\n\n",
         v.pieces);

@@ -14,8 +14,7 @@ namespace dtm::products::detail {
 
 bool wants_volume(const BuildOptions& options) { return !options.base.files.empty(); }
 
-void write_volume(BuildContext& context, const Progress& progress)
-{
+void write_volume(BuildContext& context, const Progress& progress) {
     VolumeJob job;
     job.base = {"base", context.options.base, context.options.triangulate};
     job.threads = context.options.triangulate.threads;

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
 
 #include "support/solid_fixtures.hpp"
 
@@ -29,6 +30,26 @@ TEST(CheckPoints, HeightsOnAPlaneAndPointsOutsideListed) {
     EXPECT_EQ(s.outside, 1U);
     EXPECT_NEAR(s.max_abs, 0.1, 1e-9);
     EXPECT_EQ(s.max_abs_index, 0U);
+}
+
+// Clough-Tocher (with Nielson's gradients) and Sibson's natural neighbours both reproduce a
+// plane: through InterpolatedSurface they must give the plane's heights, and nothing outside.
+TEST(CheckPoints, SmoothSurfacesReproduceAPlane) {
+    const dtm::test::Square sq{-750000.0, -1050000.0, 20.0};
+    const dtm::Tin tin = dtm::test::plane_tin(sq, 100.0, 0.1, 0.2, 50, 1);
+    for (const dtm::Interpolation method :
+         {dtm::Interpolation::cubic, dtm::Interpolation::natural}) {
+        const dtm::TinInterpolant interpolant = dtm::TinInterpolant::prepare(tin, method);
+        const dtm::InterpolatedSurface surface(tin, interpolant);
+        for (const auto& [dx, dy] :
+             {std::pair{5.0, 5.0}, {0.3, 17.9}, {12.25, 0.0}, {20.0, 20.0}}) {
+            double z = 0.0;
+            ASSERT_TRUE(surface.height(sq.x0 + dx, sq.y0 + dy, z)) << dx << " " << dy;
+            EXPECT_NEAR(z, 100.0 + 0.1 * dx + 0.2 * dy, 1e-6) << dtm::interpolation_name(method);
+        }
+        double z = 0.0;
+        EXPECT_FALSE(surface.height(sq.x0 - 1.0, sq.y0 + 5.0, z));
+    }
 }
 
 TEST(CheckPoints, StatisticsOfKnownResiduals) {

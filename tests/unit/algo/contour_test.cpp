@@ -13,14 +13,12 @@
 #include "dtm/core/error.hpp"
 #include "dtm/geom/predicates.hpp"
 
-
 namespace {
 
 using dtm::Contour;
 using dtm::Point3;
 using dtm::Tin;
 using dtm::Triangle;
-
 
 /// n x n jittered grid, spacing 1, z from @p height; cells whose centre is in @p hole are left out.
 template <class F>

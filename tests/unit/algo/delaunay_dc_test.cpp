@@ -4,6 +4,8 @@
 // ghosts, counter-clockwise triangles), the exact empty-circle property of every edge, and the
 // same triangles in the same slots for every tile size. Inputs: random, lattices with
 // cocircular cells, points on a circle, collinear chains, and the smallest sizes.
+#include "algo/detail/delaunay_dc.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -12,7 +14,6 @@
 #include <random>
 #include <vector>
 
-#include "algo/detail/delaunay_dc.hpp"
 #include "dtm/geom/predicates.hpp"
 
 namespace dtm::detail {
@@ -20,8 +21,7 @@ namespace {
 
 using Points = std::vector<Point2>;
 
-Points random_points(std::size_t n, unsigned seed)
-{
+Points random_points(std::size_t n, unsigned seed) {
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> u(-750000.0, -749000.0);
     Points p(n);
@@ -29,8 +29,7 @@ Points random_points(std::size_t n, unsigned seed)
     return p;
 }
 
-Points lattice(std::size_t side)
-{
+Points lattice(std::size_t side) {
     Points p;
     for (std::size_t i = 0; i < side; ++i) {
         for (std::size_t j = 0; j < side; ++j) p.push_back({double(i), double(j)});
@@ -39,8 +38,7 @@ Points lattice(std::size_t side)
     return p;
 }
 
-Points circle(std::size_t n)
-{
+Points circle(std::size_t n) {
     Points p;
     for (std::size_t i = 0; i < n; ++i) {
         const double a = 2.0 * std::numbers::pi * double(i) / double(n);
@@ -49,16 +47,14 @@ Points circle(std::size_t n)
     return p;
 }
 
-Points chain(std::size_t n)
-{
+Points chain(std::size_t n) {
     Points p;
     for (std::size_t i = 0; i < n; ++i) p.push_back({3.0 * double(i), -2.0 * double(i)});
     std::shuffle(p.begin(), p.end(), std::mt19937_64(3));
     return p;
 }
 
-GhostMesh triangulate_points(const Points& input, std::size_t cutoff)
-{
+GhostMesh triangulate_points(const Points& input, std::size_t cutoff) {
     BigArray<KernelPoint> pts(input.size());
     for (std::size_t i = 0; i < input.size(); ++i) {
         pts[i] = {{input[i].x, input[i].y}, static_cast<std::uint32_t>(i)};
@@ -72,8 +68,7 @@ GhostMesh triangulate_points(const Points& input, std::size_t cutoff)
 
 Point2 at(const GhostMesh& m, VertexId v) { return m.points[v].xy(); }
 
-void check_structure(const GhostMesh& m, std::size_t n, bool collinear)
-{
+void check_structure(const GhostMesh& m, std::size_t n, bool collinear) {
     ASSERT_EQ(m.tris.size(), 2 * n);
     std::size_t unused = 0;
     std::size_t real = 0;
@@ -116,8 +111,7 @@ void check_structure(const GhostMesh& m, std::size_t n, bool collinear)
 
 /// Every edge between two real triangles is locally Delaunay (exactly): together with a convex
 /// hull this is the empty-circle property of the whole triangulation.
-void check_delaunay(const GhostMesh& m)
-{
+void check_delaunay(const GhostMesh& m) {
     for (std::size_t t = 0; t < m.tris.size(); ++t) {
         if (m.is_ghost(t)) continue;
         for (unsigned i = 0; i < 3; ++i) {
@@ -138,8 +132,7 @@ struct Case {
     bool collinear = false;
 };
 
-std::vector<Case> cases()
-{
+std::vector<Case> cases() {
     return {{"two", {{0, 0}, {1, 1}}},
             {"three", {{0, 0}, {2, 0}, {1, 1}}},
             {"three clockwise", {{0, 0}, {1, 1}, {2, 0}}},
@@ -152,8 +145,7 @@ std::vector<Case> cases()
             {"random", random_points(20000, 11)}};
 }
 
-TEST(DelaunayKernel, GhostMeshInvariantsAndEmptyCircles)
-{
+TEST(DelaunayKernel, GhostMeshInvariantsAndEmptyCircles) {
     for (const Case& c : cases()) {
         SCOPED_TRACE(c.name);
         const GhostMesh m = triangulate_points(c.points, 0);
@@ -162,8 +154,7 @@ TEST(DelaunayKernel, GhostMeshInvariantsAndEmptyCircles)
     }
 }
 
-TEST(DelaunayKernel, SameTrianglesInTheSameSlotsForEveryTileSize)
-{
+TEST(DelaunayKernel, SameTrianglesInTheSameSlotsForEveryTileSize) {
     for (const Case& c : cases()) {
         SCOPED_TRACE(c.name);
         const GhostMesh whole = triangulate_points(c.points, 0);
@@ -171,8 +162,10 @@ TEST(DelaunayKernel, SameTrianglesInTheSameSlotsForEveryTileSize)
             const GhostMesh tiled = triangulate_points(c.points, cutoff);
             ASSERT_EQ(tiled.tris.size(), whole.tris.size());
             for (std::size_t t = 0; t < whole.tris.size(); ++t) {
-                ASSERT_EQ(tiled.tris[t].v, whole.tris[t].v) << "slot " << t << ", cutoff " << cutoff;
-                ASSERT_EQ(tiled.tris[t].n, whole.tris[t].n) << "slot " << t << ", cutoff " << cutoff;
+                ASSERT_EQ(tiled.tris[t].v, whole.tris[t].v)
+                    << "slot " << t << ", cutoff " << cutoff;
+                ASSERT_EQ(tiled.tris[t].n, whole.tris[t].n)
+                    << "slot " << t << ", cutoff " << cutoff;
             }
         }
     }

@@ -18,15 +18,13 @@ namespace {
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 
 /// The plane z = x + 2 y sampled at the corners and centre of [0, 100]^2.
-dtm::TerrainInput plane_points()
-{
+dtm::TerrainInput plane_points() {
     dtm::TerrainInput in;
     in.points = {{0, 0, 0}, {100, 0, 100}, {100, 100, 300}, {0, 100, 200}, {50, 50, 150}};
     return in;
 }
 
-dtm::Polyline ring(std::initializer_list<dtm::Point2> corners, std::string source = "ring.csv:1")
-{
+dtm::Polyline ring(std::initializer_list<dtm::Point2> corners, std::string source = "ring.csv:1") {
     dtm::Polyline line;
     for (const dtm::Point2& p : corners) line.points.push_back({p.x, p.y, nan});
     line.closed = true;
@@ -34,8 +32,7 @@ dtm::Polyline ring(std::initializer_list<dtm::Point2> corners, std::string sourc
     return line;
 }
 
-TEST(LineHeights, RingVerticesTakeTheHeightOfTheSurface)
-{
+TEST(LineHeights, RingVerticesTakeTheHeightOfTheSurface) {
     dtm::TerrainInput in = plane_points();
     in.boundaries.push_back(ring({{10.5, 10}, {90.5, 10}, {90.5, 90}, {10.5, 90}}));
     in.holes.push_back(ring({{40, 40}, {60, 40}, {60, 60}}));
@@ -47,8 +44,7 @@ TEST(LineHeights, RingVerticesTakeTheHeightOfTheSurface)
     }
 }
 
-TEST(LineHeights, VerticesOnASurveyPointTakeItsHeightExactly)
-{
+TEST(LineHeights, VerticesOnASurveyPointTakeItsHeightExactly) {
     dtm::TerrainInput in = plane_points();
     in.points.push_back({20, 30, 99.125});  // off the plane on purpose: the point wins
     dtm::Polyline line;
@@ -64,8 +60,7 @@ TEST(LineHeights, VerticesOnASurveyPointTakeItsHeightExactly)
     EXPECT_EQ(in.boundaries[0].points[0].z, 99.125);
 }
 
-TEST(LineHeights, RingVerticesBeyondTheHullTakeTheNearestVertex)
-{
+TEST(LineHeights, RingVerticesBeyondTheHullTakeTheNearestVertex) {
     dtm::TerrainInput in = plane_points();
     in.boundaries.push_back(ring({{-10, -20}, {130, -5}, {120, 120}, {-5, 101}}));
     (void)dtm::resolve_line_heights(in);
@@ -76,8 +71,7 @@ TEST(LineHeights, RingVerticesBeyondTheHullTakeTheNearestVertex)
     EXPECT_EQ(p[3].z, 200.0);
 }
 
-TEST(LineHeights, HardBreaklineVertexWithoutAHeightIsAnInputErrorNamingIt)
-{
+TEST(LineHeights, HardBreaklineVertexWithoutAHeightIsAnInputErrorNamingIt) {
     dtm::TerrainInput in = plane_points();
     dtm::Polyline line;
     line.points = {{0, 0, nan}, {5.5, 5, nan}};
@@ -94,16 +88,14 @@ TEST(LineHeights, HardBreaklineVertexWithoutAHeightIsAnInputErrorNamingIt)
     }
 }
 
-TEST(LineHeights, RingsNeedAtLeastThreeSurveyPoints)
-{
+TEST(LineHeights, RingsNeedAtLeastThreeSurveyPoints) {
     dtm::TerrainInput in;
     in.points = {{0, 0, 1}, {1, 0, 1}};
     in.boundaries.push_back(ring({{0, 0.5}, {1, 0.5}, {0.5, 1}}));
     EXPECT_THROW((void)dtm::resolve_line_heights(in), dtm::InputError);
 }
 
-TEST(LineHeights, SoftBreaklineVerticesAreLeftToTheTriangulator)
-{
+TEST(LineHeights, SoftBreaklineVerticesAreLeftToTheTriangulator) {
     dtm::TerrainInput in = plane_points();
     dtm::Polyline soft;
     soft.points = {{10, 20, nan}, {80, 70, nan}};
@@ -115,8 +107,7 @@ TEST(LineHeights, SoftBreaklineVerticesAreLeftToTheTriangulator)
     for (const dtm::Point3& v : result.tin.vertices) EXPECT_NEAR(v.z, v.x + 2 * v.y, 1e-9);
 }
 
-TEST(LineHeights, TriangulateWithTwoDimensionalRingsEqualsResolvingFirst)
-{
+TEST(LineHeights, TriangulateWithTwoDimensionalRingsEqualsResolvingFirst) {
     dtm::TerrainInput in = plane_points();
     for (int i = 0; i < 200; ++i) {  // more points, off the plane, so the surface matters
         const double x = 3.0 + 0.47 * i;

@@ -20,14 +20,12 @@ struct Item {
 
 /// Lexicographic (x, y): a strict total order on distinct positions, with many equal x.
 struct ByXY {
-    bool operator()(const Item& a, const Item& b) const noexcept
-    {
+    bool operator()(const Item& a, const Item& b) const noexcept {
         return (a.x < b.x) | ((a.x == b.x) & (a.y < b.y));
     }
 };
 
-std::vector<Item> items(std::size_t n, unsigned seed)
-{
+std::vector<Item> items(std::size_t n, unsigned seed) {
     std::mt19937_64 rng(seed);
     std::vector<Item> v(n);
     for (std::size_t i = 0; i < n; ++i) {
@@ -39,8 +37,7 @@ std::vector<Item> items(std::size_t n, unsigned seed)
     return v;
 }
 
-TEST(SelectKth, PutsExactlyTheKSmallestFirstForEverySizeAndRank)
-{
+TEST(SelectKth, PutsExactlyTheKSmallestFirstForEverySizeAndRank) {
     SelectScratch<Item> scratch;
     // Sizes below the std::nth_element fallback, between it and the scratch capacity, and above
     // it (the in-place pass); ranks at the ends and in the middle.

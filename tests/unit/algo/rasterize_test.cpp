@@ -12,13 +12,11 @@
 #include "dtm/core/error.hpp"
 #include "dtm/geom/predicates.hpp"
 
-
 namespace {
 
 using dtm::Point3;
 using dtm::Tin;
 using dtm::Triangle;
-
 
 /// A (jittered) regular grid of n x n vertices with spacing h, split into triangles with
 /// alternating diagonals; triangles whose centroid falls in @p hole (x0,y0,x1,y1 relative to the

@@ -22,8 +22,7 @@ using dtm::TinLocation;
 
 double plane(double x, double y) { return 2.0 * x - 3.0 * y + 100.0; }
 
-dtm::TerrainInput random_points(std::size_t n, unsigned seed)
-{
+dtm::TerrainInput random_points(std::size_t n, unsigned seed) {
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> u(0.0, 100.0);
     dtm::TerrainInput in;
@@ -36,22 +35,21 @@ dtm::TerrainInput random_points(std::size_t n, unsigned seed)
 }
 
 /// Every triangle that contains @p p (interior, edge or vertex), by a full scan.
-std::vector<dtm::TriangleIndex> containing(const dtm::Tin& tin, Point2 p)
-{
+std::vector<dtm::TriangleIndex> containing(const dtm::Tin& tin, Point2 p) {
     std::vector<dtm::TriangleIndex> found;
     for (dtm::TriangleIndex t = 0; t < tin.triangles.size(); ++t) {
         const auto& v = tin.triangles[t].v;
         bool inside = true;
         for (unsigned s = 0; s < 3 && inside; ++s) {
-            inside = dtm::geom::orient2d(tin.vertex(v[(s + 1) % 3]), tin.vertex(v[(s + 2) % 3]), p) >= 0;
+            inside =
+                dtm::geom::orient2d(tin.vertex(v[(s + 1) % 3]), tin.vertex(v[(s + 2) % 3]), p) >= 0;
         }
         if (inside) found.push_back(t);
     }
     return found;
 }
 
-dtm::VertexIndex brute_nearest(const dtm::Tin& tin, Point2 p)
-{
+dtm::VertexIndex brute_nearest(const dtm::Tin& tin, Point2 p) {
     std::vector<bool> used(tin.vertices.size(), false);
     for (const auto& t : tin.triangles) {
         for (const auto v : t.v) used[v] = true;
@@ -70,8 +68,7 @@ dtm::VertexIndex brute_nearest(const dtm::Tin& tin, Point2 p)
 }
 
 /// Locations of many random points (some beyond the data) agree with the full scan.
-void expect_locations_match_brute_force(const dtm::Tin& tin, unsigned seed, std::size_t queries)
-{
+void expect_locations_match_brute_force(const dtm::Tin& tin, unsigned seed, std::size_t queries) {
     const SurfaceSampler sampler(tin);
     SurfaceSampler::Cursor cursor;
     std::mt19937_64 rng(seed);
@@ -94,8 +91,7 @@ void expect_locations_match_brute_force(const dtm::Tin& tin, unsigned seed, std:
     EXPECT_GT(inside, queries / 4);
 }
 
-TEST(SurfaceSampler, ReproducesAPlaneInsideAndIsExactOnVertices)
-{
+TEST(SurfaceSampler, ReproducesAPlaneInsideAndIsExactOnVertices) {
     const dtm::Tin tin = dtm::triangulate(random_points(2000, 1)).tin;
     const SurfaceSampler sampler(tin);
     SurfaceSampler::Cursor cursor;
@@ -112,12 +108,12 @@ TEST(SurfaceSampler, ReproducesAPlaneInsideAndIsExactOnVertices)
     }
 }
 
-TEST(SurfaceSampler, PointsOnAnEdgeGetTheSameHeightFromEitherTriangle)
-{
+TEST(SurfaceSampler, PointsOnAnEdgeGetTheSameHeightFromEitherTriangle) {
     // Integer lattice: edge midpoints are exact, and each interior edge has two triangles.
     dtm::TerrainInput in;
     for (int j = 0; j <= 10; ++j) {
-        for (int i = 0; i <= 10; ++i) in.points.push_back({i * 1.0, j * 1.0, std::sin(i + 3.0 * j)});
+        for (int i = 0; i <= 10; ++i)
+            in.points.push_back({i * 1.0, j * 1.0, std::sin(i + 3.0 * j)});
     }
     const dtm::Tin tin = dtm::triangulate(in).tin;
     const SurfaceSampler sampler(tin);
@@ -140,13 +136,11 @@ TEST(SurfaceSampler, PointsOnAnEdgeGetTheSameHeightFromEitherTriangle)
     EXPECT_EQ(checked, 3 * tin.triangles.size());
 }
 
-TEST(SurfaceSampler, LocatesLikeAFullScanOnAConvexTin)
-{
+TEST(SurfaceSampler, LocatesLikeAFullScanOnAConvexTin) {
     expect_locations_match_brute_force(dtm::triangulate(random_points(500, 3)).tin, 4, 3000);
 }
 
-TEST(SurfaceSampler, LocatesLikeAFullScanOnAConstrainedTin)
-{
+TEST(SurfaceSampler, LocatesLikeAFullScanOnAConstrainedTin) {
     dtm::TerrainInput in = random_points(800, 5);
     std::mt19937_64 rng(6);
     std::uniform_real_distribution<double> u(0.0, 100.0);
@@ -162,11 +156,11 @@ TEST(SurfaceSampler, LocatesLikeAFullScanOnAConstrainedTin)
     expect_locations_match_brute_force(dtm::triangulate(in).tin, 7, 3000);
 }
 
-TEST(SurfaceSampler, LocatesLikeAFullScanWithABoundaryAndAHole)
-{
+TEST(SurfaceSampler, LocatesLikeAFullScanWithABoundaryAndAHole) {
     dtm::TerrainInput in = random_points(1500, 8);
     // a C-shaped boundary (the walk must leave and re-enter) and a square hole
-    const std::vector<Point2> c{{5, 5}, {95, 5}, {95, 40}, {30, 40}, {30, 60}, {95, 60}, {95, 95}, {5, 95}};
+    const std::vector<Point2> c{{5, 5},   {95, 5},  {95, 40}, {30, 40},
+                                {30, 60}, {95, 60}, {95, 95}, {5, 95}};
     dtm::Polyline boundary;
     for (const Point2& p : c) boundary.points.push_back({p.x, p.y, plane(p.x, p.y)});
     boundary.closed = true;
@@ -186,8 +180,7 @@ TEST(SurfaceSampler, LocatesLikeAFullScanWithABoundaryAndAHole)
     EXPECT_NEAR(sampler.height({60, 80}, cursor), plane(60, 80), 1e-9);
 }
 
-TEST(SurfaceSampler, NearestVertexIsTheFullScansWithTiesToTheLowerIndex)
-{
+TEST(SurfaceSampler, NearestVertexIsTheFullScansWithTiesToTheLowerIndex) {
     const dtm::Tin tin = dtm::triangulate(random_points(700, 10)).tin;
     const SurfaceSampler sampler(tin);
     std::mt19937_64 rng(11);
@@ -210,8 +203,7 @@ TEST(SurfaceSampler, NearestVertexIsTheFullScansWithTiesToTheLowerIndex)
     EXPECT_EQ(s2.height_or_nearest({-3.0, 0.25}, cursor), 1.0);
 }
 
-TEST(SurfaceSampler, ConcurrentQueriesWithTheirOwnCursorsAgreeWithSequentialOnes)
-{
+TEST(SurfaceSampler, ConcurrentQueriesWithTheirOwnCursorsAgreeWithSequentialOnes) {
     dtm::TerrainInput in = random_points(3000, 12);
     dtm::Polyline boundary;
     for (const Point2& p : std::vector<Point2>{{10, 10}, {90, 10}, {50, 50}, {90, 90}, {10, 90}}) {
@@ -239,7 +231,8 @@ TEST(SurfaceSampler, ConcurrentQueriesWithTheirOwnCursorsAgreeWithSequentialOnes
         threads.emplace_back([&, t] {
             SurfaceSampler::Cursor cursor;
             for (std::size_t k = 0; k < queries.size(); ++k) {
-                const std::size_t step[] = {1, 3, 7, 11};  // coprime to 4000: a different order each
+                const std::size_t step[] = {1, 3, 7,
+                                            11};  // coprime to 4000: a different order each
                 const std::size_t i = (k * step[t]) % queries.size();
                 got[t][i] = shared.height_or_nearest(queries[i], cursor);
             }
@@ -253,8 +246,7 @@ TEST(SurfaceSampler, ConcurrentQueriesWithTheirOwnCursorsAgreeWithSequentialOnes
     }
 }
 
-TEST(SurfaceSampler, EmptyTinHasNoHeights)
-{
+TEST(SurfaceSampler, EmptyTinHasNoHeights) {
     const dtm::Tin empty;
     const SurfaceSampler sampler(empty);
     SurfaceSampler::Cursor cursor;

@@ -12,8 +12,7 @@
 namespace dtm {
 namespace {
 
-TerrainInput lattice_case(std::uint32_t seed)
-{
+TerrainInput lattice_case(std::uint32_t seed) {
     std::mt19937 rng(seed);
     std::uniform_int_distribution<int> coord(0, 8);
     std::uniform_int_distribution<int> count(1, 12);
@@ -33,8 +32,7 @@ TerrainInput lattice_case(std::uint32_t seed)
     return in;
 }
 
-TEST(TriangulateStress, DegenerateLatticeBreaklinesAlwaysGiveAValidConstrainedTin)
-{
+TEST(TriangulateStress, DegenerateLatticeBreaklinesAlwaysGiveAValidConstrainedTin) {
     for (std::uint32_t seed = 1; seed <= 300; ++seed) {
         const TerrainInput in = lattice_case(seed);
         for (const unsigned threads : {1u, 2u}) {

@@ -20,8 +20,7 @@ namespace {
 using test::random_points;
 using test::triangle_set;
 
-void expect_valid(const TriangulateResult& r, const TerrainInput& input)
-{
+void expect_valid(const TriangulateResult& r, const TerrainInput& input) {
     const CheckReport topology = verify_topology(r.tin);
     EXPECT_TRUE(topology.ok()) << topology.text();
     const CheckReport delaunay = verify_constrained_delaunay(r.tin);
@@ -31,8 +30,7 @@ void expect_valid(const TriangulateResult& r, const TerrainInput& input)
 }
 
 /// Number of triangles of a full triangulation of n points with h on the hull: 2n - 2 - h.
-std::size_t hull_vertex_count(const Tin& tin)
-{
+std::size_t hull_vertex_count(const Tin& tin) {
     std::set<VertexIndex> hull;
     for (const Triangle& t : tin.triangles) {
         for (int i = 0; i < 3; ++i) {
@@ -45,8 +43,7 @@ std::size_t hull_vertex_count(const Tin& tin)
     return hull.size();
 }
 
-TEST(Triangulate, RandomPointsGiveAFullExactDelaunayTriangulation)
-{
+TEST(Triangulate, RandomPointsGiveAFullExactDelaunayTriangulation) {
     TerrainInput input;
     input.points = random_points(20000, 1, test::sjtsk_e, test::sjtsk_n);
     const TriangulateResult r = triangulate(input);
@@ -56,8 +53,7 @@ TEST(Triangulate, RandomPointsGiveAFullExactDelaunayTriangulation)
     EXPECT_EQ(r.stats.duplicates_merged, 0u);
 }
 
-TEST(Triangulate, OutputVerticesAreBitIdenticalToTheInput)
-{
+TEST(Triangulate, OutputVerticesAreBitIdenticalToTheInput) {
     TerrainInput input;
     input.points = random_points(1000, 2, test::sjtsk_e, test::sjtsk_n);
     const TriangulateResult r = triangulate(input);
@@ -66,8 +62,7 @@ TEST(Triangulate, OutputVerticesAreBitIdenticalToTheInput)
     }
 }
 
-TEST(Triangulate, TiltedGridsAtSjtskMagnitudeAreValidAndExactlyDelaunay)
-{
+TEST(Triangulate, TiltedGridsAtSjtskMagnitudeAreValidAndExactlyDelaunay) {
     for (const double angle : {0.0, 0.3, 0.7853981633974483, 1.1}) {
         TerrainInput input;
         input.points = test::tilted_grid(60, 45, 0.001, angle, test::sjtsk_e, test::sjtsk_n);
@@ -78,8 +73,7 @@ TEST(Triangulate, TiltedGridsAtSjtskMagnitudeAreValidAndExactlyDelaunay)
     }
 }
 
-TEST(Triangulate, SameTrianglesWhateverTheInputOrder)
-{
+TEST(Triangulate, SameTrianglesWhateverTheInputOrder) {
     TerrainInput a;
     a.points = test::tilted_grid(30, 30, 1.0, 0.0, 0.0, 0.0);  // cocircular: many valid answers
     TerrainInput b = a;
@@ -88,8 +82,7 @@ TEST(Triangulate, SameTrianglesWhateverTheInputOrder)
     EXPECT_EQ(triangle_set(triangulate(a).tin), triangle_set(triangulate(b).tin));
 }
 
-TEST(Triangulate, SameTrianglesForEveryTileAndThreadCount)
-{
+TEST(Triangulate, SameTrianglesForEveryTileAndThreadCount) {
     TerrainInput input;
     input.points = random_points(30000, 3);
     const auto grid = test::tilted_grid(40, 40, 7.0, 0.0, 100.0, 100.0);
@@ -106,23 +99,23 @@ TEST(Triangulate, SameTrianglesForEveryTileAndThreadCount)
             o.threads = threads;
             const Tin tin = triangulate(input, o).tin;
             EXPECT_EQ(tin.triangles.size(), reference.triangles.size());
-            EXPECT_TRUE(std::equal(tin.triangles.begin(), tin.triangles.end(),
-                                   reference.triangles.begin(), reference.triangles.end(),
-                                   [](const Triangle& x, const Triangle& y) {
-                                       return x.v == y.v && x.n == y.n;
-                                   }))
+            EXPECT_TRUE(std::equal(
+                tin.triangles.begin(), tin.triangles.end(), reference.triangles.begin(),
+                reference.triangles.end(),
+                [](const Triangle& x, const Triangle& y) { return x.v == y.v && x.n == y.n; }))
                 << "tiles " << tiles << " threads " << threads;
         }
     }
 }
 
-TEST(Triangulate, DuplicatesAreMergedWithTheChosenHeightRuleAndListed)
-{
+TEST(Triangulate, DuplicatesAreMergedWithTheChosenHeightRuleAndListed) {
     TerrainInput input;
     input.points = {{0, 0, 1}, {10, 0, 2}, {0, 10, 3}, {10, 0, 6}, {10, 0, 4}, {10, 10, 0}};
-    for (const auto& [rule, z] : std::vector<std::pair<DuplicateRule, double>>{
-             {DuplicateRule::first, 2.0}, {DuplicateRule::mean, 4.0},
-             {DuplicateRule::min, 2.0}, {DuplicateRule::max, 6.0}}) {
+    for (const auto& [rule, z] :
+         std::vector<std::pair<DuplicateRule, double>>{{DuplicateRule::first, 2.0},
+                                                       {DuplicateRule::mean, 4.0},
+                                                       {DuplicateRule::min, 2.0},
+                                                       {DuplicateRule::max, 6.0}}) {
         TriangulateOptions o;
         o.duplicates = rule;
         const TriangulateResult r = triangulate(input, o);
@@ -135,8 +128,7 @@ TEST(Triangulate, DuplicatesAreMergedWithTheChosenHeightRuleAndListed)
     }
 }
 
-TEST(Triangulate, ManyDuplicatesMergeIntoTheirFirstOccurrenceWithOneOrTwoThreads)
-{
+TEST(Triangulate, ManyDuplicatesMergeIntoTheirFirstOccurrenceWithOneOrTwoThreads) {
     // Large enough for the parallel hash table; every 7th point repeats an earlier one (and
     // some repeat a repeat), in shuffled order, with -0.0 standing for 0.0.
     TerrainInput input;
@@ -170,8 +162,7 @@ TEST(Triangulate, ManyDuplicatesMergeIntoTheirFirstOccurrenceWithOneOrTwoThreads
     }
 }
 
-TEST(Triangulate, SnapMergesPointsCloserThanTheDistance)
-{
+TEST(Triangulate, SnapMergesPointsCloserThanTheDistance) {
     TerrainInput input;
     input.points = {{0, 0, 1}, {10, 0, 2}, {0, 10, 3}, {10.004, 0.003, 8}, {10, 10, 0}, {5, 5, 1}};
     TriangulateOptions o;
@@ -182,17 +173,16 @@ TEST(Triangulate, SnapMergesPointsCloserThanTheDistance)
     EXPECT_EQ(r.tin.vertices.size(), 5u);
 }
 
-TEST(Triangulate, FewerThanThreeDistinctPointsIsAnInputError)
-{
+TEST(Triangulate, FewerThanThreeDistinctPointsIsAnInputError) {
     TerrainInput input;
     input.points = {{0, 0, 1}, {1, 1, 1}, {1, 1, 2}};
     EXPECT_THROW((void)triangulate(input), InputError);
 }
 
-TEST(Triangulate, AllCollinearPointsIsAnInputError)
-{
+TEST(Triangulate, AllCollinearPointsIsAnInputError) {
     TerrainInput input;
-    for (int i = 0; i < 100; ++i) input.points.push_back({test::sjtsk_e + i * 0.1, test::sjtsk_n + i * 0.2, 1});
+    for (int i = 0; i < 100; ++i)
+        input.points.push_back({test::sjtsk_e + i * 0.1, test::sjtsk_n + i * 0.2, 1});
     try {
         (void)triangulate(input);
         FAIL() << "expected InputError";
@@ -201,8 +191,7 @@ TEST(Triangulate, AllCollinearPointsIsAnInputError)
     }
 }
 
-TEST(Triangulate, BreaklinesBecomeConstrainedEdgesAndTheRestStaysDelaunay)
-{
+TEST(Triangulate, BreaklinesBecomeConstrainedEdgesAndTheRestStaysDelaunay) {
     TerrainInput input;
     input.points = random_points(5000, 4);
     std::mt19937_64 rng(5);
@@ -210,7 +199,8 @@ TEST(Triangulate, BreaklinesBecomeConstrainedEdgesAndTheRestStaysDelaunay)
     for (int k = 0; k < 40; ++k) {  // horizontal zig-zags in separate bands never cross
         Polyline line;
         const double y = 20.0 + 24.0 * k;
-        for (double x = 5.0; x < 1000.0; x += 37.0) line.points.push_back({x, y + 10.0 * std::sin(x), 100});
+        for (double x = 5.0; x < 1000.0; x += 37.0)
+            line.points.push_back({x, y + 10.0 * std::sin(x), 100});
         input.breaklines.push_back(line);
     }
     const TriangulateResult r = triangulate(input);
@@ -219,18 +209,17 @@ TEST(Triangulate, BreaklinesBecomeConstrainedEdgesAndTheRestStaysDelaunay)
     EXPECT_GE(r.tin.constraints.size(), 40u * 26u);  // 26 segments per line, more if split
 }
 
-TEST(Triangulate, BreaklineThroughAnExistingVertexIsSplitThere)
-{
+TEST(Triangulate, BreaklineThroughAnExistingVertexIsSplitThere) {
     TerrainInput input;
-    input.points = {{0, 0, 0}, {10, 0, 0}, {10, 10, 0}, {0, 10, 0}, {5, 5, 7}, {2, 8, 0}, {8, 2, 0}};
+    input.points = {{0, 0, 0}, {10, 0, 0}, {10, 10, 0}, {0, 10, 0},
+                    {5, 5, 7}, {2, 8, 0},  {8, 2, 0}};
     input.breaklines.push_back({{{0, 0, 0}, {10, 10, 0}}, false, ""});
     const TriangulateResult r = triangulate(input);
     expect_valid(r, input);
     EXPECT_EQ(r.tin.constraints.size(), 2u);
 }
 
-TEST(Triangulate, OverlappingCollinearBreaklinesAreMerged)
-{
+TEST(Triangulate, OverlappingCollinearBreaklinesAreMerged) {
     TerrainInput input;
     input.points = random_points(200, 6);
     input.breaklines.push_back({{{100, 500, 1}, {700, 500, 1}}, false, ""});
@@ -241,8 +230,7 @@ TEST(Triangulate, OverlappingCollinearBreaklinesAreMerged)
     EXPECT_EQ(r.tin.constraints.size(), 3u);  // 100-400, 400-700, 700-900
 }
 
-TEST(Triangulate, CrossingBreaklinesAreSplitWithInterpolatedHeightsAndConflictsReported)
-{
+TEST(Triangulate, CrossingBreaklinesAreSplitWithInterpolatedHeightsAndConflictsReported) {
     TerrainInput input;
     input.points = random_points(500, 8);
     input.breaklines.push_back({{{100, 100, 10}, {900, 900, 20}}, false, ""});
@@ -263,8 +251,7 @@ TEST(Triangulate, CrossingBreaklinesAreSplitWithInterpolatedHeightsAndConflictsR
     EXPECT_TRUE(found_centre);
 }
 
-TEST(Triangulate, ManyRandomCrossingBreaklinesStayValid)
-{
+TEST(Triangulate, ManyRandomCrossingBreaklinesStayValid) {
     TerrainInput input;
     input.points = random_points(3000, 9, test::sjtsk_e, test::sjtsk_n);
     std::mt19937_64 rng(10);
@@ -272,7 +259,8 @@ TEST(Triangulate, ManyRandomCrossingBreaklinesStayValid)
     for (int k = 0; k < 60; ++k) {
         input.breaklines.push_back({{{test::sjtsk_e + u(rng), test::sjtsk_n + u(rng), 1},
                                      {test::sjtsk_e + u(rng), test::sjtsk_n + u(rng), 2}},
-                                    false, ""});
+                                    false,
+                                    ""});
     }
     const TriangulateResult r = triangulate(input);
     expect_valid(r, input);
@@ -282,8 +270,7 @@ TEST(Triangulate, ManyRandomCrossingBreaklinesStayValid)
 // Long breaklines through dense points: some pass around a vertex and cross its whole star, so
 // an edge of that vertex has both its triangles in the cavity without being crossed (it lies on
 // the cavity's boundary twice); the new triangles must be linked across it.
-TEST(Triangulate, LongBreaklinesAroundWholeStarsStayValid)
-{
+TEST(Triangulate, LongBreaklinesAroundWholeStarsStayValid) {
     for (const std::uint32_t seed : {21u, 22u, 23u}) {
         TerrainInput input;
         input.points = random_points(4000, seed);
@@ -301,22 +288,23 @@ TEST(Triangulate, LongBreaklinesAroundWholeStarsStayValid)
     }
 }
 
-TEST(Triangulate, BoundaryAndHoleRingsLimitTheSurface)
-{
+TEST(Triangulate, BoundaryAndHoleRingsLimitTheSurface) {
     TerrainInput input;
     input.points = random_points(4000, 11);
-    input.boundaries.push_back({{{100, 100, 0}, {900, 100, 0}, {900, 900, 0}, {100, 900, 0}}, true, ""});
-    input.holes.push_back({{{400, 400, 0}, {600, 400, 0}, {600, 600, 0}, {400, 600, 0}, {400, 400, 0}}, false, ""});
+    input.boundaries.push_back(
+        {{{100, 100, 0}, {900, 100, 0}, {900, 900, 0}, {100, 900, 0}}, true, ""});
+    input.holes.push_back(
+        {{{400, 400, 0}, {600, 400, 0}, {600, 600, 0}, {400, 600, 0}, {400, 400, 0}}, false, ""});
     const TriangulateResult r = triangulate(input);
     expect_valid(r, input);
     EXPECT_NEAR(tin_area(r.tin), 800.0 * 800.0 - 200.0 * 200.0, 1e-6);
 }
 
-TEST(Triangulate, HoleSeedRemovesTheEnclosedRegion)
-{
+TEST(Triangulate, HoleSeedRemovesTheEnclosedRegion) {
     TerrainInput input;
     input.points = random_points(2000, 12);
-    input.breaklines.push_back({{{300, 300, 0}, {700, 300, 0}, {700, 700, 0}, {300, 700, 0}}, true, ""});
+    input.breaklines.push_back(
+        {{{300, 300, 0}, {700, 300, 0}, {700, 700, 0}, {300, 700, 0}}, true, ""});
     input.hole_seeds.push_back({500, 500});
     const TriangulateResult r = triangulate(input);
     expect_valid(r, input);
@@ -325,11 +313,11 @@ TEST(Triangulate, HoleSeedRemovesTheEnclosedRegion)
     EXPECT_NEAR(tin_area(r.tin), tin_area(triangulate(hull_only).tin) - 400.0 * 400.0, 1e-6);
 }
 
-TEST(Triangulate, OpenBoundaryIsAnInputError)
-{
+TEST(Triangulate, OpenBoundaryIsAnInputError) {
     TerrainInput input;
     input.points = random_points(100, 13);
-    input.boundaries.push_back({{{100, 100, 0}, {900, 100, 0}, {900, 900, 0}}, false, "fence.shp:1"});
+    input.boundaries.push_back(
+        {{{100, 100, 0}, {900, 100, 0}, {900, 900, 0}}, false, "fence.shp:1"});
     try {
         (void)triangulate(input);
         FAIL() << "expected InputError";
@@ -338,8 +326,7 @@ TEST(Triangulate, OpenBoundaryIsAnInputError)
     }
 }
 
-TEST(Triangulate, MaxEdgeTrimsLongBorderTrianglesOnly)
-{
+TEST(Triangulate, MaxEdgeTrimsLongBorderTrianglesOnly) {
     TerrainInput input;
     input.points = test::tilted_grid(20, 20, 1.0, 0.0, 0.0, 0.0);
     input.points.push_back({50.0, 10.0, 0.0});  // far outlier: long skinny hull triangles
@@ -351,8 +338,7 @@ TEST(Triangulate, MaxEdgeTrimsLongBorderTrianglesOnly)
     EXPECT_GT(r.stats.removed_triangles, 0u);
 }
 
-TEST(Triangulate, SoftBreaklinesTakeTheirHeightFromTheSurface)
-{
+TEST(Triangulate, SoftBreaklinesTakeTheirHeightFromTheSurface) {
     TerrainInput input;
     input.points = test::tilted_grid(11, 11, 10.0, 0.0, 0.0, 0.0);
     input.soft_breaklines.push_back({{{5, 5, 0}, {95, 45, 0}}, false, ""});

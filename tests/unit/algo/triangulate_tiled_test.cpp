@@ -27,21 +27,20 @@ struct SeamCase {
 
 /// A 64 x 64 grid: every median cut (by x, then by y) runs through a row or column of points,
 /// which the lexicographic split divides between the two tiles.
-TerrainInput grid_on_cut_lines()
-{
+TerrainInput grid_on_cut_lines() {
     TerrainInput in;
     in.points = test::tilted_grid(64, 64, 1.0, 0.0, test::sjtsk_e, test::sjtsk_n);
     return in;
 }
 
-std::vector<SeamCase> seam_cases()
-{
+std::vector<SeamCase> seam_cases() {
     std::vector<SeamCase> cases;
     cases.push_back({"points_on_cut_lines", grid_on_cut_lines()});
     {
         TerrainInput in = grid_on_cut_lines();
         for (int i = 0; i < 200; ++i) {  // a long collinear diagonal run plus duplicates
-            in.points.push_back({test::sjtsk_e + 0.25 + i * 0.3, test::sjtsk_n + 0.5 + i * 0.3, 1.0});
+            in.points.push_back(
+                {test::sjtsk_e + 0.25 + i * 0.3, test::sjtsk_n + 0.5 + i * 0.3, 1.0});
             in.points.push_back(in.points[static_cast<std::size_t>(i) * 17]);
         }
         cases.push_back({"collinear_runs_and_duplicates_across_seams", in});
@@ -50,21 +49,30 @@ std::vector<SeamCase> seam_cases()
         TerrainInput in = grid_on_cut_lines();
         // Along the first cut (x = 31.5 lies between columns 31 and 32; column 32 is on it).
         in.breaklines.push_back({{{test::sjtsk_e + 32, test::sjtsk_n + 0, 5},
-                                  {test::sjtsk_e + 32, test::sjtsk_n + 63, 9}}, false, ""});
+                                  {test::sjtsk_e + 32, test::sjtsk_n + 63, 9}},
+                                 false,
+                                 ""});
         in.breaklines.push_back({{{test::sjtsk_e + 0.5, test::sjtsk_n + 31.7, 2},
-                                  {test::sjtsk_e + 62.5, test::sjtsk_n + 31.7, 2}}, false, ""});
+                                  {test::sjtsk_e + 62.5, test::sjtsk_n + 31.7, 2}},
+                                 false,
+                                 ""});
         // Many tiles, crossing each other near the seams.
         in.breaklines.push_back({{{test::sjtsk_e + 1.3, test::sjtsk_n + 2.1, 3},
                                   {test::sjtsk_e + 61.7, test::sjtsk_n + 60.2, 3},
-                                  {test::sjtsk_e + 3.3, test::sjtsk_n + 58.9, 3}}, false, ""});
+                                  {test::sjtsk_e + 3.3, test::sjtsk_n + 58.9, 3}},
+                                 false,
+                                 ""});
         cases.push_back({"breaklines_along_and_across_seams", in});
     }
     {
         TerrainInput in;
         in.points = test::random_points(20000, 21);
-        in.boundaries.push_back({{{50, 50, 0}, {950, 80, 0}, {900, 950, 0}, {60, 900, 0}}, true, ""});
-        in.holes.push_back({{{480, 300, 0}, {530, 300, 0}, {530, 700, 0}, {480, 700, 0}}, true, ""});
-        in.holes.push_back({{{200, 495, 0}, {800, 495, 0}, {800, 505, 0}, {200, 505, 0}}, true, ""});
+        in.boundaries.push_back(
+            {{{50, 50, 0}, {950, 80, 0}, {900, 950, 0}, {60, 900, 0}}, true, ""});
+        in.holes.push_back(
+            {{{480, 300, 0}, {530, 300, 0}, {530, 700, 0}, {480, 700, 0}}, true, ""});
+        in.holes.push_back(
+            {{{200, 495, 0}, {800, 495, 0}, {800, 505, 0}, {200, 505, 0}}, true, ""});
         cases.push_back({"boundary_and_holes_cut_by_seams", in});
     }
     {
@@ -78,7 +86,8 @@ std::vector<SeamCase> seam_cases()
         std::normal_distribution<double> g(0.0, 30.0);
         for (int c = 0; c < 20; ++c) {
             const double cx = 50.0 * c;
-            for (int i = 0; i < 2000; ++i) in.points.push_back({cx + g(rng), 0.3 * cx + g(rng), 1.0});
+            for (int i = 0; i < 2000; ++i)
+                in.points.push_back({cx + g(rng), 0.3 * cx + g(rng), 1.0});
         }
         cases.push_back({"clustered", in});
     }
@@ -96,7 +105,8 @@ std::vector<SeamCase> seam_cases()
                                        test::sjtsk_n + std::clamp(y + d(rng), 0.0, 63.0), 2.0},
                                       {test::sjtsk_e + std::clamp(x + d(rng), 0.0, 63.0),
                                        test::sjtsk_n + std::clamp(y + d(rng), 0.0, 63.0), 3.0}},
-                                     false, ""});
+                                     false,
+                                     ""});
         }
         cases.push_back({"many_short_breaklines_on_a_grid", in});
     }
@@ -105,8 +115,7 @@ std::vector<SeamCase> seam_cases()
 
 class TiledSeams : public ::testing::TestWithParam<std::size_t> {};
 
-TEST_P(TiledSeams, EveryTileCountGivesTheSequentialTin)
-{
+TEST_P(TiledSeams, EveryTileCountGivesTheSequentialTin) {
     const std::size_t case_index = GetParam();
     const SeamCase c = seam_cases()[case_index];
     SCOPED_TRACE(c.name);
@@ -124,13 +133,15 @@ TEST_P(TiledSeams, EveryTileCountGivesTheSequentialTin)
             options.tiles = tiles;
             options.threads = threads;
             const Tin tin = triangulate(c.input, options).tin;
-            const std::string where = "tiles " + std::to_string(tiles) + ", threads " +
-                                      std::to_string(threads);
+            const std::string where =
+                "tiles " + std::to_string(tiles) + ", threads " + std::to_string(threads);
             ASSERT_EQ(tin.vertices, reference.tin.vertices) << where;
             ASSERT_EQ(tin.triangles.size(), reference.tin.triangles.size()) << where;
             for (std::size_t t = 0; t < tin.triangles.size(); ++t) {
-                ASSERT_EQ(tin.triangles[t].v, reference.tin.triangles[t].v) << where << " triangle " << t;
-                ASSERT_EQ(tin.triangles[t].n, reference.tin.triangles[t].n) << where << " triangle " << t;
+                ASSERT_EQ(tin.triangles[t].v, reference.tin.triangles[t].v)
+                    << where << " triangle " << t;
+                ASSERT_EQ(tin.triangles[t].n, reference.tin.triangles[t].n)
+                    << where << " triangle " << t;
             }
             ASSERT_EQ(tin.constraints, reference.tin.constraints) << where;
         }
@@ -145,8 +156,7 @@ INSTANTIATE_TEST_SUITE_P(Cases, TiledSeams, ::testing::Range<std::size_t>(0, 7))
 namespace dtm {
 namespace {
 
-TEST(TiledProgress, ReportsFromTheParallelPhaseAndCancelsCleanly)
-{
+TEST(TiledProgress, ReportsFromTheParallelPhaseAndCancelsCleanly) {
     TerrainInput input;
     input.points = test::random_points(300000, 31);
     for (const unsigned threads : {1u, 2u}) {

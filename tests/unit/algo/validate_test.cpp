@@ -14,28 +14,26 @@ namespace {
 
 /// 400 random points on a 1000 m square, a boundary ring around the middle and a breakline that
 /// runs inside it, leaves it through its right side, comes back, and ends inside.
-TerrainInput clipped_breakline_input()
-{
+TerrainInput clipped_breakline_input() {
     TerrainInput input;
     input.points = test::random_points(400, 21);
     input.boundaries.push_back(
         {{{100, 100, 0}, {700, 100, 0}, {700, 900, 0}, {100, 900, 0}}, true, "boundary"});
-    input.breaklines.push_back({{{200, 300, 5}, {650, 350, 5}, {850, 500, 5}, {650, 650, 5},
-                                 {200, 700, 5}},
-                                false, "breakline"});
+    input.breaklines.push_back(
+        {{{200, 300, 5}, {650, 350, 5}, {850, 500, 5}, {650, 650, 5}, {200, 700, 5}},
+         false,
+         "breakline"});
     return input;
 }
 
 /// Removes the TIN's constrained edges for which @p drop holds.
 template <class Drop>
-void drop_constraints(Tin& tin, Drop drop)
-{
+void drop_constraints(Tin& tin, Drop drop) {
     tin.constraints.erase(std::remove_if(tin.constraints.begin(), tin.constraints.end(), drop),
                           tin.constraints.end());
 }
 
-TEST(VerifyConstraints, BreaklineThatLeavesTheBoundaryIsRequiredOnlyInside)
-{
+TEST(VerifyConstraints, BreaklineThatLeavesTheBoundaryIsRequiredOnlyInside) {
     const TerrainInput input = clipped_breakline_input();
     const TriangulateResult r = triangulate(input);
     const CheckReport report = verify_constraints(r.tin, input);
@@ -47,15 +45,20 @@ TEST(VerifyConstraints, BreaklineThatLeavesTheBoundaryIsRequiredOnlyInside)
     }
 }
 
-TEST(VerifyConstraints, SegmentWithBothEndsInsideThatCrossesANotchIsRequiredOnlyInside)
-{
+TEST(VerifyConstraints, SegmentWithBothEndsInsideThatCrossesANotchIsRequiredOnlyInside) {
     // The boundary has a notch cut in from its right side; the breakline runs from (600, 300) to
     // (600, 700), both ends inside, through the notch (x = 600 is outside for 470 < y < 530).
     TerrainInput input;
     input.points = test::random_points(400, 22);
-    input.boundaries.push_back({{{100, 100, 0}, {700, 100, 0}, {700, 450, 0}, {450, 500, 0},
-                                 {700, 550, 0}, {700, 900, 0}, {100, 900, 0}},
-                                true, "boundary"});
+    input.boundaries.push_back({{{100, 100, 0},
+                                 {700, 100, 0},
+                                 {700, 450, 0},
+                                 {450, 500, 0},
+                                 {700, 550, 0},
+                                 {700, 900, 0},
+                                 {100, 900, 0}},
+                                true,
+                                "boundary"});
     input.breaklines.push_back({{{600, 300, 5}, {600, 700, 5}}, false, "breakline"});
     const TriangulateResult r = triangulate(input);
     EXPECT_EQ(r.stats.intersections, 2u);
@@ -63,8 +66,7 @@ TEST(VerifyConstraints, SegmentWithBothEndsInsideThatCrossesANotchIsRequiredOnly
     EXPECT_TRUE(report.ok()) << report.text();
 }
 
-TEST(VerifyConstraints, MissingPieceInsideTheSurfaceIsReportedEvenWhenTheSegmentLeavesIt)
-{
+TEST(VerifyConstraints, MissingPieceInsideTheSurfaceIsReportedEvenWhenTheSegmentLeavesIt) {
     const TerrainInput input = clipped_breakline_input();
     TriangulateResult r = triangulate(input);
     ASSERT_TRUE(verify_constraints(r.tin, input).ok());
@@ -84,8 +86,7 @@ TEST(VerifyConstraints, MissingPieceInsideTheSurfaceIsReportedEvenWhenTheSegment
         << report.text();
 }
 
-TEST(VerifyConstraints, MissingBreaklineEdgeInsideIsReported)
-{
+TEST(VerifyConstraints, MissingBreaklineEdgeInsideIsReported) {
     TerrainInput input;
     input.points = test::random_points(300, 4);
     input.breaklines.push_back({{{100, 200, 1}, {900, 800, 2}}, false, "b"});

@@ -7,8 +7,7 @@
 
 namespace {
 
-TEST(InputError, MessageNamesFileLineAndColumnWhereGiven)
-{
+TEST(InputError, MessageNamesFileLineAndColumnWhereGiven) {
     EXPECT_STREQ(dtm::InputError("a.csv", 3, 7, "expected a number").what(),
                  "a.csv:3:7: expected a number");
     EXPECT_STREQ(dtm::InputError("a.csv", 3, 0, "x").what(), "a.csv:3: x");
@@ -20,8 +19,7 @@ TEST(InputError, MessageNamesFileLineAndColumnWhereGiven)
     EXPECT_EQ(e.column(), 1U);
 }
 
-TEST(OptionError, IsAUsageErrorCarryingTheFieldName)
-{
+TEST(OptionError, IsAUsageErrorCarryingTheFieldName) {
     try {
         throw dtm::OptionError("z_field", "`z_field`: expected a field named 'h'");
     } catch (const dtm::UsageError& e) {

@@ -22,8 +22,7 @@ struct Call {
 };
 
 /// A Progress recording every callback.
-std::pair<dtm::Progress, std::shared_ptr<std::vector<Call>>> recording(bool keep_going = true)
-{
+std::pair<dtm::Progress, std::shared_ptr<std::vector<Call>>> recording(bool keep_going = true) {
     auto calls = std::make_shared<std::vector<Call>>();
     dtm::Progress progress([calls, keep_going](double f, std::string_view what) {
         calls->push_back({f, std::string(what)});
@@ -32,8 +31,7 @@ std::pair<dtm::Progress, std::shared_ptr<std::vector<Call>>> recording(bool keep
     return {progress, calls};
 }
 
-TEST(Progress, DefaultHandleIsSilentAndNeverCancels)
-{
+TEST(Progress, DefaultHandleIsSilentAndNeverCancels) {
     const dtm::Progress progress;
     EXPECT_NO_THROW(progress.report(0.5, "x"));
     EXPECT_NO_THROW(progress.check());
@@ -42,8 +40,7 @@ TEST(Progress, DefaultHandleIsSilentAndNeverCancels)
     EXPECT_NO_THROW(progress.sub(0.2, 0.4).report(1.0));
 }
 
-TEST(Progress, SmallStepsOfOneStageAreThrottledToAboutHalfAPercent)
-{
+TEST(Progress, SmallStepsOfOneStageAreThrottledToAboutHalfAPercent) {
     auto [progress, calls] = recording();
     for (int i = 0; i <= 10000; ++i) progress.report(i / 10000.0, "stage");
     // one call per 0.5 % at most, plus the final 1.0 which always goes through
@@ -55,8 +52,7 @@ TEST(Progress, SmallStepsOfOneStageAreThrottledToAboutHalfAPercent)
     }
 }
 
-TEST(Progress, ANewStageIsAlwaysReported)
-{
+TEST(Progress, ANewStageIsAlwaysReported) {
     auto [progress, calls] = recording();
     progress.report(0.100, "reading");
     progress.report(0.101, "reading");  // throttled
@@ -65,8 +61,7 @@ TEST(Progress, ANewStageIsAlwaysReported)
     EXPECT_EQ((*calls)[1].what, "triangulating");
 }
 
-TEST(Progress, FractionsAreClampedToTheUnitRange)
-{
+TEST(Progress, FractionsAreClampedToTheUnitRange) {
     auto [progress, calls] = recording();
     progress.report(-3.0, "a");
     progress.report(7.0, "b");
@@ -75,10 +70,9 @@ TEST(Progress, FractionsAreClampedToTheUnitRange)
     EXPECT_EQ((*calls)[1].fraction, 1.0);
 }
 
-TEST(Progress, SubRangesNestAndMapOntoTheOverallRange)
-{
+TEST(Progress, SubRangesNestAndMapOntoTheOverallRange) {
     auto [progress, calls] = recording();
-    const dtm::Progress reading = progress.sub(0.2, 0.6);  // [0.2, 0.6]
+    const dtm::Progress reading = progress.sub(0.2, 0.6);     // [0.2, 0.6]
     const dtm::Progress second_file = reading.sub(0.5, 1.0);  // [0.4, 0.6]
     const dtm::Progress block = second_file.sub(0.25, 0.75);  // [0.45, 0.55]
     block.report(0.0, "a");
@@ -92,8 +86,7 @@ TEST(Progress, SubRangesNestAndMapOntoTheOverallRange)
     EXPECT_NEAR((*calls)[3].fraction, 0.20, 1e-12);
 }
 
-TEST(Progress, CallbackReturningFalseCancelsEveryHolder)
-{
+TEST(Progress, CallbackReturningFalseCancelsEveryHolder) {
     auto [progress, calls] = recording(false);
     const dtm::Progress child = progress.sub(0.5, 1.0);
     EXPECT_THROW(child.report(0.1, "x"), dtm::Cancelled);
@@ -101,8 +94,7 @@ TEST(Progress, CallbackReturningFalseCancelsEveryHolder)
     EXPECT_THROW(child.sub(0.0, 0.1).check(), dtm::Cancelled);
 }
 
-TEST(Progress, CancelFromAnotherThreadStopsAWorkerAtItsNextCheck)
-{
+TEST(Progress, CancelFromAnotherThreadStopsAWorkerAtItsNextCheck) {
     auto [progress, calls] = recording();
     std::atomic<bool> started{false};
     std::atomic<bool> stopped{false};
@@ -124,8 +116,7 @@ TEST(Progress, CancelFromAnotherThreadStopsAWorkerAtItsNextCheck)
     EXPECT_THROW(progress.report(1.0, "after"), dtm::Cancelled);
 }
 
-TEST(Progress, ReportsFromManyThreadsAreSerialised)
-{
+TEST(Progress, ReportsFromManyThreadsAreSerialised) {
     std::atomic<int> inside{0};
     std::atomic<int> overlap{0};
     std::atomic<int> count{0};

@@ -2,6 +2,8 @@
 #include "dtm/io/atomic_file.hpp"
 
 #include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -151,8 +153,7 @@ TEST(AtomicDirectory, StagingIsAHiddenSiblingAndTheTargetAppearsOnlyOnCommit) {
     dtm::io::AtomicDirectory out(dir / "products/");
     EXPECT_EQ(out.target(), dir / "products");
     EXPECT_EQ(out.staging().parent_path(), dir.path());
-    EXPECT_TRUE(out.staging().filename().string().starts_with(".products.tmp-"))
-        << out.staging();
+    EXPECT_TRUE(out.staging().filename().string().starts_with(".products.tmp-")) << out.staging();
     write_file(out.add("a.txt"), "a");
     write_file(out.add("b.txt"), "b");
     EXPECT_FALSE(fs::exists(dir / "products")) << "target created before commit";
@@ -209,6 +210,22 @@ TEST(AtomicDirectory, NamesAreRecordedOnceInOrderAndCompanionsStayBehind) {
     EXPECT_EQ(names_in(dir.path()), std::vector<std::string>{"out"});
 }
 
+TEST(AtomicDirectory, FilesInASubfolderMoveWithItAndReplaceTheOldSubfolder) {
+    const ScratchDir dir;
+    fs::create_directories(dir / "out" / "volume");
+    write_file(dir / "out" / "volume" / "old.json", "old");
+    {
+        dtm::io::AtomicDirectory out(dir / "out");
+        fs::create_directory(out.staging() / "volume");
+        write_file(out.add("volume/volume.json"), "new");
+        write_file(out.add("a.txt"), "a");
+        out.commit();
+    }
+    EXPECT_EQ(names_in(dir / "out"), (std::vector<std::string>{"a.txt", "volume"}));
+    EXPECT_EQ(names_in(dir / "out" / "volume"), std::vector<std::string>{"volume.json"});
+    EXPECT_EQ(read_file(dir / "out" / "volume" / "volume.json"), "new");
+}
+
 TEST(AtomicDirectory, MissingFileFailsTheCommit) {
     const ScratchDir dir;
     dtm::io::AtomicDirectory out(dir / "out");
@@ -229,4 +246,85 @@ TEST(AtomicDirectory, TwoStagingsForTheSameTargetAreDistinct) {
     const dtm::io::AtomicDirectory first(dir / "out");
     const dtm::io::AtomicDirectory second(dir / "out");
     EXPECT_NE(first.staging(), second.staging());
+}
+
+// The one-step switch and the recovery rule of the rename-pair fallback
+// (src/io/atomic_directory.cpp); tests/crash/build_kill_check.py kills real builds.
+TEST(AtomicDirectory, TheTargetIsSwappedWholeKeepingOtherFilesAndFolders) {
+    const ScratchDir dir;
+    fs::create_directories(dir / "out" / "mine");
+    write_file(dir / "out" / "a.txt", "old a");
+    write_file(dir / "out" / "mine" / "notes.txt", "notes");
+    const auto inode = fs::hard_link_count(dir / "out" / "mine" / "notes.txt");
+    {
+        dtm::io::AtomicDirectory out(dir / "out");
+        write_file(out.add("a.txt"), "new a");
+        write_file(out.add("b.txt"), "new b");
+        out.commit();
+    }
+    EXPECT_EQ(names_in(dir / "out"), (std::vector<std::string>{"a.txt", "b.txt", "mine"}));
+    EXPECT_EQ(read_file(dir / "out" / "a.txt"), "new a");
+    EXPECT_EQ(read_file(dir / "out" / "mine" / "notes.txt"), "notes");
+    EXPECT_EQ(fs::hard_link_count(dir / "out" / "mine" / "notes.txt"), inode)
+        << "the old folder's link was not removed";
+    EXPECT_EQ(names_in(dir.path()), std::vector<std::string>{"out"});
+}
+
+TEST(AtomicDirectory, ASymlinkedTargetStaysASymlinkAndItsFolderIsSwapped) {
+    const ScratchDir dir;
+    fs::create_directories(dir / "real");
+    write_file(dir / "real" / "a.txt", "old");
+    fs::create_directory_symlink(dir / "real", dir / "link");
+    {
+        dtm::io::AtomicDirectory out(dir / "link");
+        write_file(out.add("a.txt"), "new");
+        out.commit();
+    }
+    EXPECT_TRUE(fs::is_symlink(dir / "link"));
+    EXPECT_EQ(read_file(dir / "real" / "a.txt"), "new");
+}
+
+TEST(RecoverDirectory, AMissingTargetGetsItsBackupBack) {
+    const ScratchDir dir;
+    fs::create_directories(dir / ".out.old");
+    write_file(dir / ".out.old" / "a.txt", "old");
+    EXPECT_TRUE(dtm::io::recover_directory(dir / "out"));
+    EXPECT_EQ(read_file(dir / "out" / "a.txt"), "old");
+    EXPECT_EQ(names_in(dir.path()), std::vector<std::string>{"out"});
+}
+
+TEST(RecoverDirectory, ABackupBesideTheTargetIsRemoved) {
+    const ScratchDir dir;
+    fs::create_directories(dir / ".out.old");
+    fs::create_directories(dir / "out");
+    write_file(dir / "out" / "a.txt", "new");
+    EXPECT_FALSE(dtm::io::recover_directory(dir / "out"));
+    EXPECT_EQ(names_in(dir.path()), std::vector<std::string>{"out"});
+    EXPECT_EQ(read_file(dir / "out" / "a.txt"), "new");
+}
+
+TEST(RecoverDirectory, StagingOfDeadProcessesIsRemovedAndOursIsKept) {
+    const ScratchDir dir;
+    const pid_t child = fork();
+    if (child == 0) _exit(0);
+    ASSERT_GT(child, 0);
+    waitpid(child, nullptr, 0);  // a pid that no longer runs
+    const std::string dead = ".out.tmp-" + std::to_string(child) + "-0";
+    fs::create_directories(dir / dead);
+    fs::create_directories(dir / (".other.tmp-" + std::to_string(child) + "-0"));
+    const dtm::io::AtomicDirectory live(dir / "out");
+    EXPECT_FALSE(fs::exists(dir / dead));
+    EXPECT_TRUE(fs::exists(live.staging()));
+    EXPECT_TRUE(fs::exists(dir / (".other.tmp-" + std::to_string(child) + "-0")))
+        << "another target's staging";
+}
+
+TEST(AtomicDirectory, TheConstructorAppliesTheRecoveryRule) {
+    const ScratchDir dir;
+    fs::create_directories(dir / ".out.old");
+    write_file(dir / ".out.old" / "a.txt", "old");
+    {
+        const dtm::io::AtomicDirectory out(dir / "out");  // destroyed without commit
+    }
+    EXPECT_EQ(read_file(dir / "out" / "a.txt"), "old");
 }

@@ -19,42 +19,38 @@ namespace {
 using dtm::io::InputRole;
 using dtm::io::LoadOptions;
 
-LoadOptions files(std::initializer_list<std::pair<std::filesystem::path, InputRole>> list)
-{
+LoadOptions files(std::initializer_list<std::pair<std::filesystem::path, InputRole>> list) {
     LoadOptions options;
     for (const auto& [path, role] : list) options.files.push_back({path, role});
     return options;
 }
 
-TEST(LoadInputs, CzechListWithCrs5514BecomesKrovakEastNorthWhateverTheColumnOrder)
-{
+TEST(LoadInputs, CzechListWithCrs5514BecomesKrovakEastNorthWhateverTheColumnOrder) {
     for (const char* name : {"readers/czech_list.csv", "readers/czech_list_xy.csv",
                              "readers/czech_list_noheader.txt"}) {
         LoadOptions options = files({{dtm::test::data_path(name), InputRole::points}});
         options.crs.default_crs = "EPSG:5514";
         const auto loaded = dtm::io::load_inputs(options);
         ASSERT_GE(loaded.terrain.points.size(), 3u) << name;
-        EXPECT_EQ(loaded.terrain.points[0], (dtm::Point3{-745123.45, -1045123.12, 312.45}))
-            << name;
+        EXPECT_EQ(loaded.terrain.points[0], (dtm::Point3{-745123.45, -1045123.12, 312.45})) << name;
         EXPECT_EQ(dtm::io::crs_label(loaded.crs_wkt), "EPSG:5514");
         EXPECT_EQ(loaded.summaries.at(0).crs, "EPSG:5514");
         EXPECT_EQ(loaded.summaries[0].bbox[0], -745130.10);  // in East-North too
     }
 }
 
-TEST(LoadInputs, TextFileTakesItsCrsFromASidecarPrj)
-{
+TEST(LoadInputs, TextFileTakesItsCrsFromASidecarPrj) {
     dtm::test::ScratchDir dir;
-    dtm::test::write_file(dir / "list.txt",
-                          dtm::test::read_file(dtm::test::data_path("readers/czech_list_noheader.txt")));
+    dtm::test::write_file(
+        dir / "list.txt",
+        dtm::test::read_file(dtm::test::data_path("readers/czech_list_noheader.txt")));
     dtm::test::write_file(dir / "list.prj", dtm::io::crs_to_wkt("EPSG:5514"));
     const auto loaded = dtm::io::load_inputs(files({{dir / "list.txt", InputRole::points}}));
     EXPECT_EQ(loaded.summaries.at(0).crs, "EPSG:5514");
     EXPECT_EQ(loaded.terrain.points.at(0), (dtm::Point3{-745123.45, -1045123.12, 312.45}));
 }
 
-TEST(LoadInputs, WithoutCrsCzechPositiveCoordinatesAreLeftAlone)
-{
+TEST(LoadInputs, WithoutCrsCzechPositiveCoordinatesAreLeftAlone) {
     const auto loaded = dtm::io::load_inputs(
         files({{dtm::test::data_path("readers/czech_list.csv"), InputRole::points}}));
     EXPECT_GT(loaded.terrain.points[0].x, 0.0);
@@ -63,8 +59,7 @@ TEST(LoadInputs, WithoutCrsCzechPositiveCoordinatesAreLeftAlone)
     EXPECT_EQ(loaded.labels.ids[0], "4001");
 }
 
-TEST(LoadInputs, LatLonIsProjectedToItsUtmZone)
-{
+TEST(LoadInputs, LatLonIsProjectedToItsUtmZone) {
     const auto loaded = dtm::io::load_inputs(
         files({{dtm::test::data_path("readers/gnss_latlon.csv"), InputRole::points}}));
     EXPECT_EQ(dtm::io::crs_label(loaded.crs_wkt), "EPSG:32633");
@@ -75,10 +70,9 @@ TEST(LoadInputs, LatLonIsProjectedToItsUtmZone)
     EXPECT_EQ(loaded.summaries[0].crs, "EPSG:4326");
 }
 
-TEST(LoadInputs, TargetCrsTransformsEveryInput)
-{
-    LoadOptions options = files({{dtm::test::data_path("readers/gnss_latlon.csv"),
-                                  InputRole::points}});
+TEST(LoadInputs, TargetCrsTransformsEveryInput) {
+    LoadOptions options =
+        files({{dtm::test::data_path("readers/gnss_latlon.csv"), InputRole::points}});
     options.crs.target_crs = "EPSG:32634";
     const auto loaded = dtm::io::load_inputs(options);
     EXPECT_EQ(dtm::io::crs_label(loaded.crs_wkt), "EPSG:32634");
@@ -87,9 +81,9 @@ TEST(LoadInputs, TargetCrsTransformsEveryInput)
 
 /// load_inputs(@p options) throws an OptionError naming @p field, its message starting with
 /// @p start.
-void expect_option_error(const LoadOptions& options, const std::string& field,
-                         const std::string& start)
-{
+void expect_option_error(const LoadOptions& options,
+                         const std::string& field,
+                         const std::string& start) {
     try {
         (void)dtm::io::load_inputs(options);
         ADD_FAILURE() << "no exception";
@@ -99,16 +93,14 @@ void expect_option_error(const LoadOptions& options, const std::string& field,
     }
 }
 
-TEST(LoadInputs, GeographicTargetCrsIsRefused)
-{
-    LoadOptions options = files({{dtm::test::data_path("readers/gnss_latlon.csv"),
-                                  InputRole::points}});
+TEST(LoadInputs, GeographicTargetCrsIsRefused) {
+    LoadOptions options =
+        files({{dtm::test::data_path("readers/gnss_latlon.csv"), InputRole::points}});
     options.crs.target_crs = "EPSG:4326";
     expect_option_error(options, "target_crs", "`target_crs`: expected a projected CRS");
 }
 
-TEST(LoadInputs, UnknownCrsIsAnOptionErrorNamingTheField)
-{
+TEST(LoadInputs, UnknownCrsIsAnOptionErrorNamingTheField) {
     dtm::test::ScratchDir dir;
     dtm::test::write_file(dir / "p.xyz", "1 2 3\n4 5 6\n7 9 10\n");
     LoadOptions options = files({{dir / "p.xyz", InputRole::points}});
@@ -116,8 +108,7 @@ TEST(LoadInputs, UnknownCrsIsAnOptionErrorNamingTheField)
     expect_option_error(options, "default_crs", "`default_crs`: expected a CRS");
 }
 
-TEST(LoadInputs, InputsInAnotherCrsGoIntoTheFirstOnes)
-{
+TEST(LoadInputs, InputsInAnotherCrsGoIntoTheFirstOnes) {
     dtm::test::ScratchDir dir;
     dtm::test::write_file(dir / "a.csv", "x,y,z\n458600,5548500,1\n458700,5548600,2\n");
     dtm::test::write_file(dir / "b.csv", "lat,lon,h\n50.0875,14.4214,3\n");
@@ -130,8 +121,7 @@ TEST(LoadInputs, InputsInAnotherCrsGoIntoTheFirstOnes)
     EXPECT_EQ(dtm::io::crs_label(loaded.crs_wkt), "EPSG:32633");
 }
 
-TEST(LoadInputs, LabelsStayParallelToThePointsWhicheverInputHasThem)
-{
+TEST(LoadInputs, LabelsStayParallelToThePointsWhicheverInputHasThem) {
     // The first input's arrays are taken over, the later ones appended.
     dtm::test::ScratchDir dir;
     dtm::test::write_file(dir / "plain.csv", "x,y,z\n1,2,3\n4,5,6\n");
@@ -153,8 +143,7 @@ TEST(LoadInputs, LabelsStayParallelToThePointsWhicheverInputHasThem)
     }
 }
 
-TEST(LoadInputs, LeavesMissingHeightsToTheTriangulator)
-{
+TEST(LoadInputs, LeavesMissingHeightsToTheTriangulator) {
     dtm::test::ScratchDir dir;
     dtm::test::write_file(dir / "p.csv", "0.5 0 1\n10.5 0 2\n10.5 10 3\n");
     dtm::test::write_file(dir / "l.csv", "1,0.5,0\n1,5.5,5\n");
@@ -168,8 +157,7 @@ TEST(LoadInputs, LeavesMissingHeightsToTheTriangulator)
     for (const auto& s : loaded.summaries) EXPECT_TRUE(s.warnings.empty());
 }
 
-TEST(LoadInputs, PlyTinInputSetsTinAndPoints)
-{
+TEST(LoadInputs, PlyTinInputSetsTinAndPoints) {
     dtm::test::ScratchDir dir;
     dtm::Tin tin;
     tin.vertices = {{0, 0, 1}, {10, 0, 2}, {0, 10, 3}};
@@ -184,8 +172,7 @@ TEST(LoadInputs, PlyTinInputSetsTinAndPoints)
     EXPECT_EQ(loaded.summaries[0].format, "dtm PLY TIN");
 }
 
-TEST(LoadInputs, UnknownExtensionListsTheKnownOnes)
-{
+TEST(LoadInputs, UnknownExtensionListsTheKnownOnes) {
     dtm::test::ScratchDir dir;
     dtm::test::write_file(dir / "a.foo", "1 2 3\n");
     try {
@@ -197,8 +184,7 @@ TEST(LoadInputs, UnknownExtensionListsTheKnownOnes)
     }
 }
 
-TEST(LoadInputs, SummaryCountsDuplicatesBboxAndSkippedLines)
-{
+TEST(LoadInputs, SummaryCountsDuplicatesBboxAndSkippedLines) {
     dtm::test::ScratchDir dir;
     dtm::test::write_file(dir / "p.csv", "x,y,z\n1,2,3\n1,2,4\n5,6,7\nbad,1,2\n");
     LoadOptions options = files({{dir / "p.csv", InputRole::points}});
@@ -213,8 +199,7 @@ TEST(LoadInputs, SummaryCountsDuplicatesBboxAndSkippedLines)
     EXPECT_EQ(s.z_range, (std::array<double, 2>{3, 7}));
 }
 
-TEST(LoadInputsRealData, HurdvilleSurveyWithBoundaryAndHoles)
-{
+TEST(LoadInputsRealData, HurdvilleSurveyWithBoundaryAndHoles) {
     const std::string d = "points-breaklines-pputils-hurdville/";
     if (!dtm::test::shared_data_available(d + "nodes.csv")) GTEST_SKIP();
     const auto p = [&](const char* f) { return dtm::test::shared_data_path(d + f); };
@@ -235,8 +220,7 @@ TEST(LoadInputsRealData, HurdvilleSurveyWithBoundaryAndHoles)
     }
 }
 
-TEST(LoadInputsRealData, JvfCsvWithShapefileCrs)
-{
+TEST(LoadInputsRealData, JvfCsvWithShapefileCrs) {
     const std::string d = "points-cz-sjtsk-jvf-dtm/derived/";
     if (!dtm::test::shared_data_available(d + "zps_points_xyz.csv")) GTEST_SKIP();
     const auto loaded = dtm::io::load_inputs(

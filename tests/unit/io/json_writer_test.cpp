@@ -12,8 +12,7 @@ namespace {
 using dtm::io::JsonWriter;
 using Layout = JsonWriter::Layout;
 
-TEST(JsonWriter, BlocksIndentTwoSpacesPerLevel)
-{
+TEST(JsonWriter, BlocksIndentTwoSpacesPerLevel) {
     JsonWriter json;
     json.begin_object();
     json.value("a", std::size_t{1});
@@ -23,11 +22,11 @@ TEST(JsonWriter, BlocksIndentTwoSpacesPerLevel)
     json.begin_array("empty");
     json.end();
     json.end();
-    EXPECT_EQ(json.str(), "{\n  \"a\": 1,\n  \"b\": {\n    \"c\": \"x\"\n  },\n  \"empty\": []\n}\n");
+    EXPECT_EQ(json.str(),
+              "{\n  \"a\": 1,\n  \"b\": {\n    \"c\": \"x\"\n  },\n  \"empty\": []\n}\n");
 }
 
-TEST(JsonWriter, InlineContainersStayOnOneLineInsideBlocks)
-{
+TEST(JsonWriter, InlineContainersStayOnOneLineInsideBlocks) {
     JsonWriter json;
     json.begin_object({}, Layout::inline_);
     json.begin_array("inputs");
@@ -48,8 +47,17 @@ TEST(JsonWriter, InlineContainersStayOnOneLineInsideBlocks)
               "  {\"n\": 1, \"xy\": [1.5, -2], \"crs\": null}\n]}\n");
 }
 
-TEST(JsonWriter, StringsAreEscapedAndNumbersReadBackExactly)
-{
+TEST(JsonWriter, BooleansAreJsonLiterals) {
+    JsonWriter json;
+    json.begin_array({}, Layout::inline_);
+    json.value({}, true);
+    json.value({}, false);
+    json.value({}, "true");
+    json.end();
+    EXPECT_EQ(json.str(), "[true, false, \"true\"]\n");
+}
+
+TEST(JsonWriter, StringsAreEscapedAndNumbersReadBackExactly) {
     EXPECT_EQ(dtm::io::json_string("a\"b\\c\nd\te\rf\x01"), "\"a\\\"b\\\\c\\nd\\te\\rf\\u0001\"");
     EXPECT_EQ(dtm::io::json_string("Příbram"), "\"Příbram\"");
     EXPECT_EQ(dtm::io::json_number(0.1), "0.1");

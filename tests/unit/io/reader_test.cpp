@@ -17,8 +17,7 @@ namespace {
 using dtm::io::find_reader;
 using dtm::io::InputRole;
 
-TEST(ReaderTable, ExtensionsChooseTheReaderInAnyCase)
-{
+TEST(ReaderTable, ExtensionsChooseTheReaderInAnyCase) {
     const dtm::test::ScratchDir dir;
     dtm::test::write_file(dir / "a.XYZ", "1 2 3\n");
     dtm::test::write_file(dir / "plan.PLT", "IN;");
@@ -28,15 +27,16 @@ TEST(ReaderTable, ExtensionsChooseTheReaderInAnyCase)
     EXPECT_EQ(find_reader(dtm::io::FileHead{"x.ply", "ply", {}}).name, "ply");
 }
 
-TEST(ReaderTable, TextWithAGeometryColumnGoesToOgrByItsContent)
-{
-    EXPECT_EQ(find_reader(dtm::io::FileHead{"a.csv", "csv", "id,WKT\n1,\"POINT Z (1 2 3)\"\n"}).name,
-              "csv-wkt");
+TEST(ReaderTable, TextWithAGeometryColumnGoesToOgrByItsContent) {
+    EXPECT_EQ(
+        find_reader(dtm::io::FileHead{"a.csv", "csv", "id,WKT\n1,\"POINT Z (1 2 3)\"\n"}).name,
+        "csv-wkt");
     EXPECT_EQ(find_reader(dtm::io::FileHead{"a.csv", "csv", "# note\nid;x;y;z\n1;2;3;4\n"}).name,
               "csv");
     const dtm::test::ScratchDir dir;
-    dtm::test::write_file(dir / "p.csv", "id,wkt\n1,\"POINT Z (10 20 30)\"\n2,\"POINT Z (11 20 31)\"\n"
-                                         "3,\"POINT Z (10 21 32)\"\n");
+    dtm::test::write_file(dir / "p.csv",
+                          "id,wkt\n1,\"POINT Z (10 20 30)\"\n2,\"POINT Z (11 20 31)\"\n"
+                          "3,\"POINT Z (10 21 32)\"\n");
     dtm::io::LoadOptions options;
     options.files.push_back({dir / "p.csv", InputRole::points});
     const dtm::io::LoadedInputs loaded = dtm::io::load_inputs(options);
@@ -45,8 +45,7 @@ TEST(ReaderTable, TextWithAGeometryColumnGoesToOgrByItsContent)
     EXPECT_EQ(loaded.terrain.points[2].z, 32.0);
 }
 
-TEST(ReaderTable, APlyTinComesThroughTheTableAsATin)
-{
+TEST(ReaderTable, APlyTinComesThroughTheTableAsATin) {
     const dtm::test::ScratchDir dir;
     dtm::Tin tin;
     tin.vertices = {{0, 0, 1}, {10, 0, 2}, {0, 10, 3}};
@@ -58,12 +57,12 @@ TEST(ReaderTable, APlyTinComesThroughTheTableAsATin)
     ASSERT_TRUE(r.tin.has_value());
     EXPECT_EQ(r.tin->triangles.size(), 1u);
     EXPECT_EQ(r.terrain.points.size(), 3u);
-    EXPECT_THROW((void)find_reader(dir / "t.ply").read({dir / "t.ply", InputRole::breaklines}, {}, {}),
-                 dtm::InputError);
+    EXPECT_THROW(
+        (void)find_reader(dir / "t.ply").read({dir / "t.ply", InputRole::breaklines}, {}, {}),
+        dtm::InputError);
 }
 
-TEST(ReaderTable, EveryRowHasAReaderAndExtensionsOrASniff)
-{
+TEST(ReaderTable, EveryRowHasAReaderAndExtensionsOrASniff) {
     for (const dtm::io::ReaderInfo& r : dtm::io::readers()) {
         EXPECT_NE(r.read, nullptr) << r.name;
         EXPECT_TRUE(!r.extensions.empty() || r.sniff != nullptr) << r.name;
@@ -71,14 +70,14 @@ TEST(ReaderTable, EveryRowHasAReaderAndExtensionsOrASniff)
     }
 }
 
-TEST(ReaderTable, UnknownExtensionIsAnInputErrorListingTheKnownOnesOnce)
-{
+TEST(ReaderTable, UnknownExtensionIsAnInputErrorListingTheKnownOnesOnce) {
     try {
         (void)find_reader(dtm::io::FileHead{"a.foo", "foo", {}});
         FAIL() << "no exception";
     } catch (const dtm::InputError& e) {
         const std::string what = e.what();
-        EXPECT_NE(what.find("(ply, csv, txt, xyz, pts, asc, hpgl,"), std::string::npos) << what;
+        EXPECT_NE(what.find("(ply, asc, csv, txt, xyz, pts, xml, hpgl,"), std::string::npos)
+            << what;
         EXPECT_EQ(what.find("csv"), what.rfind("csv")) << what;
         EXPECT_NE(what.find("found '.foo'"), std::string::npos) << what;
     }

@@ -89,13 +89,17 @@ inline std::size_t boundary_edge_count(const Tin& tin) {
     return count;
 }
 
-/// @p tin is a Delaunay triangulation of @p input: see the file comment.
-inline ::testing::AssertionResult is_delaunay_triangulation(const Tin& tin,
-                                                            std::span<const Point3> input) {
+/// @p tin is a triangulation of @p input (see the file comment), and a Delaunay one when
+/// @p delaunay is set.
+inline ::testing::AssertionResult is_triangulation_of(const Tin& tin,
+                                                      std::span<const Point3> input,
+                                                      bool delaunay) {
     const CheckReport topo = verify_topology(tin);
     if (!topo.ok()) return ::testing::AssertionFailure() << "topology: " << topo.text();
-    const CheckReport del = verify_constrained_delaunay(tin);
-    if (!del.ok()) return ::testing::AssertionFailure() << "Delaunay: " << del.text();
+    if (delaunay) {
+        const CheckReport del = verify_constrained_delaunay(tin);
+        if (!del.ok()) return ::testing::AssertionFailure() << "Delaunay: " << del.text();
+    }
     const std::vector<Point3> expected = distinct_points(input);
     if (tin.vertices.size() != expected.size()) {
         return ::testing::AssertionFailure() << tin.vertices.size() << " vertices, expected "
@@ -173,6 +177,18 @@ inline ::testing::AssertionResult is_delaunay_triangulation(const Tin& tin,
                << uses.size() << " edges, expected 3n - 3 - h = " << 3 * n - 3 - h;
     }
     return ::testing::AssertionSuccess();
+}
+
+/// @p tin is a Delaunay triangulation of @p input: see the file comment.
+inline ::testing::AssertionResult is_delaunay_triangulation(const Tin& tin,
+                                                            std::span<const Point3> input) {
+    return is_triangulation_of(tin, input, true);
+}
+
+/// @p tin is a triangulation of @p input (any triangulation of the convex hull with every
+/// distinct point a vertex): greedy, monotone, optimised ones.
+inline ::testing::AssertionResult is_triangulation(const Tin& tin, std::span<const Point3> input) {
+    return is_triangulation_of(tin, input, false);
 }
 
 /// Every interior edge is strictly locally Delaunay: no four cocircular points decide the

@@ -52,7 +52,8 @@ TEST(Report, IsValidJsonWithEscapedStrings) {
 }
 
 TEST(Report, PointAccountingAddsUpToEveryInputRecord) {
-    const CPLJSONObject points = parse(dtm::products::report_json(sample_report())).GetObj("points");
+    const CPLJSONObject points =
+        parse(dtm::products::report_json(sample_report())).GetObj("points");
     EXPECT_EQ(points.GetObj("survey_points").GetLong("merged_duplicates"), 2);
     EXPECT_EQ(points.GetObj("survey_points").GetLong("outside_boundary_or_in_hole"), 1);
     EXPECT_EQ(points.GetLong("skipped_bad_lines"), 2);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // products::surface: a TIN input is used as it is; terrain is triangulated, with the note on
-// the inputs whose rings took the surface height; and the default cell and interval rules.
+// the inputs whose rings took the surface height; contour input loses its flat triangles by
+// default (and keeps them when asked); and the default cell and interval rules.
 #include "dtm/products/surface.hpp"
 
 #include <gtest/gtest.h>
@@ -9,11 +10,11 @@
 #include <limits>
 
 #include "dtm/products/rules.hpp"
+#include "support/contour_terrain.hpp"
 
 namespace {
 
-dtm::io::LoadedInputs plane_inputs()
-{
+dtm::io::LoadedInputs plane_inputs() {
     dtm::io::LoadedInputs in;
     in.terrain.points = {{0, 0, 0}, {100, 0, 100}, {100, 100, 300}, {0, 100, 200}, {50, 50, 150}};
     in.summaries.resize(2);
@@ -21,8 +22,7 @@ dtm::io::LoadedInputs plane_inputs()
     return in;
 }
 
-TEST(Surface, TinInputIsUsedAsItIs)
-{
+TEST(Surface, TinInputIsUsedAsItIs) {
     dtm::io::LoadedInputs in;
     dtm::Tin tin;
     tin.vertices = {{0, 0, 1}, {10, 0, 2}, {0, 10, 3}};
@@ -38,8 +38,7 @@ TEST(Surface, TinInputIsUsedAsItIs)
     EXPECT_EQ(s.result.input_to_vertex, (std::vector<dtm::VertexIndex>{0, 1, 2}));
 }
 
-TEST(Surface, TerrainIsTriangulatedAndRingsFromTheSurfaceAreNoted)
-{
+TEST(Surface, TerrainIsTriangulatedAndRingsFromTheSurfaceAreNoted) {
     dtm::io::LoadedInputs in = plane_inputs();
     dtm::Polyline ring;
     const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -58,8 +57,82 @@ TEST(Surface, TerrainIsTriangulatedAndRingsFromTheSurfaceAreNoted)
               "4 boundary/hole vertices without height took the height of the surface");
 }
 
-TEST(Rules, NiceNumbersAreOneTwoTwoAndAHalfOrFiveTimesAPowerOfTen)
-{
+dtm::io::LoadedInputs contour_inputs(const dtm::TerrainInput& terrain) {
+    dtm::io::LoadedInputs in;
+    in.terrain = terrain;
+    in.summaries.resize(1);
+    in.summaries[0].path = "contours.shp";
+    in.summaries[0].breaklines = terrain.breaklines.size();
+    return in;
+}
+
+TEST(Surface, ContourInputLosesItsFlatTrianglesByDefault) {
+    const dtm::TerrainInput terrain = dtm::test::contour_terrain_input(5.0, 2.0);
+    const std::size_t flat_as_given = dtm::count_flat_triangles(dtm::triangulate(terrain).tin);
+    dtm::products::SurfaceOptions options;
+    options.lines_are_contours = true;
+    dtm::io::LoadedInputs in = contour_inputs(terrain);
+    const dtm::products::Surface s = dtm::products::surface(in, options);
+    EXPECT_TRUE(s.contour_input);
+    ASSERT_TRUE(s.contour_flats.has_value());
+    EXPECT_EQ(s.contour_flats->flat_before, flat_as_given);
+    EXPECT_GT(flat_as_given, s.result.tin.triangles.size() / 20) << "the fixture is terraced";
+    EXPECT_EQ(s.contour_flats->flat_after, dtm::count_flat_triangles(s.result.tin));
+    EXPECT_LT(20 * s.contour_flats->flat_after, s.result.tin.triangles.size());
+    EXPECT_EQ(s.added_points.size(), s.contour_flats->points_added);
+    EXPECT_GT(s.added_points.size(), 0u);
+    EXPECT_EQ(s.survey_points, 0u) << "the added points are not survey points";
+
+    options.contour_flats = dtm::products::ContourFlats::keep;
+    dtm::io::LoadedInputs kept = contour_inputs(terrain);
+    const dtm::products::Surface k = dtm::products::surface(kept, options);
+    EXPECT_TRUE(k.contour_input);
+    EXPECT_FALSE(k.contour_flats.has_value());
+    EXPECT_EQ(dtm::count_flat_triangles(k.result.tin), flat_as_given);
+
+    dtm::io::LoadedInputs plain = contour_inputs(terrain);
+    const dtm::products::Surface p = dtm::products::surface(plain, dtm::TriangulateOptions{});
+    EXPECT_FALSE(p.contour_input) << "lines without z_field heights are breaklines";
+    EXPECT_FALSE(p.contour_flats.has_value());
+}
+
+TEST(Surface, FlatAreaInputsOutlineRealFlats) {
+    // a lake: a closed 5 m-level ring inside the 5 m contour ring and no point inside it
+    dtm::TerrainInput terrain;
+    for (int k = 0; k < 24; ++k) {
+        const double a = 2.0 * M_PI * k / 24.0;
+        terrain.points.push_back({50 + 45 * std::cos(a), 50 + 45 * std::sin(a), 0.0});
+    }
+    dtm::Polyline ring;
+    ring.closed = true;
+    for (int k = 0; k < 24; ++k) {
+        const double a = 2.0 * M_PI * k / 24.0;
+        ring.points.push_back({50 + 20 * std::cos(a), 50 + 20 * std::sin(a), 5.0});
+    }
+    terrain.breaklines.push_back(ring);
+    dtm::io::LoadedInputs in;
+    in.terrain = terrain;
+    in.summaries.resize(2);
+    in.summaries[0].points = terrain.points.size();
+    in.summaries[1].path = "lake.shp";
+    in.summaries[1].breaklines = 1;
+    dtm::products::SurfaceOptions options;
+    options.lines_are_contours = true;
+    options.flat_areas = {"lake.shp"};
+    const dtm::products::Surface lake = dtm::products::surface(in, options);
+    ASSERT_TRUE(lake.contour_flats.has_value());
+    EXPECT_EQ(lake.contour_flats->true_flats, 1u);
+    EXPECT_TRUE(lake.contour_flats->peaks.empty()) << "a lake gets no summit";
+    EXPECT_GT(dtm::count_flat_triangles(lake.result.tin), 0u);
+
+    in.terrain = terrain;
+    options.flat_areas.clear();
+    const dtm::products::Surface hill = dtm::products::surface(in, options);
+    ASSERT_TRUE(hill.contour_flats.has_value());
+    EXPECT_EQ(hill.contour_flats->peaks.size(), 1u) << "without the outline it is a summit";
+}
+
+TEST(Rules, NiceNumbersAreOneTwoTwoAndAHalfOrFiveTimesAPowerOfTen) {
     using dtm::products::nice_floor;
     using dtm::products::nice_next;
     EXPECT_DOUBLE_EQ(nice_floor(0.37), 0.25);
@@ -73,8 +146,7 @@ TEST(Rules, NiceNumbersAreOneTwoTwoAndAHalfOrFiveTimesAPowerOfTen)
     EXPECT_DOUBLE_EQ(nice_next(5.0), 10.0);
 }
 
-TEST(Rules, DefaultCellIsHalfThePointSpacingAndCapsTheCellCount)
-{
+TEST(Rules, DefaultCellIsHalfThePointSpacingAndCapsTheCellCount) {
     dtm::SurfaceStats s;
     s.vertex_count = 10'000;
     s.planimetric_area = 1e6;  // spacing 10: cell 5
@@ -87,8 +159,7 @@ TEST(Rules, DefaultCellIsHalfThePointSpacingAndCapsTheCellCount)
     EXPECT_DOUBLE_EQ(cell, 0.2);
 }
 
-TEST(Rules, DefaultIntervalGivesAboutTwentyLevels)
-{
+TEST(Rules, DefaultIntervalGivesAboutTwentyLevels) {
     dtm::SurfaceStats s;
     s.z_min = 310.38;
     s.z_max = 331.76;  // range 21.38: 1.069 -> 1

@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: MIT
 /// @file
-/// @brief Contour lines traced exactly on the TIN and streamed to a sink.
+/// @brief Contour lines traced exactly on the TIN (or on its cubic or natural-neighbour surface)
+/// and streamed to a sink.
 #pragma once
 
 #include <cstddef>
 #include <span>
 #include <vector>
 
+#include "dtm/algo/interpolation.hpp"
 #include "dtm/core/contour.hpp"
 #include "dtm/core/progress.hpp"
 #include "dtm/core/tin.hpp"
@@ -24,6 +26,15 @@ struct ContourOptions {
     /// crosses, so lines still never cross; smoothed vertices are not on TIN edges any more.
     unsigned smooth = 0;
     unsigned threads = 0;  ///< worker threads (0: all cores); never changes the result
+    /// The surface the lines follow. linear: traced exactly on the TIN's triangles. cubic,
+    /// natural: traced exactly on a fine linear sampling of that surface, each triangle cut
+    /// into its three Clough-Tocher sub-triangles and each of those into subdivisions^2 pieces
+    /// whose corners lie on the surface; the lines are smooth (and, being traced on one
+    /// consistent triangulation, still continuous, closed where the surface's level set is
+    /// closed, and never crossing). Ignored by the overload that takes a TinInterpolant.
+    Interpolation surface = Interpolation::linear;
+    unsigned subdivisions = 4;    ///< for cubic and natural (at least 1)
+    GradientOptions gradients{};  ///< for cubic
 };
 
 /// Receives finished contour lines, level by level in increasing order, from one thread at a
@@ -48,6 +59,15 @@ public:
 /// doubled pieces), the output point stays exactly on the vertex; zero-length parts are dropped.
 /// @throws UsageError (see contour_levels); Cancelled
 void contour(const Tin& tin,
+             const ContourOptions& options,
+             ContourSink& sink,
+             const Progress& progress = {});
+
+/// Same, on a prepared interpolant of @p tin (options.surface is ignored; a linear interpolant
+/// traces the TIN itself). Memory: the refinement of the triangles crossed by a batch of
+/// levels, a few million sub-triangles at most at a time.
+void contour(const Tin& tin,
+             const TinInterpolant& interpolant,
              const ContourOptions& options,
              ContourSink& sink,
              const Progress& progress = {});

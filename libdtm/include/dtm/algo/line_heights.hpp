@@ -35,7 +35,8 @@ struct LineHeightReport {
 /// @throws InputError a hard breakline vertex is left without a height (naming the line's
 /// source and the vertex), or rings need the surface and there are fewer than 3 survey points;
 /// Cancelled.
-LineHeightReport resolve_line_heights(TerrainInput& input, const LineHeightOptions& options = {},
+LineHeightReport resolve_line_heights(TerrainInput& input,
+                                      const LineHeightOptions& options = {},
                                       const Progress& progress = {});
 
 }  // namespace dtm

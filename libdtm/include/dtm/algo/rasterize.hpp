@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: MIT
 /// @file
-/// @brief TIN to DEM: linear interpolation on the triangles, sampled at cell centres, streamed in
-/// row bands to a sink so that a big raster never sits in memory at once.
+/// @brief TIN to DEM: the TIN surface (linear, cubic or natural neighbour) sampled at cell
+/// centres, streamed in row bands to a sink so that a big raster never sits in memory at once.
 #pragma once
 
 #include <cstddef>
 #include <span>
 
+#include "dtm/algo/interpolation.hpp"
 #include "dtm/core/grid.hpp"
 #include "dtm/core/progress.hpp"
 #include "dtm/core/tin.hpp"
@@ -19,6 +20,10 @@ struct RasterizeOptions {
     /// (2 x threads + 1) bands of Float32.
     std::size_t band_rows = 0;
     unsigned threads = 0;  ///< worker threads (0: all cores); never changes the result
+    /// The surface sampled (see interpolation.hpp); ignored by the overload that takes a
+    /// prepared TinInterpolant.
+    Interpolation interpolation = Interpolation::linear;
+    GradientOptions gradients{};  ///< for Interpolation::cubic
 };
 
 /// Receives the raster in consecutive bands of whole rows, north to south, from one thread at a
@@ -35,14 +40,25 @@ public:
 };
 
 /// Samples the TIN surface at every cell centre of @p spec and streams the rows to @p sink.
-/// A centre inside a triangle (or on its edge) gets the linear interpolation of the triangle's
-/// vertex heights; a centre outside every triangle (outside the hull, the boundary, in a hole)
-/// gets options.nodata. Inside tests are exact (orient2d); a centre on an edge shared by two
-/// triangles is assigned to exactly one of them and gets the same value from either.
+/// A centre inside a triangle (or on its edge) gets the surface's height there (linear: the
+/// plane of the triangle's vertices); a centre outside every triangle (outside the hull, the
+/// boundary, in a hole) gets options.nodata. Inside tests are exact (orient2d); a centre on an
+/// edge shared by two triangles is assigned to exactly one of them and gets the same value from
+/// either (linear and cubic: the edge's own curve, evaluated from its lower-numbered vertex); a
+/// centre on a vertex gets the vertex height.
 /// Bands are computed in parallel and handed to the sink in order. Memory: the bands in flight
 /// plus a copy of the TIN with its vertices renumbered in first-use order (cache-friendly reads).
 /// @throws Cancelled
 void rasterize(const Tin& tin,
+               const GridSpec& spec,
+               const RasterizeOptions& options,
+               GridSink& sink,
+               const Progress& progress = {});
+
+/// Same, sampling a prepared interpolant of @p tin (options.interpolation is ignored), so that
+/// a DEM and contours can share one gradient estimate.
+void rasterize(const Tin& tin,
+               const TinInterpolant& interpolant,
                const GridSpec& spec,
                const RasterizeOptions& options,
                GridSink& sink,

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "dtm/algo/line_heights.hpp"
+#include "dtm/algo/optimize.hpp"
 #include "dtm/core/point.hpp"
 #include "dtm/core/progress.hpp"
 #include "dtm/core/terrain.hpp"
@@ -33,6 +34,9 @@ struct TriangulateOptions {
     /// Number of tiles for the parallel divide and conquer (0: automatic). The result never
     /// depends on it.
     std::size_t tiles = 0;
+    /// After the constrained Delaunay TIN, Lawson flips under this criterion (optimize.hpp;
+    /// constrained edges never flip). delaunay (default): none.
+    Criterion optimize = Criterion::delaunay;
 };
 
 /// One merge of input points that share a position (or lie within snap_distance).
@@ -58,6 +62,8 @@ struct TriangulateStats {
     std::size_t removed_triangles = 0;  ///< outside the boundary, in holes, or trimmed
     double seconds_triangulate = 0.0;
     double seconds_constrain = 0.0;
+    /// What TriangulateOptions::optimize did (flips, quality before and after, seconds).
+    OptimizeStats optimize;
 };
 
 struct TriangulateResult {
@@ -78,7 +84,9 @@ struct TriangulateResult {
 /// @throws InputError fewer than 3 distinct points, all points collinear, an open boundary, a
 /// hard breakline vertex without a height, ...
 /// @throws Cancelled when @p progress asks to stop.
-/// @post verify_topology, verify_constrained_delaunay and verify_constraints hold on the result.
+/// @post verify_topology and verify_constraints hold on the result; so does
+/// verify_constrained_delaunay when options.optimize is delaunay, and otherwise every
+/// unconstrained edge is locally optimal under the criterion (count_improvable_edges is 0).
 [[nodiscard]] TriangulateResult triangulate(const TerrainInput& input,
                                             const TriangulateOptions& options = {},
                                             const Progress& progress = {});

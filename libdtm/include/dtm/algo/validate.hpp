@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "dtm/algo/criteria.hpp"
 #include "dtm/core/terrain.hpp"
 #include "dtm/core/tin.hpp"
 
@@ -31,11 +32,21 @@ struct CheckReport {
 /// present as a chain of constrained TIN edges along it: through vertices exactly on it (or
 /// within rounding of it, 1 um + 1e-9 of its length, where crossings split it) and vertices
 /// added at crossings. A segment that leaves the surface (an end beyond the boundary or in a
-/// hole, or on its way out through the boundary and back) is required only where it lies on it. Polyline vertices are found by position,
-/// or through @p input_to_vertex (TriangulateResult::input_to_vertex) when given, which is needed
-/// when points were snapped.
-[[nodiscard]] CheckReport verify_constraints(const Tin& tin, const TerrainInput& input,
+/// hole, or on its way out through the boundary and back) is required only where it lies on it.
+/// Polyline vertices are found by position, or through @p input_to_vertex
+/// (TriangulateResult::input_to_vertex) when given, which is needed when points were snapped.
+[[nodiscard]] CheckReport verify_constraints(const Tin& tin,
+                                             const TerrainInput& input,
                                              std::span<const VertexIndex> input_to_vertex = {});
+
+/// The whole check of a TIN made from @p input (`dtm tin --check`): verify_topology, then the
+/// exact constrained Delaunay property, or for a TIN optimised under another @p criterion local
+/// optimality of every unconstrained edge (the first five offenders listed), then
+/// verify_constraints; the problems of all three in that order.
+[[nodiscard]] CheckReport verify_tin(const Tin& tin,
+                                     const TerrainInput& input,
+                                     std::span<const VertexIndex> input_to_vertex,
+                                     Criterion criterion = Criterion::delaunay);
 
 /// Sum of triangle areas in xy (compensated summation).
 [[nodiscard]] double tin_area(const Tin& tin);

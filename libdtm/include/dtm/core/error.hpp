@@ -42,7 +42,9 @@ private:
 /// applies, the 1-based line and column (0 = not applicable).
 class InputError : public Error {
 public:
-    InputError(std::filesystem::path file, std::size_t line, std::size_t column,
+    InputError(std::filesystem::path file,
+               std::size_t line,
+               std::size_t column,
                const std::string& what);
     /// An input problem not tied to one file (for example: all points collinear).
     explicit InputError(const std::string& what);

@@ -30,16 +30,14 @@ struct Box2 {
     double ymax = -std::numeric_limits<double>::infinity();
 
     [[nodiscard]] bool empty() const noexcept { return xmin > xmax || ymin > ymax; }
-    void add(double x, double y) noexcept
-    {
+    void add(double x, double y) noexcept {
         xmin = std::min(xmin, x);
         ymin = std::min(ymin, y);
         xmax = std::max(xmax, x);
         ymax = std::max(ymax, y);
     }
     template <class P>
-    void add(const P& p) noexcept
-    {
+    void add(const P& p) noexcept {
         add(p.x, p.y);
     }
 };

@@ -20,7 +20,8 @@ public:
     Progress() = default;
     explicit Progress(ProgressFn fn);
 
-    /// Report completion in [0, 1] of this handle's range. Throws Cancelled if the callback says stop.
+    /// Report completion in [0, 1] of this handle's range. Throws Cancelled if the callback says
+    /// stop.
     void report(double fraction, std::string_view what = {}) const;
     /// Throw Cancelled if cancellation was requested; cheap (no callback), for hot loops and tasks.
     void check() const;

@@ -34,13 +34,17 @@ struct Triangle {
 
 /// What a constrained edge came from. The values are those of the PLY `kind` byte and the VTK
 /// `constraint_kind` array (docs/formats.md).
-enum class ConstraintKind : std::uint8_t { breakline = 0, soft_breakline = 1, boundary = 2, hole = 3 };
+enum class ConstraintKind : std::uint8_t {
+    breakline = 0,
+    soft_breakline = 1,
+    boundary = 2,
+    hole = 3
+};
 inline constexpr unsigned constraint_kind_count = 4;
 
 /// The kind's bit in a set of kinds (1 << kind): the triangulator marks each edge with the set of
 /// every kind that runs along it.
-[[nodiscard]] constexpr std::uint8_t constraint_bit(ConstraintKind kind) noexcept
-{
+[[nodiscard]] constexpr std::uint8_t constraint_bit(ConstraintKind kind) noexcept {
     return static_cast<std::uint8_t>(1U << static_cast<unsigned>(kind));
 }
 
@@ -80,12 +84,10 @@ struct HalfEdge {
     friend bool operator==(const HalfEdge&, const HalfEdge&) = default;
 };
 
-[[nodiscard]] inline VertexIndex origin(const Tin& tin, HalfEdge e)
-{
+[[nodiscard]] inline VertexIndex origin(const Tin& tin, HalfEdge e) {
     return tin.triangles[e.triangle].v[(e.side + 1U) % 3U];
 }
-[[nodiscard]] inline VertexIndex destination(const Tin& tin, HalfEdge e)
-{
+[[nodiscard]] inline VertexIndex destination(const Tin& tin, HalfEdge e) {
     return tin.triangles[e.triangle].v[(e.side + 2U) % 3U];
 }
 /// The same edge seen from the triangle across it; triangle == no_triangle on the border.

@@ -33,15 +33,20 @@ private:
 };
 
 /// A folder of outputs written as a whole: every file goes into a hidden staging folder next to
-/// the target (".<target name>.tmp-<pid>-<n>"), and commit() moves them into the target folder
-/// (created if needed), replacing files of the same names and leaving other files there alone.
-/// Destroyed without commit(), the staging folder and everything in it are removed, so a failed
-/// or cancelled run leaves the target folder exactly as it was.
+/// the target (".<target name>.tmp-<pid>-<n>"); commit() carries the target's other files over
+/// (hard links), flushes everything to the disk and swaps the staging folder with the target in
+/// one atomic step (renameat2 RENAME_EXCHANGE), so at every instant the target holds either all
+/// the old files or all the new ones. Files of the same names are replaced, other files are kept.
+/// Where the file system cannot exchange (EINVAL, ENOSYS, EOPNOTSUPP) it falls back to a rename
+/// pair, target -> ".<target name>.old" then staging -> target, which a crash between the two
+/// leaves without a target: recover_directory() (run by the constructor, and by any reader that
+/// wants to) renames the backup back. Destroyed without commit(), the staging folder and
+/// everything in it are removed, so a failed or cancelled run leaves the target exactly as it was.
 class AtomicDirectory {
 public:
     /// @param target the final folder ("out" or "out/"). Creates its parent folders and the
-    /// staging folder. @throws UsageError if @p target exists and is not a folder; Error if the
-    /// staging folder cannot be created.
+    /// staging folder, after recover_directory(). @throws UsageError if @p target exists and is not
+    /// a folder; Error if the staging folder cannot be created.
     explicit AtomicDirectory(std::filesystem::path target);
     AtomicDirectory(const AtomicDirectory&) = delete;
     AtomicDirectory& operator=(const AtomicDirectory&) = delete;
@@ -57,8 +62,9 @@ public:
     [[nodiscard]] bool contains(const std::string& name) const noexcept;
     [[nodiscard]] const std::filesystem::path& staging() const noexcept { return staging_; }
     [[nodiscard]] const std::filesystem::path& target() const noexcept { return target_; }
-    /// Moves every recorded file into the target folder (renames within one file system) and
-    /// removes the staging folder. @throws Error if a file is missing or cannot be moved.
+    /// Swaps the staging folder (the recorded files and the target's other files) into place and
+    /// removes the old folder. Unrecorded files in the staging folder are dropped. @throws Error
+    /// if a file is missing, cannot be flushed to the disk (full disk) or cannot be moved.
     void commit();
 
 private:
@@ -67,5 +73,12 @@ private:
     std::vector<std::string> files_;
     bool committed_ = false;
 };
+
+/// The recovery rule of AtomicDirectory's fallback, for a later run or a reader: when @p target
+/// is missing and its backup ".<name>.old" exists (a crash between the two renames), the backup
+/// becomes the target again (the old products, complete); when both exist, the backup is
+/// removed. Also removes the staging folders of processes that no longer run. Returns true when
+/// it restored the backup. Never throws.
+bool recover_directory(const std::filesystem::path& target) noexcept;
 
 }  // namespace dtm::io

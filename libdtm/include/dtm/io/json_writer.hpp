@@ -27,9 +27,9 @@ public:
     void value(std::string_view key, double v);
     void value(std::string_view key, std::size_t v);
     void value(std::string_view key, std::string_view v);
+    void value(std::string_view key, bool v);
     void value(std::string_view key, const char* v) { value(key, std::string_view(v)); }
     void value(std::string_view key, const std::string& v) { value(key, std::string_view(v)); }
-    void boolean(std::string_view key, bool v);
     void null(std::string_view key);
 
     /// The document so far, with a final newline.

@@ -30,7 +30,8 @@ struct InputFile {
 
 /// What the readers take; each format reads the options it needs.
 struct ReadOptions {
-    bool skip_bad_lines = false;  ///< count malformed text lines (and HP-GL data) instead of failing
+    bool skip_bad_lines =
+        false;  ///< count malformed text lines (and HP-GL data) instead of failing
     /// Names of the text columns in order ("id,y,x,z,code"; "-" skips a column). Empty: map by
     /// header names, or guess (x,y,z) when there is no header.
     std::string columns;
@@ -38,6 +39,9 @@ struct ReadOptions {
     std::string where;    ///< OGR attribute filter (SQL WHERE clause)
     std::string z_field;  ///< OGR attribute holding the height (points, contours)
     HpglOptions hpgl;     ///< the HP-GL plan reader's
+    /// Surface files (LandXML, DXF 3DFACE): their points and breaklines instead of their TIN.
+    bool retriangulate = false;
+    std::string surface;  ///< LandXML: the surface of this name; empty = the first
 };
 
 /// What one input file held (the fields of `dtm info`).
@@ -45,7 +49,11 @@ struct InputSummary {
     std::filesystem::path path;
     std::string format;
     std::string crs;  ///< name or EPSG code as found, empty if none
+    /// How the CRS was identified when the file gave no EPSG code (io::identify_crs), e.g.
+    /// "EPSG:5514 identified from ESRI WKT ... (GDAL match confidence 90 %)"; empty otherwise.
+    std::string crs_note;
     std::size_t points = 0;
+    std::size_t triangles = 0;  ///< of a TIN input (kept as given), else 0
     std::size_t breaklines = 0;
     std::size_t breakline_vertices = 0;
     std::size_t boundaries = 0;
@@ -82,7 +90,8 @@ struct FileHead {
     std::string_view bytes;
 };
 
-using ReadFn = ReadResult (*)(const InputFile& file, const ReadOptions& options,
+using ReadFn = ReadResult (*)(const InputFile& file,
+                              const ReadOptions& options,
                               const Progress& progress);
 /// True if the reader takes a file that starts like @p head.
 using SniffFn = bool (*)(const FileHead& head);

@@ -27,5 +27,4 @@ void write_tin(const Tin& tin, const std::filesystem::path& path, const TinWrite
 /// Extensions write_tin() knows, lower case without the dot.
 [[nodiscard]] std::vector<std::string_view> tin_extensions();
 
-
 }  // namespace dtm::io

@@ -51,15 +51,19 @@ struct MethodOptions {
 
 /// A Voronoi diagram as a doubly connected edge list. Half-edge i and i^1 are twins. Vertex
 /// positions are computed (circumcentres, rounded to double); the topology is exact (decided by
-/// the predicates). A half-edge with no origin starts at infinity; its `direction` is then the
-/// direction towards its destination (unnormalised).
+/// the predicates). A half-edge with no origin starts at infinity: the unbounded edges (rays,
+/// and whole lines for collinear generators) have one or both ends there. The direction of a
+/// half-edge is rot90ccw(q - p) for p the generator of its face and q that of its twin's
+/// (dtm/methods/voronoi.hpp has it, and the validator). Where k > 3 generators are cocircular
+/// the diagram has one vertex of degree k (never zero-length edges). next of a half-edge that
+/// ends at infinity is the half-edge of the same face that comes back from infinity (the arc at
+/// infinity closes the cycle of an unbounded face).
 struct VoronoiDiagram {
     static constexpr std::uint32_t none = 0xffffffffu;
     struct HalfEdge {
         std::uint32_t origin = none;  ///< index into vertices, none = at infinity
         std::uint32_t next = none;    ///< next half-edge ccw around the same face
         std::uint32_t face = none;    ///< the generator (index into the input points) on its left
-        Point2 direction;             ///< for unbounded half-edges: direction along the edge
     };
     std::vector<Point2> vertices;
     std::vector<HalfEdge> half_edges;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "dtm/algo/check_points.hpp"
+#include "dtm/algo/interpolation.hpp"
 #include "dtm/core/progress.hpp"
 #include "dtm/products/surface_input.hpp"
 
@@ -19,8 +20,8 @@ struct CheckJob {
     SurfaceSource surface;
     std::filesystem::path points;
     io::LoadOptions point_reader;
-    std::string interpolation = "linear";  ///< how the surface is interpolated between vertices
-    std::filesystem::path stats;           ///< optional JSON file of the statistics
+    Interpolation interpolation = Interpolation::linear;  ///< the surface between the vertices
+    std::filesystem::path stats;                          ///< optional JSON file of the statistics
 };
 
 struct CheckReport {
@@ -29,10 +30,10 @@ struct CheckReport {
     std::vector<std::string> outside_ids;  ///< points outside the surface
 };
 
-/// The surface height interpolation named @p name over @p tin ("linear"; smoother ones plug in
-/// here). @throws UsageError for an unknown name.
-[[nodiscard]] std::unique_ptr<SurfaceHeight> make_surface_height(const std::string& name,
-                                                                 const Tin& tin);
+/// The heights of @p tin under @p interpolant (prepared for it): LinearSurface or
+/// InterpolatedSurface. Both must outlive the result.
+[[nodiscard]] std::unique_ptr<SurfaceHeight> make_surface_height(const Tin& tin,
+                                                                 const TinInterpolant& interpolant);
 
 /// Writes @p csv (id,x,y,z,surface_z,residual,status) atomically, and job.stats if set.
 CheckReport run_check(const CheckJob& job,

@@ -43,7 +43,7 @@ ProfileReport run_profile(const ProfileJob& job,
 
 /// Loads the surfaces of @p sources (all in the first one's CRS); @p names receives their names.
 std::vector<LoadedSurface> load_surfaces(const std::vector<SurfaceSource>& sources,
-                                   std::vector<std::string>& notes,
-                                   const Progress& progress);
+                                         std::vector<std::string>& notes,
+                                         const Progress& progress);
 
 }  // namespace dtm::products

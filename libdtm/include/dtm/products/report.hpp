@@ -7,12 +7,14 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "dtm/algo/contour_flats.hpp"
 #include "dtm/algo/surface_stats.hpp"
-#include "dtm/algo/volume.hpp"
 #include "dtm/algo/triangulate.hpp"
+#include "dtm/algo/volume.hpp"
 #include "dtm/core/grid.hpp"
 #include "dtm/io/inputs.hpp"
 
@@ -32,6 +34,9 @@ struct BuildReport {
     TriangulateStats triangulation;
     std::vector<ConstraintConflict> conflicts;
     SurfaceStats surface;
+    /// Set when the flat triangles of contour input were removed.
+    std::optional<ContourFlatsReport> contour_flats;
+    std::string interpolation = "linear";  ///< the surface of the DEM and the contours
     // the DEM (step "dem": dem.tif, hillshade.tif)
     GridSpec dem;
     std::string cell_rule;  ///< how the cell size was chosen (given, or the automatic rule)
@@ -41,6 +46,11 @@ struct BuildReport {
     std::string interval_rule;
     std::size_t contour_levels = 0;
     std::size_t contour_lines = 0;
+    // the map sheet (step "map": map.pdf)
+    double map_scale = 0.0;  ///< 1 : map_scale of map.pdf (0: no map)
+    std::size_t map_labels = 0;
+    std::size_t map_label_failures = 0;
+    std::size_t map_spot_heights = 0;
     // the volume against the base (step "volume": volume/), when one was given
     bool has_volume = false;
     VolumeResult volume;

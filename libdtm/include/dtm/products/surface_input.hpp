@@ -40,8 +40,8 @@ struct LoadedSurface {
 /// and the inputs carry another CRS, they are reprojected into it (and transformed_from says
 /// so). @throws InputError (file, line, feature) for unreadable inputs or an empty surface.
 [[nodiscard]] LoadedSurface load_surface(const SurfaceSource& source,
-                                   const std::string& crs_wkt = {},
-                                   const Progress& progress = {});
+                                         const std::string& crs_wkt = {},
+                                         const Progress& progress = {});
 
 /// Lines of a vector or text file (LineStrings, polygon rings, or HP-GL lines), each with its
 /// source ("file:feature N") for messages; heights may be NaN. Reprojected into @p crs_wkt when

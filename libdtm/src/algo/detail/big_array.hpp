@@ -31,11 +31,9 @@ struct BigArrayAllocator {
     BigArrayAllocator() noexcept = default;
     template <class U>
     BigArrayAllocator(const BigArrayAllocator<U>&) noexcept  // NOLINT(google-explicit-constructor)
-    {
-    }
+    {}
 
-    T* allocate(std::size_t n)
-    {
+    T* allocate(std::size_t n) {
         const std::size_t bytes = n * sizeof(T);
 #if defined(__linux__)
         if (bytes >= huge) {
@@ -55,19 +53,16 @@ struct BigArrayAllocator {
     /// not written once before its real contents (its pages are first touched where it is used,
     /// in parallel).
     template <class U>
-    void construct(U* p) noexcept(std::is_nothrow_default_constructible_v<U>)
-    {
+    void construct(U* p) noexcept(std::is_nothrow_default_constructible_v<U>) {
         ::new (static_cast<void*>(p)) U;
     }
     template <class U, class... Args>
-    void construct(U* p, Args&&... args)
-    {
+    void construct(U* p, Args&&... args) {
         ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
     }
 
     template <class U>
-    bool operator==(const BigArrayAllocator<U>&) const noexcept
-    {
+    bool operator==(const BigArrayAllocator<U>&) const noexcept {
         return true;
     }
 };
@@ -81,8 +76,7 @@ using BigArray = std::vector<T, BigArrayAllocator<T>>;
 /// 2 MiB pages for transparent huge pages: a large array then costs a few hundred page faults
 /// instead of one per 4 KiB.
 template <class T>
-void reserve_huge(std::vector<T>& v, std::size_t n)
-{
+void reserve_huge(std::vector<T>& v, std::size_t n) {
     v.reserve(n);
 #if defined(__linux__)
     constexpr std::uintptr_t huge = std::uintptr_t{2} << 20;
@@ -102,14 +96,12 @@ void reserve_huge(std::vector<T>& v, std::size_t n)
 /// they are spread over the threads this way. The kernel's 480 MB triangle array of 10^7 points,
 /// two threads: 0.65-0.69 s to resize without, 0.28-0.60 s with.
 template <class T>
-void prefault_in_parallel(std::vector<T>& v)
-{
+void prefault_in_parallel(std::vector<T>& v) {
     constexpr std::size_t page = 4096;
     auto* const begin = reinterpret_cast<unsigned char*>(v.data() + v.size());
     const std::size_t bytes = (v.capacity() - v.size()) * sizeof(T);
-    tbb::parallel_for(std::size_t{0}, (bytes + page - 1) / page, [&](std::size_t i) {
-        std::memset(begin + i * page, 0, 1);
-    });
+    tbb::parallel_for(std::size_t{0}, (bytes + page - 1) / page,
+                      [&](std::size_t i) { std::memset(begin + i * page, 0, 1); });
 }
 
 }  // namespace dtm::detail

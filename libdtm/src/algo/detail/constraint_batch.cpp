@@ -6,12 +6,12 @@
 // never meet a constrained edge of another segment while they are inserted, so the only way two
 // of them interact is through the triangles they cross. Each is planned on the current mesh
 // without changing it (the walk along the segment: crossed edges and cavity chains, see
-// mesh_edit_segment.cpp); every vertex whose ring a plan would change is reserved with the segment's
-// priority (its input index, by an atomic minimum); a plan that holds all its reservations is
-// applied, concurrently with the other winners, whose vertex sets are disjoint from it; the rest
-// try again in the next round on the updated mesh. A plan whose vertices are disjoint from every
-// earlier pending plan cannot be changed by them, so the result equals sequential insertion in
-// priority order whatever the schedule (Blelloch, Fineman, Gibbons, Shun, "Internally
+// mesh_edit_segment.cpp); every vertex whose ring a plan would change is reserved with the
+// segment's priority (its input index, by an atomic minimum); a plan that holds all its
+// reservations is applied, concurrently with the other winners, whose vertex sets are disjoint from
+// it; the rest try again in the next round on the updated mesh. A plan whose vertices are disjoint
+// from every earlier pending plan cannot be changed by them, so the result equals sequential
+// insertion in priority order whatever the schedule (Blelloch, Fineman, Gibbons, Shun, "Internally
 // deterministic parallel algorithms can be fast", PPoPP 2012). The priority order takes blocks of
 // nearby segments one after another and a fixed hash of the input index within a block, so the
 // mesh a window works on stays in the caches and polyline chains do not serialise the rounds.
@@ -37,16 +37,15 @@
 namespace dtm::detail {
 namespace {
 
-bool between(const Point2& a, const Point2& b, const Point2& q)
-{
+bool between(const Point2& a, const Point2& b, const Point2& q) {
     return std::min(a.x, b.x) <= q.x && q.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= q.y &&
            q.y <= std::max(a.y, b.y);
 }
 
 /// Segments s and t (kernel vertex ids) meet anywhere but at one shared endpoint.
-bool touch(const GhostMesh& m, const InputSegment& s, const InputSegment& t)
-{
-    const VertexId shared = s.a == t.a || s.a == t.b ? s.a : (s.b == t.a || s.b == t.b ? s.b : no_vertex);
+bool touch(const GhostMesh& m, const InputSegment& s, const InputSegment& t) {
+    const VertexId shared =
+        s.a == t.a || s.a == t.b ? s.a : (s.b == t.a || s.b == t.b ? s.b : no_vertex);
     if (shared != no_vertex) {
         if ((s.a == t.a && s.b == t.b) || (s.a == t.b && s.b == t.a)) return true;
         const VertexId x = s.a == shared ? s.b : s.a;
@@ -69,8 +68,8 @@ bool touch(const GhostMesh& m, const InputSegment& s, const InputSegment& t)
 
 }  // namespace
 
-std::vector<bool> find_free_segments(const GhostMesh& m, const std::vector<InputSegment>& segments)
-{
+std::vector<bool> find_free_segments(const GhostMesh& m,
+                                     const std::vector<InputSegment>& segments) {
     const std::size_t count = segments.size();
     std::vector<bool> free(count, true);
     if (count < 2) return free;
@@ -91,8 +90,8 @@ std::vector<bool> find_free_segments(const GhostMesh& m, const std::vector<Input
         total_length += (x1 - x0) + (y1 - y0);
     }
     const double extent = std::max(box.xmax - box.xmin, box.ymax - box.ymin);
-    const double cell = std::max({total_length / static_cast<double>(count), extent / 4096.0,
-                                  extent * 1e-12, 1e-300});
+    const double cell = std::max(
+        {total_length / static_cast<double>(count), extent / 4096.0, extent * 1e-12, 1e-300});
     const auto cols = static_cast<std::size_t>((box.xmax - box.xmin) / cell) + 1;
     const auto rows = static_cast<std::size_t>((box.ymax - box.ymin) / cell) + 1;
     const auto cell_of = [&](double v, double lo, std::size_t n) {
@@ -154,9 +153,9 @@ namespace {
 
 /// The indices of @p key in about ascending order of key: a counting sort on the keys' upper
 /// bits, at most 4096 buckets over the window's range (nearby is all the order is for).
-void order_by_key(const std::vector<std::uint32_t>& key, std::vector<std::uint32_t>& order,
-                  std::vector<std::uint32_t>& count)
-{
+void order_by_key(const std::vector<std::uint32_t>& key,
+                  std::vector<std::uint32_t>& order,
+                  std::vector<std::uint32_t>& count) {
     const auto [lo, hi] = std::minmax_element(key.begin(), key.end());
     const std::uint32_t min = key.empty() ? 0 : *lo;
     const std::uint32_t range = key.empty() ? 0 : *hi - min;
@@ -173,9 +172,10 @@ void order_by_key(const std::vector<std::uint32_t>& key, std::vector<std::uint32
 
 }  // namespace
 
-void insert_segments(MeshEditor& editor, const GhostMesh& mesh,
-                     const std::vector<InputSegment>& segments, const Progress& progress)
-{
+void insert_segments(MeshEditor& editor,
+                     const GhostMesh& mesh,
+                     const std::vector<InputSegment>& segments,
+                     const Progress& progress) {
     const std::vector<bool> free = find_free_segments(mesh, segments);
     std::vector<std::uint32_t> pending;
     std::vector<std::uint32_t> later;
@@ -294,7 +294,8 @@ void insert_segments(MeshEditor& editor, const GhostMesh& mesh,
                 }
             }
             first += window;
-            std::copy(next.begin(), next.end(), pending.begin() + static_cast<std::ptrdiff_t>(first - next.size()));
+            std::copy(next.begin(), next.end(),
+                      pending.begin() + static_cast<std::ptrdiff_t>(first - next.size()));
             first -= next.size();
             progress.report(static_cast<double>(done) / static_cast<double>(total),
                             "inserting breaklines");

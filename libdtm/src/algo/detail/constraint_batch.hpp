@@ -21,7 +21,9 @@ namespace dtm::detail {
 /// reservations (rounds of plan -> reserve vertices by priority -> apply the winners in
 /// parallel), which gives exactly the result of inserting them one by one in input order; the
 /// others (crossings, overlaps) follow one by one in input order.
-void insert_segments(MeshEditor& editor, const GhostMesh& mesh,
-                     const std::vector<InputSegment>& segments, const Progress& progress);
+void insert_segments(MeshEditor& editor,
+                     const GhostMesh& mesh,
+                     const std::vector<InputSegment>& segments,
+                     const Progress& progress);
 
 }  // namespace dtm::detail

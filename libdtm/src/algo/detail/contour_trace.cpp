@@ -34,7 +34,8 @@ namespace {
 
 class LevelView {
 public:
-    LevelView(const Tin& tin, double level) : tin_(tin), level_(level) {}
+    LevelView(const Tin& tin, double level, const EdgeCrossing* edge_crossing)
+        : tin_(tin), level_(level), edge_crossing_(edge_crossing) {}
 
     [[nodiscard]] bool above(VertexIndex v) const { return tin_.vertices[v].z >= level_; }
 
@@ -57,8 +58,9 @@ public:
         return -1;
     }
 
-    /// The crossing point on the edge (a, b) and the edge as (below, above).
-    [[nodiscard]] Point3 point(std::array<VertexIndex, 2>& ab) const {
+    /// The crossing point on the edge (a, b), edge e of triangle t, and the edge as (below,
+    /// above).
+    [[nodiscard]] Point3 point(std::array<VertexIndex, 2>& ab, TriangleIndex tri, int e) const {
         if (above(ab[0])) {
             std::swap(ab[0], ab[1]);
         }
@@ -66,6 +68,9 @@ public:
         const Point3& q = tin_.vertices[ab[1]];
         if (q.z == level_) {
             return {q.x, q.y, level_};
+        }
+        if (edge_crossing_ != nullptr) {
+            return edge_crossing_->point(tri, e, ab[0], ab[1], level_);
         }
         const double t = (level_ - p.z) / (q.z - p.z);
         return {p.x + t * (q.x - p.x), p.y + t * (q.y - p.y), level_};
@@ -106,11 +111,12 @@ public:
 private:
     const Tin& tin_;
     double level_;
+    const EdgeCrossing* edge_crossing_;
 };
 
 void push_point(const LevelView& view, RawChain& chain, TriangleIndex t, int e) {
     std::array<VertexIndex, 2> ab = view.edge(t, e);
-    chain.points.push_back(view.point(ab));
+    chain.points.push_back(view.point(ab, t, e));
     chain.edges.push_back(ab);
 }
 
@@ -180,8 +186,9 @@ void trace_level(const Tin& tin,
                  double level,
                  std::span<const TriangleIndex> crossing,
                  std::vector<std::uint8_t>& visited,
-                 std::vector<RawChain>& chains) {
-    const LevelView view(tin, level);
+                 std::vector<RawChain>& chains,
+                 const EdgeCrossing* edge_crossing) {
+    const LevelView view(tin, level, edge_crossing);
     for (const TriangleIndex t : crossing) {
         if (visited[t] == 0) {
             chains.push_back(trace_chain(view, t, visited));

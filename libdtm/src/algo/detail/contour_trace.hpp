@@ -26,13 +26,26 @@ struct RawChain {
     bool closed = false;
 };
 
+/// Where a level crosses an edge, when not by linear interpolation of the edge's end heights
+/// (the cubic surface's own crossing on a refinement's edge). Must give the same bits from
+/// either triangle of the edge, return the above vertex itself when its height is the level,
+/// and keep the order of the levels along each edge (a lower level nearer the below end).
+class EdgeCrossing {
+public:
+    virtual ~EdgeCrossing() = default;
+    /// The crossing of @p level on edge @p e of triangle @p t, from @p below to @p above.
+    [[nodiscard]] virtual Point3 point(
+        TriangleIndex t, int e, VertexIndex below, VertexIndex above, double level) const = 0;
+};
+
 /// Traces every chain of level @p level through the triangles @p crossing (ascending indices,
 /// exactly the triangles with zmin < level <= zmax). @p visited has one byte per triangle, all
-/// zero on entry and on return.
+/// zero on entry and on return. @p edge_crossing, when given, places the points.
 void trace_level(const Tin& tin,
                  double level,
                  std::span<const TriangleIndex> crossing,
                  std::vector<std::uint8_t>& visited,
-                 std::vector<RawChain>& chains);
+                 std::vector<RawChain>& chains,
+                 const EdgeCrossing* edge_crossing = nullptr);
 
 }  // namespace dtm::detail

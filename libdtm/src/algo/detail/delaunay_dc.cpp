@@ -61,27 +61,28 @@ struct Part {
 };
 
 /// The order of @p frame (0 or 1), chosen at run time.
-inline bool before(int frame, const KernelPoint& a, const KernelPoint& b) noexcept
-{
+inline bool before(int frame, const KernelPoint& a, const KernelPoint& b) noexcept {
     return frame == 0 ? Before<0>{}(a, b) : Before<1>{}(a, b);
 }
 
 class Builder {
 public:
-    Builder(BigArray<KernelPoint>& points, GhostMesh& mesh, const DelaunayDcOptions& options,
+    Builder(BigArray<KernelPoint>& points,
+            GhostMesh& mesh,
+            const DelaunayDcOptions& options,
             const Progress& progress)
-        : pts_(points.data()), mesh_(mesh), options_(options),
-          progress_(progress), total_(points.size()),
-          progress_unit_(options.parallel_cutoff > 0 ? options.parallel_cutoff : 65536)
-    {
-    }
+        : pts_(points.data()),
+          mesh_(mesh),
+          options_(options),
+          progress_(progress),
+          total_(points.size()),
+          progress_unit_(options.parallel_cutoff > 0 ? options.parallel_cutoff : 65536) {}
 
     /// Orders points [lo, hi) as the recursion will cut them (kd_order.hpp): median selection
     /// for the large subtrees, order_subtree (in rank space, in the caches) for the rest. Done as
     /// a pass of its own, before any merge, so the partitioning streams through the points
     /// without the mesh in the caches.
-    void split(std::size_t lo, std::size_t hi, int cut, std::size_t parent_n)
-    {
+    void split(std::size_t lo, std::size_t hi, int cut, std::size_t parent_n) {
         const std::size_t n = hi - lo;
         if (n <= SubtreeScratch::capacity) {
             order_subtree(pts_ + lo, n, cut, subtree_scratch_.local());
@@ -107,8 +108,7 @@ public:
 
     /// Triangulates points [lo, hi) in the triangle slots [2 lo, 2 hi); the hull handles are in
     /// the order of @p frame.
-    Part build(std::size_t lo, std::size_t hi, int cut, int frame, std::size_t parent_n)
-    {
+    Part build(std::size_t lo, std::size_t hi, int cut, int frame, std::size_t parent_n) {
         const std::size_t n = hi - lo;
         const Part part = n <= 3 ? base_case(lo, n, frame) : build_inner(lo, hi, cut, frame);
         if (n <= progress_unit_ && parent_n > progress_unit_) report(n);
@@ -117,17 +117,16 @@ public:
 
 private:
     /// Progress over both passes (split, then build), about a fifth of the work in the first.
-    void report(std::size_t n)
-    {
+    void report(std::size_t n) {
         const std::size_t done = done_.fetch_add(n) + n;
         const double total = static_cast<double>(total_);
-        const double fraction = done <= total_ ? 0.2 * static_cast<double>(done) / total
-                                               : 0.2 + 0.8 * static_cast<double>(done - total_) / total;
+        const double fraction = done <= total_
+                                    ? 0.2 * static_cast<double>(done) / total
+                                    : 0.2 + 0.8 * static_cast<double>(done - total_) / total;
         progress_.report(fraction, "triangulating");
     }
 
-    Part build_inner(std::size_t lo, std::size_t hi, int cut, int frame)
-    {
+    Part build_inner(std::size_t lo, std::size_t hi, int cut, int frame) {
         const std::size_t n = hi - lo;
         if (n <= strip_size) cut = 0;  // sorted by x: cut by index, vertically
         const std::size_t mid = lo + n / 2;
@@ -164,34 +163,28 @@ private:
     [[nodiscard]] VertexId dest(HalfEdge h) const noexcept { return mesh_.dest(h); }
     [[nodiscard]] HalfEdge& twin(HalfEdge h) const noexcept { return mesh_.twin(h); }
     void bond(HalfEdge a, HalfEdge b) const noexcept { mesh_.bond(a, b); }
-    void set_triangle(std::size_t t, VertexId a, VertexId b, VertexId c) const noexcept
-    {
+    void set_triangle(std::size_t t, VertexId a, VertexId b, VertexId c) const noexcept {
         mesh_.set_triangle(t, a, b, c);
     }
     /// The next ghost along the hull (outer face on the left): (a, b) -> (b, c).
-    [[nodiscard]] HalfEdge next_ghost(HalfEdge base) const noexcept
-    {
+    [[nodiscard]] HalfEdge next_ghost(HalfEdge base) const noexcept {
         return next(twin(next(base)));
     }
-    [[nodiscard]] HalfEdge prev_ghost(HalfEdge base) const noexcept
-    {
+    [[nodiscard]] HalfEdge prev_ghost(HalfEdge base) const noexcept {
         return prev(twin(prev(base)));
     }
 
-    [[nodiscard]] int orient(VertexId a, VertexId b, VertexId c) const noexcept
-    {
+    [[nodiscard]] int orient(VertexId a, VertexId b, VertexId c) const noexcept {
         return geom::orient2d(pts_[a].x, pts_[a].y, pts_[b].x, pts_[b].y, pts_[c].x, pts_[c].y);
     }
-    [[nodiscard]] bool incircle(VertexId a, VertexId b, VertexId c, VertexId d) const noexcept
-    {
+    [[nodiscard]] bool incircle(VertexId a, VertexId b, VertexId c, VertexId d) const noexcept {
         return geom::incircle(pts_[a].x, pts_[a].y, pts_[b].x, pts_[b].y, pts_[c].x, pts_[c].y,
                               pts_[d].x, pts_[d].y) > 0;
     }
 
     /// The hull handles in @p frame, found by walking the hull once from the ghost base
     /// @p start.
-    [[nodiscard]] Hull handles(HalfEdge start, int frame) const noexcept
-    {
+    [[nodiscard]] Hull handles(HalfEdge start, int frame) const noexcept {
         Hull hull{start, start};
         VertexId last = org(start);
         VertexId first = dest(start);
@@ -212,8 +205,10 @@ private:
 
     /// Ghost triangles on the three edges of the real triangle @p t = (a, b, c), in the slots
     /// @p g0, @p g1, @p g2 (on the edges a-b, b-c, c-a), linked along the hull.
-    void close_with_ghosts(std::size_t t, std::size_t g0, std::size_t g1, std::size_t g2) const noexcept
-    {
+    void close_with_ghosts(std::size_t t,
+                           std::size_t g0,
+                           std::size_t g1,
+                           std::size_t g2) const noexcept {
         const std::array<std::size_t, 3> g{g0, g1, g2};
         const auto& v = mesh_.tris[t].v;
         for (unsigned i = 0; i < 3; ++i) {
@@ -226,8 +221,7 @@ private:
 
     /// Two or three points, sorted by x by split(); put in the order of the frame. Uses the
     /// first two (or four) slots of the range [2 lo, 2 lo + 2 n).
-    Part base_case(std::size_t lo, std::size_t n, int frame)
-    {
+    Part base_case(std::size_t lo, std::size_t n, int frame) {
         if (frame == 1) {
             const Before<1> less;
             KernelPoint* p = pts_ + lo;
@@ -273,11 +267,10 @@ private:
     /// in a ghost (b, a, ghost) facing the gap, by flipping it with the ghost vertex: the real
     /// triangle becomes the ghost (a, ghost, y) and the ghost becomes (b, y, ghost). Half-edges
     /// x (now a -> ghost) and y -> a keep their places.
-    void delete_by_ghost_flip(HalfEdge x) const noexcept
-    {
-        const HalfEdge x1 = next(x);  // b -> y
-        const HalfEdge g0 = twin(x);  // b -> a
-        const HalfEdge g1 = next(g0); // a -> ghost
+    void delete_by_ghost_flip(HalfEdge x) const noexcept {
+        const HalfEdge x1 = next(x);   // b -> y
+        const HalfEdge g0 = twin(x);   // b -> a
+        const HalfEdge g1 = next(g0);  // a -> ghost
         const VertexId y = org(next(x1));
         const HalfEdge across = twin(x1);
         const HalfEdge outer = twin(g1);
@@ -299,8 +292,7 @@ private:
     /// with the ghost vertex: its triangle becomes a ghost facing the gap (Shewchuk's scheme).
     /// Every decision (tangent, candidates, deletions, choice) is the same as in the quad-edge
     /// formulation, so the triangulation is the same.
-    HalfEdge merge(Hull left, Hull right, std::array<std::size_t, 2> slots)
-    {
+    HalfEdge merge(Hull left, Hull right, std::array<std::size_t, 2> slots) {
         // Lower common tangent: lg is a ghost base l -> x of the left half, rg one y -> r of
         // the right half.
         HalfEdge lg = left.last_out;
@@ -333,8 +325,8 @@ private:
         HalfEdge up = half_edge(upper, 0);  // l -> r in the upper ghost
 
         for (;;) {
-            const HalfEdge up1 = next(up);  // r -> ghost
-            const HalfEdge up2 = next(up1); // ghost -> l
+            const HalfEdge up1 = next(up);   // r -> ghost
+            const HalfEdge up2 = next(up1);  // ghost -> l
             // Left candidate: l -> c, the edge of the left half next to the gap.
             HalfEdge lcand = twin(prev(twin(up2)));
             VertexId lc = dest(lcand);
@@ -371,7 +363,8 @@ private:
             }
             if (!lvalid && !rvalid) break;
             if (!lvalid || (rvalid && incircle(lc, l, r, rc))) {
-                // (l, r, rc); the right ghost (r, rc, ghost) becomes the upper ghost (l, rc, ghost).
+                // (l, r, rc); the right ghost (r, rc, ghost) becomes the upper ghost (l, rc,
+                // ghost).
                 const HalfEdge below_rc = twin(rcand);  // rc -> r
                 const HalfEdge left_ghost = twin(up2);
                 org(up2) = rc;
@@ -411,9 +404,10 @@ private:
 
 }  // namespace
 
-void delaunay_divide_and_conquer(BigArray<KernelPoint>& points, GhostMesh& mesh,
-                                 const DelaunayDcOptions& options, const Progress& progress)
-{
+void delaunay_divide_and_conquer(BigArray<KernelPoint>& points,
+                                 GhostMesh& mesh,
+                                 const DelaunayDcOptions& options,
+                                 const Progress& progress) {
     const std::size_t n = points.size();
     if (n > max_kernel_points) {
         throw InputError("too many points for one triangulation: " + std::to_string(n) +

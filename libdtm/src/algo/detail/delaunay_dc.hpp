@@ -24,7 +24,9 @@ struct DelaunayDcOptions {
 /// mesh.points, and their order is the kernel vertex numbering. Collinear input gives ghosts
 /// only (a chain of edges and no triangle).
 /// @throws Cancelled when @p progress asks to stop; InputError beyond max_kernel_points.
-void delaunay_divide_and_conquer(BigArray<KernelPoint>& points, GhostMesh& mesh,
-                                 const DelaunayDcOptions& options, const Progress& progress);
+void delaunay_divide_and_conquer(BigArray<KernelPoint>& points,
+                                 GhostMesh& mesh,
+                                 const DelaunayDcOptions& options,
+                                 const Progress& progress);
 
 }  // namespace dtm::detail

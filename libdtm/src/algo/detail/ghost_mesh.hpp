@@ -63,8 +63,7 @@ inline constexpr HalfEdge no_half_edge = 0xffffffffu;
 /// Triangle slots are addressed by 30 bits in a half-edge code.
 inline constexpr std::size_t max_kernel_points = (std::size_t{1} << 29) - 8;
 
-constexpr HalfEdge half_edge(std::size_t t, unsigned i) noexcept
-{
+constexpr HalfEdge half_edge(std::size_t t, unsigned i) noexcept {
     return static_cast<HalfEdge>(t << 2 | i);
 }
 constexpr std::size_t tri_of(HalfEdge h) noexcept { return h >> 2; }
@@ -81,8 +80,7 @@ struct GhostMesh {
     [[nodiscard]] Point2 p(VertexId v) const noexcept { return points[v].xy(); }
     [[nodiscard]] std::uint8_t edge_bits(HalfEdge h) const noexcept { return bits[h >> 2][h & 3u]; }
     /// Sets the bits of the edge of @p h on both of its half-edges.
-    void set_edge_bits(HalfEdge h, std::uint8_t b) noexcept
-    {
+    void set_edge_bits(HalfEdge h, std::uint8_t b) noexcept {
         bits[h >> 2][h & 3u] = b;
         const HalfEdge t = twin(h);
         bits[t >> 2][t & 3u] = b;
@@ -94,25 +92,21 @@ struct GhostMesh {
     [[nodiscard]] HalfEdge& twin(HalfEdge h) noexcept { return tris[h >> 2].n[h & 3u]; }
     [[nodiscard]] HalfEdge twin(HalfEdge h) const noexcept { return tris[h >> 2].n[h & 3u]; }
     /// @p h runs between two real vertices (one direction of an edge of the triangulation).
-    [[nodiscard]] bool is_edge(HalfEdge h) const noexcept
-    {
+    [[nodiscard]] bool is_edge(HalfEdge h) const noexcept {
         return org(h) != ghost && dest(h) != ghost;
     }
     /// Links @p a and @p b as twins.
-    void bond(HalfEdge a, HalfEdge b) noexcept
-    {
+    void bond(HalfEdge a, HalfEdge b) noexcept {
         twin(a) = b;
         twin(b) = a;
     }
-    void set_triangle(std::size_t t, VertexId a, VertexId b, VertexId c) noexcept
-    {
+    void set_triangle(std::size_t t, VertexId a, VertexId b, VertexId c) noexcept {
         tris[t].v = {a, b, c};
     }
     /// The triangle of @p h is real (no corner is the ghost vertex).
     [[nodiscard]] bool is_real(HalfEdge h) const noexcept { return !is_ghost(h >> 2); }
     /// A slot holds a ghost triangle (or is unused) when any corner is the ghost vertex.
-    [[nodiscard]] bool is_ghost(std::size_t t) const noexcept
-    {
+    [[nodiscard]] bool is_ghost(std::size_t t) const noexcept {
         const auto& v = tris[t].v;
         return std::max({v[0], v[1], v[2]}) == ghost;  // the ghost vertex is the largest id
     }

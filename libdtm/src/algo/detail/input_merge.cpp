@@ -4,22 +4,23 @@
 // soft breaklines, boundaries and holes, in that order) becomes one distinct TIN vertex.
 // Exact duplicates in x, y are found with a hash table (exact_duplicates.cpp); with a snap
 // distance D > 0, points closer than D to an earlier kept point are merged into it (a uniform grid
-// of cell D, scanned in input order, so the result is deterministic). The kept position is the first point's; its z follows the
-// DuplicateRule over the points that carry a height (soft breakline vertices carry none).
+// of cell D, scanned in input order, so the result is deterministic). The kept position is the
+// first point's; its z follows the DuplicateRule over the points that carry a height (soft
+// breakline vertices carry none).
 #include "algo/detail/input_merge.hpp"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_reduce.h>
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <limits>
-#include <cmath>
 #include <string>
 #include <unordered_map>
 
-#include "algo/detail/ghost_mesh.hpp"
 #include "algo/detail/exact_duplicates.hpp"
+#include "algo/detail/ghost_mesh.hpp"
 #include "dtm/core/error.hpp"
 
 namespace dtm::detail {
@@ -31,15 +32,15 @@ struct Combined {
     std::vector<InputSegment> segments;  // indices into points
 };
 
-std::string where(const Polyline& line, const char* what, std::size_t number)
-{
-    return line.source.empty() ? std::string(what) + " " + std::to_string(number + 1)
-                               : line.source;
+std::string where(const Polyline& line, const char* what, std::size_t number) {
+    return line.source.empty() ? std::string(what) + " " + std::to_string(number + 1) : line.source;
 }
 
-void add_polylines(const std::vector<Polyline>& lines, std::uint8_t bits, bool ring,
-                   const char* what, Combined& c)
-{
+void add_polylines(const std::vector<Polyline>& lines,
+                   std::uint8_t bits,
+                   bool ring,
+                   const char* what,
+                   Combined& c) {
     for (std::size_t k = 0; k < lines.size(); ++k) {
         const Polyline& line = lines[k];
         std::size_t count = line.points.size();
@@ -75,14 +76,12 @@ void add_polylines(const std::vector<Polyline>& lines, std::uint8_t bits, bool r
 /// rep[i]: the combined index of the point i is merged into (rep[i] == i when kept).
 using Representatives = BigArray<VertexIndex>;
 
-Representatives find_representatives(const std::vector<Point3>& pts, double snap)
-{
+Representatives find_representatives(const std::vector<Point3>& pts, double snap) {
     const std::size_t n = pts.size();
     if (snap <= 0.0) return first_occurrences(pts);
     Representatives rep(n);
     struct CellHash {
-        std::size_t operator()(const std::pair<std::int64_t, std::int64_t>& c) const noexcept
-        {
+        std::size_t operator()(const std::pair<std::int64_t, std::int64_t>& c) const noexcept {
             return std::hash<std::int64_t>()(c.first * 0x9e3779b97f4a7c15LL ^ c.second);
         }
     };
@@ -110,21 +109,26 @@ Representatives find_representatives(const std::vector<Point3>& pts, double snap
     return rep;
 }
 
-double rule_z(DuplicateRule rule, double current, double z, std::size_t count)
-{
+double rule_z(DuplicateRule rule, double current, double z, std::size_t count) {
     switch (rule) {
-        case DuplicateRule::first: return current;
-        case DuplicateRule::mean: return current + (z - current) / static_cast<double>(count);
-        case DuplicateRule::min: return std::min(current, z);
-        case DuplicateRule::max: return std::max(current, z);
+        case DuplicateRule::first:
+            return current;
+        case DuplicateRule::mean:
+            return current + (z - current) / static_cast<double>(count);
+        case DuplicateRule::min:
+            return std::min(current, z);
+        case DuplicateRule::max:
+            return std::max(current, z);
     }
     return current;
 }
 
 /// Fills out.vertices, z_known, input_to_vertex and merges when some points merge.
-void merge_duplicates(const Combined& c, const Representatives& rep, std::size_t kept_count,
-                      DuplicateRule rule, MergedInput& out)
-{
+void merge_duplicates(const Combined& c,
+                      const Representatives& rep,
+                      std::size_t kept_count,
+                      DuplicateRule rule,
+                      MergedInput& out) {
     std::vector<VertexIndex> vertex_of(c.points.size(), no_vertex);
     std::vector<std::uint32_t> z_count;
     out.vertices.reserve(kept_count);  // exact: no growth slack in the largest array
@@ -143,8 +147,8 @@ void merge_duplicates(const Combined& c, const Representatives& rep, std::size_t
         if (c.z_known[i]) {
             Point3& kept = out.vertices[v];
             ++z_count[v];
-            kept.z = out.z_known[v] ? rule_z(rule, kept.z, c.points[i].z, z_count[v])
-                                    : c.points[i].z;
+            kept.z =
+                out.z_known[v] ? rule_z(rule, kept.z, c.points[i].z, z_count[v]) : c.points[i].z;
             out.z_known[v] = true;
         }
     }
@@ -158,14 +162,12 @@ void merge_duplicates(const Combined& c, const Representatives& rep, std::size_t
 
 }  // namespace
 
-MergedInput merge_input(const TerrainInput& input, const TriangulateOptions& options)
-{
+MergedInput merge_input(const TerrainInput& input, const TriangulateOptions& options) {
     TerrainInput copy = input;
     return merge_input(std::move(copy), options);
 }
 
-MergedInput merge_input(TerrainInput&& input, const TriangulateOptions& options)
-{
+MergedInput merge_input(TerrainInput&& input, const TriangulateOptions& options) {
     Combined c;
     // The first point with a coordinate that is not finite, found by all threads.
     const std::size_t bad = tbb::parallel_reduce(
@@ -187,8 +189,8 @@ MergedInput merge_input(TerrainInput&& input, const TriangulateOptions& options)
     // Room for every polyline vertex at once: one copy of the points at most, and no growth
     // slack that the no-merge path below would have to copy away again.
     std::size_t line_vertices = 0;
-    for (const auto* lines : {&input.breaklines, &input.boundaries, &input.holes,
-                              &input.soft_breaklines}) {
+    for (const auto* lines :
+         {&input.breaklines, &input.boundaries, &input.holes, &input.soft_breaklines}) {
         for (const Polyline& line : *lines) line_vertices += line.points.size();
     }
     c.points.reserve(c.points.size() + line_vertices);

@@ -27,8 +27,7 @@ struct MergedInput {
     std::vector<InputSegment> segments;  ///< hard, boundary, hole, then soft; input order
     std::size_t points_in = 0;
 
-    [[nodiscard]] VertexIndex vertex_of_input(std::size_t i) const noexcept
-    {
+    [[nodiscard]] VertexIndex vertex_of_input(std::size_t i) const noexcept {
         return input_to_vertex.empty() ? static_cast<VertexIndex>(i) : input_to_vertex[i];
     }
 };

@@ -34,8 +34,7 @@ template <class T>
 struct SelectScratch {
     static constexpr std::size_t capacity = std::size_t{1} << 14;  // 384 KiB of points: in L2
     std::unique_ptr<T[]> data;
-    T* get()
-    {
+    T* get() {
         if (!data) data = std::make_unique<T[]>(capacity);
         return data.get();
     }
@@ -47,8 +46,7 @@ struct SelectScratch {
 /// an in-place Lomuto pass reads and writes every element twice; for the large ranges that stream
 /// from memory that halves the traffic. @return the number of elements before.
 template <class T, class Less>
-std::size_t partition_blocks(T* a, std::size_t n, const T& pivot, Less less)
-{
+std::size_t partition_blocks(T* a, std::size_t n, const T& pivot, Less less) {
     constexpr std::size_t block = 128;
     std::uint8_t misplaced_left[block];
     std::uint8_t misplaced_right[block];
@@ -96,9 +94,8 @@ std::size_t partition_blocks(T* a, std::size_t n, const T& pivot, Less less)
 
 /// Partitions a[0, n) by `less(x, pivot)`, branch-free. @return the number of elements before.
 template <class T, class Less>
-std::size_t partition_branch_free(T* a, std::size_t n, const T& pivot, Less less,
-                                  SelectScratch<T>& scratch)
-{
+std::size_t partition_branch_free(
+    T* a, std::size_t n, const T& pivot, Less less, SelectScratch<T>& scratch) {
     static_assert(std::is_trivially_copyable_v<T>);
     if (n <= SelectScratch<T>::capacity) {
         T* out = scratch.get();
@@ -120,8 +117,7 @@ std::size_t partition_branch_free(T* a, std::size_t n, const T& pivot, Less less
 
 /// Moves the k smallest of a[0, n) (pairwise distinct under the strict order `less`) to the front.
 template <class T, class Less>
-void select_kth(T* a, std::size_t n, std::size_t k, Less less, SelectScratch<T>& scratch)
-{
+void select_kth(T* a, std::size_t n, std::size_t k, Less less, SelectScratch<T>& scratch) {
     constexpr std::size_t small = 1024;  // in cache: std::nth_element is as fast
     constexpr std::size_t max_sample = 127;
     while (n > small && k > 0 && k < n) {
@@ -131,9 +127,8 @@ void select_kth(T* a, std::size_t n, std::size_t k, Less less, SelectScratch<T>&
         for (std::size_t i = 0; i < s; ++i) sample[i] = a[i * step];
         // The sample element of the wanted rank; never the sample's minimum, so that at least
         // one element goes before the pivot and every round shrinks the range.
-        std::size_t want = static_cast<std::size_t>(static_cast<double>(k) /
-                                                    static_cast<double>(n) *
-                                                    static_cast<double>(s));
+        std::size_t want = static_cast<std::size_t>(
+            static_cast<double>(k) / static_cast<double>(n) * static_cast<double>(s));
         want = std::clamp<std::size_t>(want, 1, s - 1);
         std::nth_element(sample, sample + want, sample + s, less);
         const std::size_t before = partition_branch_free(a, n, sample[want], less, scratch);

@@ -41,8 +41,10 @@
 namespace dtm::detail {
 
 MeshEditor::MeshEditor(GhostMesh& mesh, std::vector<double>& z, double z_tolerance)
-    : mesh_(mesh), z_(z), z_tolerance_(z_tolerance), vertex_edge_(mesh.points.size(), no_half_edge)
-{
+    : mesh_(mesh),
+      z_(z),
+      z_tolerance_(z_tolerance),
+      vertex_edge_(mesh.points.size(), no_half_edge) {
     mesh.bits.assign(mesh.tris.size(), {0, 0, 0});
     // A half-edge out of every vertex, whichever thread writes last: it is only where walks
     // start, and nothing depends on where they start (the sector a segment enters, the triangle
@@ -61,8 +63,7 @@ MeshEditor::MeshEditor(GhostMesh& mesh, std::vector<double>& z, double z_toleran
                       });
 }
 
-void MeshEditor::prefetch(VertexId a, VertexId b, bool star) const noexcept
-{
+void MeshEditor::prefetch(VertexId a, VertexId b, bool star) const noexcept {
     if (!star) {
         __builtin_prefetch(&vertex_edge_[a]);
         __builtin_prefetch(&mesh_.points[a]);
@@ -75,37 +76,32 @@ void MeshEditor::prefetch(VertexId a, VertexId b, bool star) const noexcept
     __builtin_prefetch(&mesh_.bits[tri_of(e)]);
 }
 
-void MeshEditor::set_triangle(std::size_t t, VertexId a, VertexId b, VertexId c)
-{
+void MeshEditor::set_triangle(std::size_t t, VertexId a, VertexId b, VertexId c) {
     mesh_.set_triangle(t, a, b, c);
     if (a != ghost) vertex_edge_[a] = half_edge(t, 0);
     if (b != ghost) vertex_edge_[b] = half_edge(t, 1);
     if (c != ghost) vertex_edge_[c] = half_edge(t, 2);
 }
 
-void MeshEditor::bond(HalfEdge x, HalfEdge y, std::uint8_t bits)
-{
+void MeshEditor::bond(HalfEdge x, HalfEdge y, std::uint8_t bits) {
     mesh_.bond(x, y);
     mesh_.set_edge_bits(x, bits);
 }
 
-std::size_t MeshEditor::new_triangle()
-{
+std::size_t MeshEditor::new_triangle() {
     mesh_.tris.emplace_back();
     mesh_.bits.push_back({0, 0, 0});
     return mesh_.tris.size() - 1;
 }
 
-VertexId MeshEditor::add_vertex(Point2 p, double z)
-{
+VertexId MeshEditor::add_vertex(Point2 p, double z) {
     mesh_.points.push_back({p, no_vertex});
     z_.push_back(z);
     vertex_edge_.push_back(no_half_edge);
     return static_cast<VertexId>(mesh_.points.size() - 1);
 }
 
-MeshEditor::Quad MeshEditor::quad(HalfEdge x) const
-{
+MeshEditor::Quad MeshEditor::quad(HalfEdge x) const {
     const GhostMesh& m = mesh_;
     const HalfEdge y = m.twin(x);
     Quad q;
@@ -123,8 +119,7 @@ MeshEditor::Quad MeshEditor::quad(HalfEdge x) const
     return q;
 }
 
-HalfEdge MeshEditor::flip(HalfEdge x)
-{
+HalfEdge MeshEditor::flip(HalfEdge x) {
     const Quad q = quad(x);
     set_triangle(q.t1, q.c, q.a, q.d);
     set_triangle(q.t2, q.d, q.b, q.c);
@@ -136,8 +131,7 @@ HalfEdge MeshEditor::flip(HalfEdge x)
     return half_edge(q.t1, 2);
 }
 
-void MeshEditor::legalize(HalfEdge first)
-{
+void MeshEditor::legalize(HalfEdge first) {
     GhostMesh& m = mesh_;
     std::vector<HalfEdge> stack{first};
     while (!stack.empty()) {
@@ -152,13 +146,12 @@ void MeshEditor::legalize(HalfEdge first)
         const HalfEdge dc = flip(e);
         const std::size_t t1 = tri_of(dc);
         const std::size_t t2 = tri_of(m.twin(dc));
-        stack.insert(stack.end(), {half_edge(t1, 0), half_edge(t1, 1), half_edge(t2, 0),
-                                   half_edge(t2, 1)});
+        stack.insert(stack.end(),
+                     {half_edge(t1, 0), half_edge(t1, 1), half_edge(t2, 0), half_edge(t2, 1)});
     }
 }
 
-Location MeshEditor::locate(Point2 p, HalfEdge e)
-{
+Location MeshEditor::locate(Point2 p, HalfEdge e) {
     const GhostMesh& m = mesh_;
     if (!m.is_real(e)) {  // a ghost: start in the real triangle behind its hull edge
         const std::size_t t = tri_of(e);
@@ -203,8 +196,7 @@ Location MeshEditor::locate(Point2 p, HalfEdge e)
     throw Error("triangulation: point location did not terminate (corrupt mesh)");
 }
 
-VertexId MeshEditor::insert_point(Point2 p, double z, HalfEdge hint)
-{
+VertexId MeshEditor::insert_point(Point2 p, double z, HalfEdge hint) {
     const Location loc = locate(p, hint);
     if (loc.kind == Location::Kind::vertex) return mesh_.org(loc.e);
     if (loc.kind == Location::Kind::outside) {
@@ -250,21 +242,21 @@ VertexId MeshEditor::insert_point(Point2 p, double z, HalfEdge hint)
         set_triangle(t1, v, q.b, q.c);
         set_triangle(u, q.b, v, q.d);
         set_triangle(t2, v, q.a, q.d);
-        bond(half_edge(t, 0), half_edge(t2, 0), split);  // a - v
-        bond(half_edge(t1, 0), half_edge(u, 0), split);  // v - b
-        bond(half_edge(t, 1), half_edge(t1, 2), 0);      // v - c
-        bond(half_edge(u, 1), half_edge(t2, 2), 0);      // v - d
-        bond(half_edge(t, 2), q.outside[1], q.bits[1]);  // c - a
-        bond(half_edge(t1, 1), q.outside[0], q.bits[0]); // b - c
-        bond(half_edge(u, 2), q.outside[3], q.bits[3]);  // d - b
-        bond(half_edge(t2, 1), q.outside[2], q.bits[2]); // a - d
+        bond(half_edge(t, 0), half_edge(t2, 0), split);   // a - v
+        bond(half_edge(t1, 0), half_edge(u, 0), split);   // v - b
+        bond(half_edge(t, 1), half_edge(t1, 2), 0);       // v - c
+        bond(half_edge(u, 1), half_edge(t2, 2), 0);       // v - d
+        bond(half_edge(t, 2), q.outside[1], q.bits[1]);   // c - a
+        bond(half_edge(t1, 1), q.outside[0], q.bits[0]);  // b - c
+        bond(half_edge(u, 2), q.outside[3], q.bits[3]);   // d - b
+        bond(half_edge(t2, 1), q.outside[2], q.bits[2]);  // a - d
         stack = {half_edge(t, 2), half_edge(t1, 1), half_edge(u, 2), half_edge(t2, 1)};
     }
     // Lawson flips around the new vertex; constrained edges and the hull stay.
     while (!stack.empty()) {
         const HalfEdge h = stack.back();  // x -> y in (x, y, v)
         stack.pop_back();
-        const HalfEdge g = m.twin(h);     // y -> x in (y, x, q)
+        const HalfEdge g = m.twin(h);  // y -> x in (y, x, q)
         if (m.edge_bits(h) != 0 || !m.is_real(g)) continue;
         const VertexId x = m.org(h);
         const VertexId y = m.dest(h);
@@ -280,8 +272,7 @@ VertexId MeshEditor::insert_point(Point2 p, double z, HalfEdge hint)
     return v;
 }
 
-void MeshEditor::insert_segment(VertexId a, VertexId b, std::uint8_t bits)
-{
+void MeshEditor::insert_segment(VertexId a, VertexId b, std::uint8_t bits) {
     std::vector<Work>& stack = work_scratch_;
     stack.assign(1, {a, b, bits});
     std::size_t steps = 0;

@@ -59,10 +59,10 @@ public:
     /// One piece of a segment: from a vertex to the next vertex reached along it.
     struct PiecePlan {
         VertexId from = 0;
-        VertexId to = 0;                              ///< the segment's end, or a vertex on it
-        HalfEdge along = no_half_edge;                ///< an existing edge from -> to
-        HalfEdge crossed_constraint = no_half_edge;   ///< the walk met this constrained edge
-        std::vector<std::uint32_t> cavity;            ///< the triangles the piece crosses
+        VertexId to = 0;                             ///< the segment's end, or a vertex on it
+        HalfEdge along = no_half_edge;               ///< an existing edge from -> to
+        HalfEdge crossed_constraint = no_half_edge;  ///< the walk met this constrained edge
+        std::vector<std::uint32_t> cavity;           ///< the triangles the piece crosses
         std::vector<HalfEdge> right_chain;  ///< cavity boundary right of the piece, from -> to
         std::vector<HalfEdge> left_chain;   ///< cavity boundary left of it, to -> from
     };
@@ -70,10 +70,10 @@ public:
     /// Filled again for every segment: the vectors keep their memory (no allocation per plan in
     /// the parallel rounds once the plans have grown).
     struct SegmentPlan {
-        std::vector<PiecePlan> pieces;   ///< the first piece_count are this plan's
+        std::vector<PiecePlan> pieces;  ///< the first piece_count are this plan's
         std::size_t piece_count = 0;
-        std::vector<VertexId> vertices;  ///< every vertex whose triangles the insertion changes
-        bool crosses_constraint = false; ///< must go through insert_segment instead
+        std::vector<VertexId> vertices;   ///< every vertex whose triangles the insertion changes
+        bool crosses_constraint = false;  ///< must go through insert_segment instead
     };
 
     /// Read-only: plans the insertion of a-b into @p plan. Safe to call from several threads at
@@ -90,12 +90,10 @@ private:
         std::uint8_t bits;
     };
 
-    [[nodiscard]] int orient(VertexId a, VertexId b, VertexId c) const
-    {
+    [[nodiscard]] int orient(VertexId a, VertexId b, VertexId c) const {
         return geom::orient2d(mesh_.p(a), mesh_.p(b), mesh_.p(c));
     }
-    [[nodiscard]] int orient_p(VertexId a, VertexId b, Point2 c) const
-    {
+    [[nodiscard]] int orient_p(VertexId a, VertexId b, Point2 c) const {
         return geom::orient2d(mesh_.p(a), mesh_.p(b), c);
     }
     /// Writes triangle @p t = (a, b, c) and makes it the known edge out of its corners.
@@ -127,19 +125,22 @@ private:
     /// slots slots[next_slot...]; its base is bonded to @p base_twin (when known) with
     /// @p base_bits; the new half-edges of doubled boundary edges go to @p made. Returns the
     /// base half-edge.
-    HalfEdge fill_polygon(const Polygon& polygon, const std::vector<std::uint32_t>& slots,
-                          std::size_t& next_slot, HalfEdge base_twin, std::uint8_t base_bits,
+    HalfEdge fill_polygon(const Polygon& polygon,
+                          const std::vector<std::uint32_t>& slots,
+                          std::size_t& next_slot,
+                          HalfEdge base_twin,
+                          std::uint8_t base_bits,
                           std::vector<HalfEdge>& made);
     void insert_piece(const Work& work, std::vector<Work>& stack);
-    void cross_constraint(VertexId u, VertexId w, std::uint8_t bits, HalfEdge f,
-                          std::vector<Work>& stack);
+    void cross_constraint(
+        VertexId u, VertexId w, std::uint8_t bits, HalfEdge f, std::vector<Work>& stack);
 
     GhostMesh& mesh_;
     std::vector<double>& z_;
     double z_tolerance_;
     std::vector<HalfEdge> vertex_edge_;
     std::vector<Crossing> crossings_;
-    PiecePlan piece_scratch_;  ///< insert_piece's plan, its memory kept from piece to piece
+    PiecePlan piece_scratch_;         ///< insert_piece's plan, its memory kept from piece to piece
     std::vector<Work> work_scratch_;  ///< insert_segment's stack, kept likewise
     std::uint64_t rng_ = 0x9e3779b97f4a7c15ull;
 };

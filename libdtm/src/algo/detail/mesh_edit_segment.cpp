@@ -13,16 +13,14 @@ namespace dtm::detail {
 namespace {
 
 /// Collinear q lies on the ray from a through b (same direction), decided by comparisons only.
-bool same_direction(const Point2& a, const Point2& b, const Point2& q)
-{
+bool same_direction(const Point2& a, const Point2& b, const Point2& q) {
     const auto sign = [](double from, double to) { return (to > from) - (to < from); };
     return sign(a.x, q.x) == sign(a.x, b.x) && sign(a.y, q.y) == sign(a.y, b.y);
 }
 
 }  // namespace
 
-void MeshEditor::plan_piece(VertexId u, VertexId w, PiecePlan& plan) const
-{
+void MeshEditor::plan_piece(VertexId u, VertexId w, PiecePlan& plan) const {
     const GhostMesh& m = mesh_;
     const auto side = [&](VertexId v) { return orient(u, w, v); };
     plan.from = u;
@@ -54,14 +52,15 @@ void MeshEditor::plan_piece(VertexId u, VertexId w, PiecePlan& plan) const
         }
         e = m.twin(prev(e));  // the next edge counter-clockwise around u
     } while (e != start);
-    if (sector == no_half_edge) throw Error("triangulation: breakline leaves the triangulated hull");
+    if (sector == no_half_edge)
+        throw Error("triangulation: breakline leaves the triangulated hull");
 
     // 2. Walk through the crossed triangles, collecting them and the cavity boundary (inner
     // half-edges: the cavity on their left).
     plan.cavity.push_back(static_cast<std::uint32_t>(tri_of(sector)));
-    plan.right_chain.push_back(sector);      // u -> ... -> to
-    plan.left_chain.push_back(prev(sector)); // reversed below: to -> ... -> u
-    HalfEdge f = next(sector);               // crossed, from the right side to the left side
+    plan.right_chain.push_back(sector);       // u -> ... -> to
+    plan.left_chain.push_back(prev(sector));  // reversed below: to -> ... -> u
+    HalfEdge f = next(sector);                // crossed, from the right side to the left side
     for (;;) {
         if (m.edge_bits(f) != 0) {
             plan.crossed_constraint = f;
@@ -102,8 +101,7 @@ struct MeshEditor::Polygon {
     std::vector<std::uint32_t> partner;
     std::size_t first = 0;  ///< index of this side's first edge among both sides' edges
 
-    void clear()
-    {
+    void clear() {
         vertex.clear();
         outside.clear();
         bits.clear();
@@ -111,8 +109,7 @@ struct MeshEditor::Polygon {
     }
 };
 
-void MeshEditor::apply_piece(const PiecePlan& plan, std::uint8_t bits)
-{
+void MeshEditor::apply_piece(const PiecePlan& plan, std::uint8_t bits) {
     GhostMesh& m = mesh_;
     if (plan.along != no_half_edge) {
         m.set_edge_bits(plan.along, m.edge_bits(plan.along) | bits);
@@ -128,8 +125,8 @@ void MeshEditor::apply_piece(const PiecePlan& plan, std::uint8_t bits)
     left.clear();
     boundary.clear();
     std::uint32_t id = 0;
-    for (const auto& [chain, polygon] : {std::pair{&plan.right_chain, &right},
-                                         std::pair{&plan.left_chain, &left}}) {
+    for (const auto& [chain, polygon] :
+         {std::pair{&plan.right_chain, &right}, std::pair{&plan.left_chain, &left}}) {
         polygon->first = id;
         for (const HalfEdge h : *chain) {
             polygon->vertex.push_back(m.org(h));
@@ -144,7 +141,8 @@ void MeshEditor::apply_piece(const PiecePlan& plan, std::uint8_t bits)
         for (const HalfEdge out : polygon->outside) {
             const auto at = std::lower_bound(boundary.begin(), boundary.end(),
                                              std::pair<HalfEdge, std::uint32_t>{out, 0});
-            polygon->partner.push_back(at != boundary.end() && at->first == out ? at->second : none);
+            polygon->partner.push_back(at != boundary.end() && at->first == out ? at->second
+                                                                                : none);
         }
     }
     made.assign(id, no_half_edge);
@@ -160,10 +158,12 @@ void MeshEditor::apply_piece(const PiecePlan& plan, std::uint8_t bits)
     }
 }
 
-HalfEdge MeshEditor::fill_polygon(const Polygon& polygon, const std::vector<std::uint32_t>& slots,
-                                  std::size_t& next_slot, HalfEdge base_twin,
-                                  std::uint8_t base_bits, std::vector<HalfEdge>& made)
-{
+HalfEdge MeshEditor::fill_polygon(const Polygon& polygon,
+                                  const std::vector<std::uint32_t>& slots,
+                                  std::size_t& next_slot,
+                                  HalfEdge base_twin,
+                                  std::uint8_t base_bits,
+                                  std::vector<HalfEdge>& made) {
     // Explicit stack of sub-polygons: vertices [lo, hi] with the base hi -> lo, and what the base
     // is bonded to (the parent triangle's edge, or for the whole polygon @p base_twin).
     struct Sub {
@@ -217,8 +217,7 @@ HalfEdge MeshEditor::fill_polygon(const Polygon& polygon, const std::vector<std:
     return first_base;
 }
 
-void MeshEditor::insert_piece(const Work& work, std::vector<Work>& stack)
-{
+void MeshEditor::insert_piece(const Work& work, std::vector<Work>& stack) {
     PiecePlan& plan = piece_scratch_;
     plan_piece(work.a, work.b, plan);
     if (plan.crossed_constraint != no_half_edge) {
@@ -229,8 +228,7 @@ void MeshEditor::insert_piece(const Work& work, std::vector<Work>& stack)
     if (plan.to != work.b) stack.push_back({plan.to, work.b, work.bits});
 }
 
-void MeshEditor::plan_segment(VertexId a, VertexId b, SegmentPlan& plan) const
-{
+void MeshEditor::plan_segment(VertexId a, VertexId b, SegmentPlan& plan) const {
     plan.piece_count = 0;
     plan.vertices.clear();
     plan.crosses_constraint = false;
@@ -252,14 +250,12 @@ void MeshEditor::plan_segment(VertexId a, VertexId b, SegmentPlan& plan) const
     }
 }
 
-void MeshEditor::apply_segment(const SegmentPlan& plan, std::uint8_t bits)
-{
+void MeshEditor::apply_segment(const SegmentPlan& plan, std::uint8_t bits) {
     for (std::size_t i = 0; i < plan.piece_count; ++i) apply_piece(plan.pieces[i], bits);
 }
 
-void MeshEditor::cross_constraint(VertexId u, VertexId w, std::uint8_t bits, HalfEdge f,
-                                  std::vector<Work>& stack)
-{
+void MeshEditor::cross_constraint(
+    VertexId u, VertexId w, std::uint8_t bits, HalfEdge f, std::vector<Work>& stack) {
     GhostMesh& m = mesh_;
     const VertexId p = m.org(f);
     const VertexId r = m.dest(f);
@@ -291,7 +287,7 @@ void MeshEditor::cross_constraint(VertexId u, VertexId w, std::uint8_t bits, Hal
         m.set_edge_bits(f, 0);
         legalize(f);
         // A soft (2-D) line takes its height from the hard one it crosses.
-        const double z_x = bits == constraint_soft ? z_old
+        const double z_x = bits == constraint_soft     ? z_old
                            : f_bits == constraint_soft ? z_new
                                                        : 0.5 * (z_new + z_old);
         x = insert_point(at, z_x, vertex_edge_[p]);
@@ -304,8 +300,8 @@ void MeshEditor::cross_constraint(VertexId u, VertexId w, std::uint8_t bits, Hal
     }
     const double z_at_x = x == p || x == r ? z_[x] : z_old;
     const bool heights_compared = bits != constraint_soft && f_bits != constraint_soft;
-    crossings_.push_back({m.p(x), z_at_x, z_new,
-                          heights_compared && std::abs(z_at_x - z_new) > z_tolerance_});
+    crossings_.push_back(
+        {m.p(x), z_at_x, z_new, heights_compared && std::abs(z_at_x - z_new) > z_tolerance_});
     stack.push_back({x, w, bits});
     stack.push_back({u, x, bits});
 }

@@ -20,8 +20,7 @@ struct TinDraft {
     std::vector<std::array<std::uint8_t, 3>> edge_bits;
 
     [[nodiscard]] bool any_constraint() const noexcept { return !edge_bits.empty(); }
-    [[nodiscard]] std::uint8_t bits(std::size_t t, int i) const noexcept
-    {
+    [[nodiscard]] std::uint8_t bits(std::size_t t, int i) const noexcept {
         return edge_bits.empty() ? 0 : edge_bits[t][static_cast<std::size_t>(i)];
     }
 };
@@ -33,7 +32,9 @@ struct TinDraft {
 
 /// Removes the triangles outside the boundaries, inside holes (rings and seeds) and, with
 /// options.max_edge, the long border triangles. @return the number removed.
-std::size_t apply_domain(TinDraft& draft, bool has_boundary, const std::vector<Point2>& hole_seeds,
+std::size_t apply_domain(TinDraft& draft,
+                         bool has_boundary,
+                         const std::vector<Point2>& hole_seeds,
                          double max_edge);
 
 /// Peels border triangles whose border edge is unconstrained and longer than @p max_edge,

@@ -11,8 +11,6 @@
 // crossing a constrained edge is removed. Finally, with a maximum edge length, border triangles
 // whose border edge is longer than it (and not constrained) are peeled off, repeatedly, from the
 // outside inwards.
-#include "algo/detail/tin_build.hpp"
-
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
@@ -20,6 +18,7 @@
 #include <atomic>
 #include <deque>
 
+#include "algo/detail/tin_build.hpp"
 #include "dtm/geom/predicates.hpp"
 
 namespace dtm::detail {
@@ -29,8 +28,7 @@ constexpr std::uint8_t domain_bits = constraint_boundary | constraint_hole;
 
 }  // namespace
 
-void compact(TinDraft& draft, const std::vector<bool>& keep)
-{
+void compact(TinDraft& draft, const std::vector<bool>& keep) {
     std::vector<TriangleIndex> new_index(keep.size(), no_triangle);
     TriangleIndex next = 0;
     for (std::size_t t = 0; t < keep.size(); ++t) {
@@ -48,9 +46,10 @@ void compact(TinDraft& draft, const std::vector<bool>& keep)
     if (draft.any_constraint()) draft.edge_bits.resize(next);
 }
 
-std::size_t apply_domain(TinDraft& draft, bool has_boundary, const std::vector<Point2>& hole_seeds,
-                         double max_edge)
-{
+std::size_t apply_domain(TinDraft& draft,
+                         bool has_boundary,
+                         const std::vector<Point2>& hole_seeds,
+                         double max_edge) {
     const Tin& tin = draft.tin;
     const std::size_t count = tin.triangles.size();
     // Rings: 0-1 BFS over crossings of boundary/hole edges.
@@ -62,10 +61,12 @@ std::size_t apply_domain(TinDraft& draft, bool has_boundary, const std::vector<P
                               const auto& bits = draft.edge_bits[t];
                               all |= static_cast<std::uint8_t>(bits[0] | bits[1] | bits[2]);
                           }
-                          if ((all & domain_bits) != 0) ring_edge.store(true, std::memory_order_relaxed);
+                          if ((all & domain_bits) != 0)
+                              ring_edge.store(true, std::memory_order_relaxed);
                       });
     const bool any_ring = has_boundary || ring_edge.load();
-    if (!any_ring && hole_seeds.empty()) return max_edge > 0.0 ? trim_long_edges(draft, max_edge) : 0;
+    if (!any_ring && hole_seeds.empty())
+        return max_edge > 0.0 ? trim_long_edges(draft, max_edge) : 0;
     std::vector<bool> keep(count, true);
     if (any_ring) {
         constexpr std::uint32_t unset = 0xffffffffu;

@@ -12,8 +12,7 @@
 namespace dtm::detail {
 namespace {
 
-ConstraintKind kind_of(std::uint8_t bits)
-{
+ConstraintKind kind_of(std::uint8_t bits) {
     if (bits & constraint_boundary) return ConstraintKind::boundary;
     if (bits & constraint_hole) return ConstraintKind::hole;
     if (bits & constraint_breakline) return ConstraintKind::breakline;
@@ -22,8 +21,7 @@ ConstraintKind kind_of(std::uint8_t bits)
 
 }  // namespace
 
-std::size_t trim_long_edges(TinDraft& draft, double max_edge)
-{
+std::size_t trim_long_edges(TinDraft& draft, double max_edge) {
     const Tin& tin = draft.tin;
     const std::size_t count = tin.triangles.size();
     std::vector<bool> keep(count, true);
@@ -61,8 +59,7 @@ std::size_t trim_long_edges(TinDraft& draft, double max_edge)
     return removed;
 }
 
-void finish_tin(TinDraft& draft)
-{
+void finish_tin(TinDraft& draft) {
     // Triangles are already in canonical order; collect the constraints, per block of triangles
     // in parallel, then sort them by (a, b).
     const std::vector<Triangle>& tris = draft.tin.triangles;

@@ -9,13 +9,12 @@
 // Order: the triangles stay in slot order, which depends on the input only (never on threads or
 // tiles; see delaunay_dc.cpp and constraint_batch.cpp) and follows the recursion, so it is
 // canonical and spatially coherent; only the few triangles moved into ghost slots leave it.
-#include "algo/detail/ghost_mesh.hpp"
-
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <utility>
 
+#include "algo/detail/ghost_mesh.hpp"
 #include "algo/detail/tin_build.hpp"
 
 namespace dtm::detail {
@@ -27,14 +26,12 @@ std::size_t block_count(std::size_t triangles) { return (triangles + block - 1) 
 
 /// Runs @p body(t) for the triangles of block @p b.
 template <class Body>
-void for_block(std::size_t b, std::size_t triangles, const Body& body)
-{
+void for_block(std::size_t b, std::size_t triangles, const Body& body) {
     const std::size_t end = std::min(triangles, (b + 1) * block);
     for (std::size_t t = b * block; t < end; ++t) body(t);
 }
 
-std::vector<std::size_t> concatenate(const std::vector<std::vector<std::size_t>>& lists)
-{
+std::vector<std::size_t> concatenate(const std::vector<std::vector<std::size_t>>& lists) {
     std::vector<std::size_t> all;
     for (const auto& list : lists) all.insert(all.end(), list.begin(), list.end());
     return all;
@@ -42,8 +39,7 @@ std::vector<std::size_t> concatenate(const std::vector<std::vector<std::size_t>>
 
 }  // namespace
 
-TinDraft ghost_mesh_to_tin(GhostMesh& g, std::vector<Point3> vertices)
-{
+TinDraft ghost_mesh_to_tin(GhostMesh& g, std::vector<Point3> vertices) {
     std::vector<Triangle>& tris = g.tris;
     const std::size_t count = tris.size();
     const std::size_t blocks = block_count(count);
@@ -87,8 +83,9 @@ TinDraft ghost_mesh_to_tin(GhostMesh& g, std::vector<Point3> vertices)
             const auto twins = tri.n;
             for (unsigned i = 0; i < 3; ++i) {
                 tri.v[i] = g.points[tri.v[i]].id;
-                tri.n[(i + 2) % 3] =
-                    twins[i] == no_half_edge ? no_triangle : static_cast<TriangleIndex>(tri_of(twins[i]));
+                tri.n[(i + 2) % 3] = twins[i] == no_half_edge
+                                         ? no_triangle
+                                         : static_cast<TriangleIndex>(tri_of(twins[i]));
             }
             if (constrained) {
                 const auto bits = g.bits[t];

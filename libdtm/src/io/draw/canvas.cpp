@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 // The drawing page on cairo (https://www.cairographics.org/manual/): a PDF, SVG or image surface
 // scaled so that one user unit is a millimetre. Text is drawn with cairo's own text API, so a PDF
-// keeps it as text (pdftotext finds it); a halo is the glyph outline stroked in the halo colour
-// underneath. The surface writes into an AtomicOutput's temporary, renamed on finish().
+// keeps it as text (pdftotext finds it; rotated text as one ActualText span per string, so it
+// is read as a word); a halo is the glyph outline stroked in the halo colour underneath. The
+// surface writes into an AtomicOutput's temporary, renamed on finish().
 #include "dtm/io/draw/canvas.hpp"
 
 #include <cairo-pdf.h>
@@ -12,6 +13,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <memory>
 #include <numbers>
 #include <optional>
 
@@ -52,6 +54,13 @@ void set_font(cairo_t* cr, const TextStyle& style) {
                            style.italic ? CAIRO_FONT_SLANT_ITALIC : CAIRO_FONT_SLANT_NORMAL,
                            style.bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
     cairo_set_font_size(cr, style.size_pt / points_per_mm);
+    // Unhinted metrics everywhere: text measured for layout (on a tiny image surface) must have
+    // the advances the PDF, SVG and PNG pages draw, not widths rounded to whole device units.
+    static thread_local std::unique_ptr<cairo_font_options_t, decltype(&cairo_font_options_destroy)>
+        options(cairo_font_options_create(), &cairo_font_options_destroy);
+    cairo_font_options_set_hint_metrics(options.get(), CAIRO_HINT_METRICS_OFF);
+    cairo_font_options_set_hint_style(options.get(), CAIRO_HINT_STYLE_NONE);
+    cairo_set_font_options(cr, options.get());
 }
 
 TextSize measure_in(cairo_t* cr, std::string_view text, const TextStyle& style) {
@@ -62,6 +71,35 @@ TextSize measure_in(cairo_t* cr, std::string_view text, const TextStyle& style) 
     cairo_font_extents_t fe;
     cairo_font_extents(cr, &fe);
     return {te.x_advance, fe.ascent, fe.descent};
+}
+
+/// True for angles that are whole multiples of 90 degrees: text extractors read those runs.
+bool axis_aligned(double angle_deg) {
+    const double r = std::fmod(std::abs(angle_deg), 90.0);
+    return r < 1e-9 || 90.0 - r < 1e-9;
+}
+
+/// Shows @p text as a single text cluster: cairo's PDF surface then wraps the glyphs in a
+/// marked-content span with /ActualText (ISO 32000-1, 14.9.4), so pdftotext and viewers read
+/// a rotated label as one word instead of one character per glyph.
+void show_as_one_cluster(cairo_t* cr, const std::string& text, double x, double y) {
+    cairo_glyph_t* glyphs = nullptr;
+    int glyph_count = 0;
+    cairo_text_cluster_t* clusters = nullptr;
+    int cluster_count = 0;
+    cairo_text_cluster_flags_t flags{};
+    const int bytes = static_cast<int>(text.size());
+    const cairo_status_t status =
+        cairo_scaled_font_text_to_glyphs(cairo_get_scaled_font(cr), x, y, text.c_str(), bytes,
+                                         &glyphs, &glyph_count, &clusters, &cluster_count, &flags);
+    if (status != CAIRO_STATUS_SUCCESS) {
+        cairo_show_text(cr, text.c_str());
+        return;
+    }
+    const cairo_text_cluster_t one{bytes, glyph_count};
+    cairo_show_text_glyphs(cr, text.c_str(), bytes, glyphs, glyph_count, &one, 1, flags);
+    cairo_glyph_free(glyphs);
+    cairo_text_cluster_free(clusters);
 }
 
 }  // namespace
@@ -86,20 +124,20 @@ struct Canvas::Impl {
         double scale = points_per_mm;
         switch (kind) {
             case Kind::pdf:
-                surface = cairo_pdf_surface_create(temp.c_str(), w * points_per_mm,
-                                                   h * points_per_mm);
+                surface =
+                    cairo_pdf_surface_create(temp.c_str(), w * points_per_mm, h * points_per_mm);
                 break;
             case Kind::svg:
-                surface = cairo_svg_surface_create(temp.c_str(), w * points_per_mm,
-                                                   h * points_per_mm);
+                surface =
+                    cairo_svg_surface_create(temp.c_str(), w * points_per_mm, h * points_per_mm);
                 break;
             case Kind::png: {
                 scale = dpi / 25.4;
                 const double px = std::ceil(w * scale);
                 const double py = std::ceil(h * scale);
                 if (px * py > 4e8) {
-                    throw UsageError("a PNG of " + std::to_string(px) + " x " +
-                                     std::to_string(py) + " pixels is too large; lower the dpi");
+                    throw UsageError("a PNG of " + std::to_string(px) + " x " + std::to_string(py) +
+                                     " pixels is too large; lower the dpi");
                 }
                 surface = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, static_cast<int>(px),
                                                      static_cast<int>(py));
@@ -154,7 +192,8 @@ void Canvas::polyline(std::span<const Point2> points, const Stroke& stroke, bool
     cairo_stroke(impl_->cr);
 }
 
-void Canvas::polygon(std::span<const std::vector<Point2>> rings, const Color& fill,
+void Canvas::polygon(std::span<const std::vector<Point2>> rings,
+                     const Color& fill,
                      const Stroke* outline) {
     cairo_t* cr = impl_->cr;
     cairo_new_path(cr);
@@ -179,8 +218,8 @@ void Canvas::polygon(std::span<const std::vector<Point2>> rings, const Color& fi
     }
 }
 
-void Canvas::rectangle(Point2 top_left, double width, double height, const Color* fill,
-                       const Stroke* outline) {
+void Canvas::rectangle(
+    Point2 top_left, double width, double height, const Color* fill, const Stroke* outline) {
     cairo_t* cr = impl_->cr;
     cairo_new_path(cr);
     cairo_rectangle(cr, top_left.x, top_left.y, width, height);
@@ -237,7 +276,11 @@ void Canvas::text(Point2 at, std::string_view text, const TextStyle& style, doub
     }
     cairo_move_to(cr, dx, dy);
     set_source(cr, style.color);
-    cairo_show_text(cr, s.c_str());
+    if (axis_aligned(angle_deg)) {
+        cairo_show_text(cr, s.c_str());
+    } else {
+        show_as_one_cluster(cr, s, dx, dy);
+    }
     cairo_new_path(cr);
     cairo_restore(cr);
 }
@@ -246,8 +289,12 @@ TextSize Canvas::measure(std::string_view text, const TextStyle& style) const {
     return measure_in(impl_->cr, text, style);
 }
 
-void Canvas::image(std::span<const std::uint8_t> rgba, int columns, int rows, Point2 top_left,
-                   double width_mm, double height_mm) {
+void Canvas::image(std::span<const std::uint8_t> rgba,
+                   int columns,
+                   int rows,
+                   Point2 top_left,
+                   double width_mm,
+                   double height_mm) {
     if (columns <= 0 || rows <= 0 ||
         rgba.size() < static_cast<std::size_t>(columns) * static_cast<std::size_t>(rows) * 4) {
         throw Error("draw: the image buffer does not hold columns x rows RGBA pixels");
@@ -257,13 +304,17 @@ void Canvas::image(std::span<const std::uint8_t> rgba, int columns, int rows, Po
     unsigned char* data = cairo_image_surface_get_data(img);
     const int stride = cairo_image_surface_get_stride(img);
     for (int r = 0; r < rows; ++r) {
-        auto* row = reinterpret_cast<std::uint32_t*>(data + static_cast<std::ptrdiff_t>(r) * stride);
+        auto* row =
+            reinterpret_cast<std::uint32_t*>(data + static_cast<std::ptrdiff_t>(r) * stride);
         for (int c = 0; c < columns; ++c) {
             const std::uint8_t* p =
                 rgba.data() + (static_cast<std::size_t>(r) * static_cast<std::size_t>(columns) +
-                               static_cast<std::size_t>(c)) * 4;
+                               static_cast<std::size_t>(c)) *
+                                  4;
             const std::uint32_t a = p[3];
-            const auto pre = [a](std::uint8_t v) { return (static_cast<std::uint32_t>(v) * a + 127) / 255; };
+            const auto pre = [a](std::uint8_t v) {
+                return (static_cast<std::uint32_t>(v) * a + 127) / 255;
+            };
             row[c] = (a << 24) | (pre(p[0]) << 16) | (pre(p[1]) << 8) | pre(p[2]);
         }
     }
@@ -285,6 +336,25 @@ void Canvas::push_clip(Point2 top_left, double width, double height) {
     cairo_new_path(impl_->cr);
     cairo_rectangle(impl_->cr, top_left.x, top_left.y, width, height);
     cairo_clip(impl_->cr);
+}
+
+void Canvas::push_clip_excluding(std::span<const std::vector<Point2>> polygons) {
+    cairo_t* cr = impl_->cr;
+    cairo_save(cr);
+    cairo_new_path(cr);
+    cairo_rectangle(cr, 0.0, 0.0, impl_->width, impl_->height);
+    for (const std::vector<Point2>& ring : polygons) {
+        for (std::size_t i = 0; i < ring.size(); ++i) {
+            if (i == 0) {
+                cairo_move_to(cr, ring[i].x, ring[i].y);
+            } else {
+                cairo_line_to(cr, ring[i].x, ring[i].y);
+            }
+        }
+        cairo_close_path(cr);
+    }
+    cairo_set_fill_rule(cr, CAIRO_FILL_RULE_EVEN_ODD);
+    cairo_clip(cr);
 }
 
 void Canvas::pop_clip() { cairo_restore(impl_->cr); }

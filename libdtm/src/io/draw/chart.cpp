@@ -212,8 +212,8 @@ void draw_chart(Canvas& canvas, const Chart& chart, Point2 top_left, double widt
             run.clear();
         };
         for (const Point2& p : s.points) {
-            if (!std::isfinite(p.x) || !std::isfinite(p.y) ||
-                (chart.x.log && p.x <= 0) || (chart.y.log && p.y <= 0)) {
+            if (!std::isfinite(p.x) || !std::isfinite(p.y) || (chart.x.log && p.x <= 0) ||
+                (chart.y.log && p.y <= 0)) {
                 flush();
                 continue;
             }
@@ -223,7 +223,8 @@ void draw_chart(Canvas& canvas, const Chart& chart, Point2 top_left, double widt
         flush();
     }
     canvas.pop_clip();
-    const std::vector<Point2> box{{left, top}, {plot_right, top}, {plot_right, bottom}, {left, bottom}};
+    const std::vector<Point2> box{
+        {left, top}, {plot_right, top}, {plot_right, bottom}, {left, bottom}};
     canvas.polyline(box, frame, true);
 
     // Legend, top-left inside the plot.
@@ -261,7 +262,9 @@ void draw_chart(Canvas& canvas, const Chart& chart, Point2 top_left, double widt
     }
 }
 
-void write_chart(const Chart& chart, const std::filesystem::path& path, double width_mm,
+void write_chart(const Chart& chart,
+                 const std::filesystem::path& path,
+                 double width_mm,
                  double height_mm) {
     Canvas canvas(path, width_mm, height_mm, 200.0);
     draw_chart(canvas, chart, {0.0, 0.0}, width_mm, height_mm);

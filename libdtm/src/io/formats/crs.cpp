@@ -6,9 +6,9 @@
 // and X south; EPSG:5514 (Krovak East-North) is E = -Y, N = -X.
 #include "dtm/io/formats/crs.hpp"
 
-#include <GeographicLib/UTMUPS.hpp>
 #include <ogr_spatialref.h>
 
+#include <GeographicLib/UTMUPS.hpp>
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -19,8 +19,7 @@
 namespace dtm::io {
 namespace {
 
-OGRSpatialReference from_wkt(const std::string& wkt)
-{
+OGRSpatialReference from_wkt(const std::string& wkt) {
     OGRSpatialReference srs;
     srs.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
     if (srs.SetFromUserInput(wkt.c_str()) != OGRERR_NONE) {
@@ -31,8 +30,7 @@ OGRSpatialReference from_wkt(const std::string& wkt)
 }
 
 template <class F>
-void for_each_vertex(TerrainInput& t, F&& f)
-{
+void for_each_vertex(TerrainInput& t, F&& f) {
     for (Point3& p : t.points) f(p.x, p.y);
     for (auto* lines : {&t.breaklines, &t.soft_breaklines, &t.boundaries, &t.holes}) {
         for (Polyline& line : *lines) {
@@ -44,8 +42,7 @@ void for_each_vertex(TerrainInput& t, F&& f)
 
 }  // namespace
 
-std::string srs_to_wkt(const OGRSpatialReference& srs)
-{
+std::string srs_to_wkt(const OGRSpatialReference& srs) {
     char* text = nullptr;
     const char* const options[] = {"FORMAT=WKT2_2018", nullptr};
     if (srs.exportToWkt(&text, options) != OGRERR_NONE || text == nullptr) {
@@ -57,8 +54,7 @@ std::string srs_to_wkt(const OGRSpatialReference& srs)
     return wkt;
 }
 
-std::string crs_to_wkt(std::string_view definition)
-{
+std::string crs_to_wkt(std::string_view definition) {
     OGRSpatialReference srs;
     srs.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
     const std::string def(definition);
@@ -68,8 +64,7 @@ std::string crs_to_wkt(std::string_view definition)
     return srs_to_wkt(srs);
 }
 
-std::string crs_label(const std::string& wkt)
-{
+std::string crs_label(const std::string& wkt) {
     if (wkt.empty()) return {};
     OGRSpatialReference srs = from_wkt(wkt);
     const char* node = srs.IsProjected() ? "PROJCS" : (srs.IsGeographic() ? "GEOGCS" : nullptr);
@@ -94,13 +89,11 @@ std::string crs_label(const std::string& wkt)
     return own != nullptr ? own : "unnamed CRS";
 }
 
-bool crs_is_geographic(const std::string& wkt)
-{
+bool crs_is_geographic(const std::string& wkt) {
     return !wkt.empty() && from_wkt(wkt).IsGeographic();
 }
 
-bool crs_is_sjtsk(const std::string& wkt)
-{
+bool crs_is_sjtsk(const std::string& wkt) {
     if (wkt.empty()) return false;
     const OGRSpatialReference srs = from_wkt(wkt);
     if (!srs.IsProjected()) return false;
@@ -110,8 +103,7 @@ bool crs_is_sjtsk(const std::string& wkt)
            (method != nullptr && std::string(method).find("Krovak") != std::string::npos);
 }
 
-bool crs_equivalent(const std::string& a, const std::string& b)
-{
+bool crs_equivalent(const std::string& a, const std::string& b) {
     if (a == b) return true;
     if (a.empty() || b.empty()) return false;
     const OGRSpatialReference sa = from_wkt(a);
@@ -119,8 +111,7 @@ bool crs_equivalent(const std::string& a, const std::string& b)
     return sa.IsSame(&sb) != 0;
 }
 
-std::size_t sjtsk_to_east_north(TerrainInput& terrain)
-{
+std::size_t sjtsk_to_east_north(TerrainInput& terrain) {
     std::size_t count = 0;
     for_each_vertex(terrain, [&count](double& x, double& y) {
         if (x <= 0.0 || y <= 0.0) return;
@@ -133,15 +124,14 @@ std::size_t sjtsk_to_east_north(TerrainInput& terrain)
     return count;
 }
 
-UtmZone utm_zone_for(double lon, double lat)
-{
+UtmZone utm_zone_for(double lon, double lat) {
     int zone = GeographicLib::UTMUPS::StandardZone(lat, lon, GeographicLib::UTMUPS::UTM);
-    if (zone < 1) zone = std::clamp(static_cast<int>(std::floor((lon + 180.0) / 6.0)) % 60 + 1, 1, 60);
+    if (zone < 1)
+        zone = std::clamp(static_cast<int>(std::floor((lon + 180.0) / 6.0)) % 60 + 1, 1, 60);
     return {zone, lat >= 0.0};
 }
 
-void project_to_utm(TerrainInput& terrain, UtmZone zone, const std::string& source_name)
-{
+void project_to_utm(TerrainInput& terrain, UtmZone zone, const std::string& source_name) {
     for_each_vertex(terrain, [&](double& x, double& y) {
         const double lon = x;
         const double lat = y;
@@ -167,16 +157,17 @@ void project_to_utm(TerrainInput& terrain, UtmZone zone, const std::string& sour
     });
 }
 
-void transform_terrain(TerrainInput& terrain, const std::string& source_wkt,
-                       const std::string& target_wkt, const std::string& source_name)
-{
+void transform_terrain(TerrainInput& terrain,
+                       const std::string& source_wkt,
+                       const std::string& target_wkt,
+                       const std::string& source_name) {
     OGRSpatialReference from = from_wkt(source_wkt);
     OGRSpatialReference to = from_wkt(target_wkt);
     std::unique_ptr<OGRCoordinateTransformation> ct(OGRCreateCoordinateTransformation(&from, &to));
     if (!ct) {
-        throw InputError(source_name, 0, 0,
-                         "cannot transform from " + crs_label(source_wkt) + " to " +
-                             crs_label(target_wkt));
+        throw InputError(
+            source_name, 0, 0,
+            "cannot transform from " + crs_label(source_wkt) + " to " + crs_label(target_wkt));
     }
     for_each_vertex(terrain, [&](double& x, double& y) {
         double tx = x, ty = y;

@@ -12,6 +12,7 @@
 #include <unordered_map>
 
 #include "dtm/core/error.hpp"
+#include "tin_checks.hpp"
 
 namespace dtm::io {
 namespace {
@@ -145,6 +146,7 @@ Tin read_2dm(const std::filesystem::path& path) {
     }
     try {
         link_neighbours(tin);
+        detail::check_tin_from_file(tin);
     } catch (const InputError& e) {
         throw InputError(path, 0, 0, "2dm: " + std::string(e.what()));
     }

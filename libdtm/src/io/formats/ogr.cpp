@@ -32,14 +32,12 @@ struct FeatureDeleter {
 };
 using FeaturePtr = std::unique_ptr<OGRFeature, FeatureDeleter>;
 
-std::string last_gdal_error()
-{
+std::string last_gdal_error() {
     const std::string msg = CPLGetLastErrorMsg();
     return msg.empty() ? std::string("GDAL gave no reason") : msg;
 }
 
-DatasetPtr open_vector(const std::filesystem::path& path)
-{
+DatasetPtr open_vector(const std::filesystem::path& path) {
     static std::once_flag registered;
     std::call_once(registered, [] { GDALAllRegister(); });
     const char* const open_options[] = {"GEOM_POSSIBLE_NAMES=WKT,geometry,the_geom,geom,wkt_geom",
@@ -66,8 +64,11 @@ public:
 
 private:
     void add_point(const OGRPoint& p, double z_override, const std::string& source);
-    void add_curve(const OGRSimpleCurve& c, double z_override, const std::string& source,
-                   bool ring, bool inner);
+    void add_curve(const OGRSimpleCurve& c,
+                   double z_override,
+                   const std::string& source,
+                   bool ring,
+                   bool inner);
     void add_polygon(const OGRPolygon& p, double z_override, const std::string& source);
     void push_line(Polyline line, bool ring, bool inner);
 
@@ -78,31 +79,38 @@ private:
     std::size_t open_rings_ = 0;
 };
 
-void OgrCollector::add_point(const OGRPoint& p, double z_override, const std::string& source)
-{
+void OgrCollector::add_point(const OGRPoint& p, double z_override, const std::string& source) {
     if (p.IsEmpty()) return;
     const double z = !std::isnan(z_override) ? z_override : (p.Is3D() ? p.getZ() : no_z);
     switch (file_.role) {
         case InputRole::points:
             if (std::isnan(z)) {
                 throw InputError(file_.path, 0, 0,
-                                 source + ": expected a point with a height (PointZ, or give "
-                                          "`z_field` NAME), found a 2-D point");
+                                 source +
+                                     ": expected a point with a height (PointZ, or give "
+                                     "`z_field` NAME), found a 2-D point");
             }
             result_.terrain.points.push_back({p.getX(), p.getY(), z});
             break;
-        case InputRole::holes: result_.terrain.hole_seeds.push_back({p.getX(), p.getY()}); break;
-        default: ++ignored_points_; break;
+        case InputRole::holes:
+            result_.terrain.hole_seeds.push_back({p.getX(), p.getY()});
+            break;
+        default:
+            ++ignored_points_;
+            break;
     }
 }
 
-void OgrCollector::push_line(Polyline line, bool ring, bool inner)
-{
+void OgrCollector::push_line(Polyline line, bool ring, bool inner) {
     TerrainInput& t = result_.terrain;
     switch (file_.role) {
         case InputRole::points:
-        case InputRole::breaklines: t.breaklines.push_back(std::move(line)); break;
-        case InputRole::soft_breaklines: t.soft_breaklines.push_back(std::move(line)); break;
+        case InputRole::breaklines:
+            t.breaklines.push_back(std::move(line));
+            break;
+        case InputRole::soft_breaklines:
+            t.soft_breaklines.push_back(std::move(line));
+            break;
         case InputRole::boundary:
             (inner ? t.holes : t.boundaries).push_back(std::move(line));
             break;
@@ -117,9 +125,8 @@ void OgrCollector::push_line(Polyline line, bool ring, bool inner)
     (void)ring;
 }
 
-void OgrCollector::add_curve(const OGRSimpleCurve& c, double z_override,
-                             const std::string& source, bool ring, bool inner)
-{
+void OgrCollector::add_curve(
+    const OGRSimpleCurve& c, double z_override, const std::string& source, bool ring, bool inner) {
     Polyline line;
     line.source = source;
     const int n = c.getNumPoints();
@@ -144,18 +151,16 @@ void OgrCollector::add_curve(const OGRSimpleCurve& c, double z_override,
     push_line(std::move(line), ring, inner);
 }
 
-void OgrCollector::add_polygon(const OGRPolygon& p, double z_override, const std::string& source)
-{
+void OgrCollector::add_polygon(const OGRPolygon& p, double z_override, const std::string& source) {
     if (p.IsEmpty()) return;
     add_curve(*p.getExteriorRing(), z_override, source, true, false);
     for (int i = 0; i < p.getNumInteriorRings(); ++i) {
-        add_curve(*p.getInteriorRing(i), z_override, source + " inner ring " + std::to_string(i + 1),
-                  true, true);
+        add_curve(*p.getInteriorRing(i), z_override,
+                  source + " inner ring " + std::to_string(i + 1), true, true);
     }
 }
 
-void OgrCollector::add(const OGRGeometry& g, double z_override, const std::string& source)
-{
+void OgrCollector::add(const OGRGeometry& g, double z_override, const std::string& source) {
     const OGRwkbGeometryType type = wkbFlatten(g.getGeometryType());
     if (type == wkbPoint) {
         add_point(*g.toPoint(), z_override, source);
@@ -165,7 +170,8 @@ void OgrCollector::add(const OGRGeometry& g, double z_override, const std::strin
         add_polygon(*g.toPolygon(), z_override, source);
     } else if (OGR_GT_IsSubClassOf(type, wkbGeometryCollection)) {
         const OGRGeometryCollection& c = *g.toGeometryCollection();
-        for (int i = 0; i < c.getNumGeometries(); ++i) add(*c.getGeometryRef(i), z_override, source);
+        for (int i = 0; i < c.getNumGeometries(); ++i)
+            add(*c.getGeometryRef(i), z_override, source);
     } else if (OGR_GT_IsCurve(type) || OGR_GT_IsSurface(type)) {
         std::unique_ptr<OGRGeometry> linear(g.getLinearGeometry());
         if (linear) add(*linear, z_override, source);
@@ -176,8 +182,7 @@ void OgrCollector::add(const OGRGeometry& g, double z_override, const std::strin
     }
 }
 
-void OgrCollector::finish_warnings()
-{
+void OgrCollector::finish_warnings() {
     if (ignored_points_ > 0) {
         result_.summary.warnings.push_back(std::to_string(ignored_points_) +
                                            " point geometries are not used in a line input");
@@ -192,8 +197,7 @@ void OgrCollector::finish_warnings()
     }
 }
 
-double feature_z(const OGRFeature& f, int z_index, const InputFile& file, const std::string& src)
-{
+double feature_z(const OGRFeature& f, int z_index, const InputFile& file, const std::string& src) {
     if (z_index < 0) return no_z;
     if (!f.IsFieldSetAndNotNull(z_index)) {
         throw InputError(file.path, 0, 0, src + ": expected a height in the `z_field`, found none");
@@ -201,8 +205,7 @@ double feature_z(const OGRFeature& f, int z_index, const InputFile& file, const 
     return f.GetFieldAsDouble(z_index);
 }
 
-int z_field_index(OGRLayer& layer, const ReadOptions& options, const InputFile& file)
-{
+int z_field_index(OGRLayer& layer, const ReadOptions& options, const InputFile& file) {
     if (options.z_field.empty()) return -1;
     const int index = layer.GetLayerDefn()->GetFieldIndex(options.z_field.c_str());
     if (index >= 0) return index;
@@ -215,18 +218,20 @@ int z_field_index(OGRLayer& layer, const ReadOptions& options, const InputFile& 
                          layer.GetName() + "', found: " + (names.empty() ? "no fields" : names));
 }
 
-void read_layer(OGRLayer& layer, const InputFile& file, const ReadOptions& options,
-                OgrCollector& collector, const Progress& progress)
-{
+void read_layer(OGRLayer& layer,
+                const InputFile& file,
+                const ReadOptions& options,
+                OgrCollector& collector,
+                const Progress& progress) {
     if (!options.where.empty()) {
         CPLErrorReset();
         CPLPushErrorHandler(CPLQuietErrorHandler);
         const OGRErr err = layer.SetAttributeFilter(options.where.c_str());
         CPLPopErrorHandler();
         if (err != OGRERR_NONE) {
-            throw InputError(file.path, 0, 0, "`where`: expected an attribute filter for layer '" +
-                                                  std::string(layer.GetName()) + "': " +
-                                                  last_gdal_error());
+            throw InputError(file.path, 0, 0,
+                             "`where`: expected an attribute filter for layer '" +
+                                 std::string(layer.GetName()) + "': " + last_gdal_error());
         }
     }
     const int z_index = z_field_index(layer, options, file);
@@ -255,8 +260,7 @@ void read_layer(OGRLayer& layer, const InputFile& file, const ReadOptions& optio
 
 }  // namespace
 
-ReadResult read_ogr(const InputFile& file, const ReadOptions& options, const Progress& progress)
-{
+ReadResult read_ogr(const InputFile& file, const ReadOptions& options, const Progress& progress) {
     DatasetPtr ds = open_vector(file.path);
     ReadResult result;
     result.summary.path = file.path;
@@ -266,9 +270,11 @@ ReadResult read_ogr(const InputFile& file, const ReadOptions& options, const Pro
         OGRLayer* layer = ds->GetLayerByName(options.layer.c_str());
         if (layer == nullptr) {
             std::string names;
-            for (OGRLayer* l : ds->GetLayers()) names += (names.empty() ? "" : ", ") + std::string(l->GetName());
-            throw InputError(file.path, 0, 0, "`layer`: expected one of the layers (" + names +
-                                                  "), found '" + options.layer + "'");
+            for (OGRLayer* l : ds->GetLayers())
+                names += (names.empty() ? "" : ", ") + std::string(l->GetName());
+            throw InputError(file.path, 0, 0,
+                             "`layer`: expected one of the layers (" + names + "), found '" +
+                                 options.layer + "'");
         }
         layers.push_back(layer);
     } else {
@@ -287,8 +293,9 @@ ReadResult read_ogr(const InputFile& file, const ReadOptions& options, const Pro
     return result;
 }
 
-ReadResult read_ogr_text(const InputFile& file, const ReadOptions& options, const Progress& progress)
-{
+ReadResult read_ogr_text(const InputFile& file,
+                         const ReadOptions& options,
+                         const Progress& progress) {
     ReadResult result = read_ogr(file, options, progress);
     result.summary.format = "text (OGR, geometry column)";
     return result;

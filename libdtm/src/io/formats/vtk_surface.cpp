@@ -6,6 +6,7 @@
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
+#include <vtkErrorCode.h>
 #include <vtkFieldData.h>
 #include <vtkIdTypeArray.h>
 #include <vtkIntArray.h>
@@ -15,6 +16,8 @@
 #include <vtkPolyData.h>
 #include <vtkStringArray.h>
 #include <vtkXMLPolyDataWriter.h>
+
+#include <cstring>
 
 #include "dtm/core/error.hpp"
 
@@ -90,8 +93,21 @@ void write_vtp(const Tin& tin, const std::filesystem::path& path, const TinWrite
     writer->SetInputData(poly);
     writer->SetDataModeToAppended();
     writer->SetCompressorTypeToZLib();
-    if (writer->Write() != 1 || writer->GetErrorCode() != 0) {
-        throw Error("vtp: VTK could not write " + path.string());
+    // A failed write (full disk, file-size limit) becomes one dtm error below instead of VTK's
+    // multi-line log on stderr.
+    const int display = vtkObject::GetGlobalWarningDisplay();
+    vtkObject::GlobalWarningDisplayOff();
+    const int written = writer->Write();
+    const unsigned long error = writer->GetErrorCode();
+    vtkObject::SetGlobalWarningDisplay(display);
+    if (written != 1 || error != 0) {
+        const std::string why = error == vtkErrorCode::OutOfDiskSpaceError
+                                    ? ": no space left (full disk or file-size limit)"
+                                : error > 0 && error < 1000
+                                    ? std::string(": ") + std::strerror(static_cast<int>(error))
+                                : error != 0 ? ": VTK error " + std::to_string(error)
+                                             : std::string();
+        throw Error("vtp: cannot write " + path.string() + why);
     }
 }
 

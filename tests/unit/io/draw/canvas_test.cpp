@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -12,25 +14,15 @@
 
 #include "dtm/core/error.hpp"
 #include "dtm/io/draw/chart.hpp"
+#include "support/pdf_tools.hpp"
 #include "support/test_support.hpp"
 
 namespace dtm::io::draw {
 namespace {
 
-std::string command_output(const std::string& command) {
-    std::string out;
-    FILE* pipe = ::popen(command.c_str(), "r");
-    if (pipe == nullptr) return out;
-    char buffer[4096];
-    std::size_t n = 0;
-    while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) out.append(buffer, n);
-    ::pclose(pipe);
-    return out;
-}
+using test::command_output;
 
-bool have(const char* tool) {
-    return std::system((std::string("command -v ") + tool + " > /dev/null 2>&1").c_str()) == 0;
-}
+bool have(const char* tool) { return test::have_tool(tool); }
 
 void draw_sample(Canvas& c) {
     const std::vector<Point2> line{{10, 10}, {100, 50}, {150, 20}};
@@ -60,6 +52,60 @@ TEST(Canvas, PdfKeepsTextAndPageSize) {
     const std::string info = command_output("pdfinfo '" + path.string() + "'");
     // A4 in points: 595.276 x 841.89.
     EXPECT_NE(info.find("595.276 x 841.89"), std::string::npos) << info;
+}
+
+TEST(Canvas, RotatedTextIsExtractedAsWholeWords) {
+    // pdftotext reads text at angles other than multiples of 90 degrees one glyph at a time
+    // unless the glyphs carry an /ActualText span: every label must come back whole, in the
+    // default, -raw and -layout modes.
+    test::ScratchDir dir;
+    const auto path = dir / "labels.pdf";
+    const std::vector<std::pair<std::string, double>> labels{{"245", 30.0},    {"250.5", -60.0},
+                                                             {"1255", 75.0},   {"260", 180.0},
+                                                             {"-3.25", 200.0}, {"Ústí", 145.0}};
+    {
+        Canvas c(path, 200.0, 200.0);
+        TextStyle style;
+        style.halo_mm = 0.3;
+        for (std::size_t i = 0; i < labels.size(); ++i) {
+            c.text({30.0 + 25.0 * static_cast<double>(i), 40.0 + 20.0 * static_cast<double>(i)},
+                   labels[i].first, style, labels[i].second);
+        }
+        c.finish();
+    }
+    if (!have("pdftotext")) GTEST_SKIP() << "poppler-utils not installed";
+    for (const std::string mode : {"", "-raw", "-layout"}) {
+        std::vector<std::string> words = test::pdf_words(path, mode);
+        std::sort(words.begin(), words.end());
+        std::vector<std::string> expected;
+        for (const auto& l : labels) expected.push_back(l.first);
+        std::sort(expected.begin(), expected.end());
+        EXPECT_EQ(words, expected) << "pdftotext " << mode;
+    }
+}
+
+TEST(Canvas, MeasuredWidthIsTheDrawnWidth) {
+    // Label boxes are computed from measure_text; pdftotext -bbox reports the drawn word.
+    test::ScratchDir dir;
+    const auto path = dir / "measure.pdf";
+    TextStyle style;
+    style.size_pt = 6.5;
+    const std::string word = "Index-contour-every-5m";
+    {
+        Canvas c(path, 200.0, 100.0);
+        c.text({20.0, 50.0}, word, style);
+        c.finish();
+    }
+    if (!have("pdftotext")) GTEST_SKIP() << "poppler-utils not installed";
+    const std::string xml = command_output("pdftotext -bbox '" + path.string() + "' -");
+    const auto attr = [&](const std::string& name) {
+        const std::size_t at = xml.find(name + "=\"");
+        return at == std::string::npos ? -1.0 : std::stod(xml.substr(at + name.size() + 2));
+    };
+    const double drawn_mm = (attr("xMax") - attr("xMin")) * 25.4 / 72.0;
+    const double measured = measure_text(word, style).width;
+    EXPECT_NEAR(drawn_mm, measured, 0.01 * measured) << xml;
+    EXPECT_NEAR(attr("xMin") * 25.4 / 72.0, 20.0, 0.05);
 }
 
 TEST(Canvas, PngHasThePixelSizeOfItsDpi) {

@@ -10,8 +10,7 @@
 
 namespace {
 
-TEST(Crs, EsriPrjTextIsIdentifiedAsEpsg5514)
-{
+TEST(Crs, EsriPrjTextIsIdentifiedAsEpsg5514) {
     const std::string rel = "points-cz-sjtsk-jvf-dtm/derived/zps_points_pointz.prj";
     if (!dtm::test::shared_data_available(rel)) GTEST_SKIP();
     const std::string prj = dtm::test::read_file(dtm::test::shared_data_path(rel));
@@ -20,8 +19,7 @@ TEST(Crs, EsriPrjTextIsIdentifiedAsEpsg5514)
     EXPECT_FALSE(dtm::io::crs_is_geographic(prj));
 }
 
-TEST(Crs, UserDefinitionsAndBadOnes)
-{
+TEST(Crs, UserDefinitionsAndBadOnes) {
     const std::string wkt = dtm::io::crs_to_wkt("EPSG:32633");
     EXPECT_EQ(dtm::io::crs_label(wkt), "EPSG:32633");
     EXPECT_TRUE(dtm::io::crs_is_geographic(dtm::io::crs_to_wkt("EPSG:4326")));
@@ -30,11 +28,10 @@ TEST(Crs, UserDefinitionsAndBadOnes)
     EXPECT_FALSE(dtm::io::crs_equivalent(wkt, dtm::io::crs_to_wkt("EPSG:32634")));
 }
 
-TEST(Crs, SjtskPositiveYXBecomeEastNorthInEitherColumnOrder)
-{
+TEST(Crs, SjtskPositiveYXBecomeEastNorthInEitherColumnOrder) {
     dtm::TerrainInput t;
-    t.points = {{745123.45, 1045123.12, 312.45},   // Y, X
-                {1045120.00, 745130.10, 312.90},   // X, Y
+    t.points = {{745123.45, 1045123.12, 312.45},  // Y, X
+                {1045120.00, 745130.10, 312.90},  // X, Y
                 {-745000.0, -1045000.0, 300.0}};  // already East-North
     t.breaklines.push_back({{{745100.0, 1045100.0, 1.0}}, false, ""});
     t.hole_seeds = {{745110.0, 1045110.0}};
@@ -46,18 +43,16 @@ TEST(Crs, SjtskPositiveYXBecomeEastNorthInEitherColumnOrder)
     EXPECT_EQ(t.hole_seeds[0], (dtm::Point2{-745110.0, -1045110.0}));
 }
 
-TEST(Crs, StandardUtmZones)
-{
-    EXPECT_EQ(dtm::io::utm_zone_for(14.42, 50.09).epsg(), 32633);    // Prague
-    EXPECT_EQ(dtm::io::utm_zone_for(151.2, -33.86).epsg(), 32756);   // Sydney
-    EXPECT_EQ(dtm::io::utm_zone_for(5.5, 60.4).zone, 32);            // Norway exception
-    EXPECT_EQ(dtm::io::utm_zone_for(-63.5, 45.4).epsg(), 32620);     // Nova Scotia
+TEST(Crs, StandardUtmZones) {
+    EXPECT_EQ(dtm::io::utm_zone_for(14.42, 50.09).epsg(), 32633);   // Prague
+    EXPECT_EQ(dtm::io::utm_zone_for(151.2, -33.86).epsg(), 32756);  // Sydney
+    EXPECT_EQ(dtm::io::utm_zone_for(5.5, 60.4).zone, 32);           // Norway exception
+    EXPECT_EQ(dtm::io::utm_zone_for(-63.5, 45.4).epsg(), 32620);    // Nova Scotia
 }
 
 // Reference values from PROJ (gdaltransform -s_srs EPSG:4326 -t_srs EPSG:326xx/327xx); PROJ's
 // extended transverse Mercator and GeographicLib agree to well under a millimetre in a zone.
-TEST(Crs, GeographicLibUtmMatchesReferenceValues)
-{
+TEST(Crs, GeographicLibUtmMatchesReferenceValues) {
     dtm::TerrainInput t;
     t.points = {{14.4214, 50.0875, 245.1}, {14.3, 49.9, 301.5}};
     dtm::io::project_to_utm(t, {33, true}, "test");
@@ -73,15 +68,13 @@ TEST(Crs, GeographicLibUtmMatchesReferenceValues)
     EXPECT_NEAR(south.points[0].y, 6252288.75288829, 1e-3);
 }
 
-TEST(Crs, LatitudeOutOfRangeIsAnInputError)
-{
+TEST(Crs, LatitudeOutOfRangeIsAnInputError) {
     dtm::TerrainInput t;
     t.points = {{14.0, 95.0, 0.0}};
     EXPECT_THROW(dtm::io::project_to_utm(t, {33, true}, "f.csv"), dtm::InputError);
 }
 
-TEST(Crs, GdalTransformAgreesWithGeographicLib)
-{
+TEST(Crs, GdalTransformAgreesWithGeographicLib) {
     dtm::TerrainInput a;
     a.points = {{14.4214, 50.0875, 1.0}};
     dtm::TerrainInput b = a;

@@ -43,8 +43,9 @@ TEST(Mesh2dm, ReadingGivesALinkedTin) {
 
 TEST(Mesh2dm, OverlappingElementsAreAnInputErrorNamingTheFile) {
     dtm::test::ScratchDir dir;
-    dtm::test::write_file(dir / "bad.2dm",
-                          "MESH2D\nND 1 0 0 0\nND 2 1 0 0\nND 3 0 1 0\nE3T 1 1 2 3 1\nE3T 2 1 2 3 1\n");
+    dtm::test::write_file(
+        dir / "bad.2dm",
+        "MESH2D\nND 1 0 0 0\nND 2 1 0 0\nND 3 0 1 0\nE3T 1 1 2 3 1\nE3T 2 1 2 3 1\n");
     try {
         (void)dtm::io::read_2dm(dir / "bad.2dm");
         FAIL() << "no exception";

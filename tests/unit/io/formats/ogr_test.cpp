@@ -26,10 +26,11 @@ struct Feature {
     const char* kind;
 };
 
-void write_vector(const std::filesystem::path& path, const char* driver_name,
-                  std::initializer_list<Feature> features, int epsg = 5514,
-                  const char* layer_name = "data")
-{
+void write_vector(const std::filesystem::path& path,
+                  const char* driver_name,
+                  std::initializer_list<Feature> features,
+                  int epsg = 5514,
+                  const char* layer_name = "data") {
     GDALAllRegister();
     GDALDriver* driver = GetGDALDriverManager()->GetDriverByName(driver_name);
     ASSERT_NE(driver, nullptr);
@@ -55,13 +56,11 @@ void write_vector(const std::filesystem::path& path, const char* driver_name,
     GDALClose(ds);
 }
 
-ReadResult read(const std::filesystem::path& path, InputRole role, ReadOptions options = {})
-{
+ReadResult read(const std::filesystem::path& path, InputRole role, ReadOptions options = {}) {
     return dtm::io::read_ogr(InputFile{path, role}, options);
 }
 
-TEST(OgrReader, PolygonAsBoundaryGivesOuterBoundaryAndInnerHoles)
-{
+TEST(OgrReader, PolygonAsBoundaryGivesOuterBoundaryAndInnerHoles) {
     dtm::test::ScratchDir dir;
     write_vector(dir / "b.gpkg", "GPKG",
                  {{"POLYGON Z ((0 0 1,100 0 2,100 100 3,0 100 4,0 0 1),"
@@ -77,8 +76,7 @@ TEST(OgrReader, PolygonAsBoundaryGivesOuterBoundaryAndInnerHoles)
     EXPECT_FALSE(r.crs_wkt.empty());
 }
 
-TEST(OgrReader, MixedLayerAsPositionalInputGivesPointsAndBreaklines)
-{
+TEST(OgrReader, MixedLayerAsPositionalInputGivesPointsAndBreaklines) {
     dtm::test::ScratchDir dir;
     write_vector(dir / "m.gpkg", "GPKG",
                  {{"POINT Z (1 2 3)", 0, "pt"},
@@ -94,8 +92,7 @@ TEST(OgrReader, MixedLayerAsPositionalInputGivesPointsAndBreaklines)
     EXPECT_NE(r.terrain.breaklines[0].source.find("feature"), std::string::npos);
 }
 
-TEST(OgrReader, DxfMixedLayerGivesPointsAndBreaklines)
-{
+TEST(OgrReader, DxfMixedLayerGivesPointsAndBreaklines) {
     dtm::test::ScratchDir dir;
     GDALAllRegister();
     GDALDriver* driver = GetGDALDriverManager()->GetDriverByName("DXF");
@@ -103,7 +100,8 @@ TEST(OgrReader, DxfMixedLayerGivesPointsAndBreaklines)
     GDALDataset* ds = driver->Create((dir / "survey.dxf").c_str(), 0, 0, 0, GDT_Unknown, nullptr);
     ASSERT_NE(ds, nullptr);
     OGRLayer* layer = ds->CreateLayer("entities", nullptr, wkbUnknown, nullptr);
-    for (const char* wkt : {"POINT Z (1 2 3)", "POINT Z (4 5 6)", "LINESTRING Z (0 0 1,10 0 2,10 10 3)"}) {
+    for (const char* wkt :
+         {"POINT Z (1 2 3)", "POINT Z (4 5 6)", "LINESTRING Z (0 0 1,10 0 2,10 10 3)"}) {
         OGRFeature* f = OGRFeature::CreateFeature(layer->GetLayerDefn());
         OGRGeometry* g = nullptr;
         ASSERT_EQ(OGRGeometryFactory::createFromWkt(wkt, nullptr, &g), OGRERR_NONE);
@@ -121,8 +119,7 @@ TEST(OgrReader, DxfMixedLayerGivesPointsAndBreaklines)
     EXPECT_EQ(r.summary.format, "OGR DXF");
 }
 
-TEST(OgrReader, ZFieldGivesEveryVertexOfAContourItsHeight)
-{
+TEST(OgrReader, ZFieldGivesEveryVertexOfAContourItsHeight) {
     dtm::test::ScratchDir dir;
     write_vector(dir / "c.geojson", "GeoJSON",
                  {{"LINESTRING (0 0,10 0,10 10)", 250.0, "contour"},
@@ -136,8 +133,7 @@ TEST(OgrReader, ZFieldGivesEveryVertexOfAContourItsHeight)
     EXPECT_EQ(r.terrain.breaklines[1].points[1].z, 255.0);
 }
 
-TEST(OgrReader, TwoDimensionalPointsNeedAZField)
-{
+TEST(OgrReader, TwoDimensionalPointsNeedAZField) {
     dtm::test::ScratchDir dir;
     write_vector(dir / "p.gpkg", "GPKG", {{"POINT (1 2)", 7.5, "pt"}});
     EXPECT_THROW((void)read(dir / "p.gpkg", InputRole::points), dtm::InputError);
@@ -148,8 +144,7 @@ TEST(OgrReader, TwoDimensionalPointsNeedAZField)
     EXPECT_EQ(r.terrain.points[0], (dtm::Point3{1, 2, 7.5}));
 }
 
-TEST(OgrReader, MissingZFieldNamesTheAvailableFields)
-{
+TEST(OgrReader, MissingZFieldNamesTheAvailableFields) {
     dtm::test::ScratchDir dir;
     write_vector(dir / "p.gpkg", "GPKG", {{"POINT Z (1 2 3)", 7.5, "pt"}});
     ReadOptions options;
@@ -162,12 +157,11 @@ TEST(OgrReader, MissingZFieldNamesTheAvailableFields)
     }
 }
 
-TEST(OgrReader, WhereFiltersFeaturesAndBadFilterIsAnError)
-{
+TEST(OgrReader, WhereFiltersFeaturesAndBadFilterIsAnError) {
     dtm::test::ScratchDir dir;
-    write_vector(dir / "w.gpkg", "GPKG",
-                 {{"LINESTRING Z (0 0 1,10 0 2)", 0, "edge"},
-                  {"LINESTRING Z (0 5 1,10 5 2)", 0, "fence"}});
+    write_vector(
+        dir / "w.gpkg", "GPKG",
+        {{"LINESTRING Z (0 0 1,10 0 2)", 0, "edge"}, {"LINESTRING Z (0 5 1,10 5 2)", 0, "fence"}});
     ReadOptions options;
     options.where = "kind = 'edge'";
     EXPECT_EQ(read(dir / "w.gpkg", InputRole::breaklines, options).terrain.breaklines.size(), 1u);
@@ -175,8 +169,7 @@ TEST(OgrReader, WhereFiltersFeaturesAndBadFilterIsAnError)
     EXPECT_THROW((void)read(dir / "w.gpkg", InputRole::breaklines, options), dtm::InputError);
 }
 
-TEST(OgrReader, LayerChoiceAndUnknownLayerListsLayers)
-{
+TEST(OgrReader, LayerChoiceAndUnknownLayerListsLayers) {
     dtm::test::ScratchDir dir;
     write_vector(dir / "l.gpkg", "GPKG", {{"POINT Z (1 2 3)", 0, "pt"}}, 5514, "spot_heights");
     ReadOptions options;
@@ -191,27 +184,24 @@ TEST(OgrReader, LayerChoiceAndUnknownLayerListsLayers)
     }
 }
 
-TEST(OgrReader, HolesInputTakesRingsAndPointSeeds)
-{
+TEST(OgrReader, HolesInputTakesRingsAndPointSeeds) {
     dtm::test::ScratchDir dir;
-    write_vector(dir / "h.gpkg", "GPKG",
-                 {{"POLYGON Z ((0 0 1,10 0 1,10 10 1,0 0 1))", 0, "lake"},
-                  {"POINT (50 50)", 0, "seed"}});
+    write_vector(
+        dir / "h.gpkg", "GPKG",
+        {{"POLYGON Z ((0 0 1,10 0 1,10 10 1,0 0 1))", 0, "lake"}, {"POINT (50 50)", 0, "seed"}});
     const ReadResult r = read(dir / "h.gpkg", InputRole::holes);
     EXPECT_EQ(r.terrain.holes.size(), 1u);
     ASSERT_EQ(r.terrain.hole_seeds.size(), 1u);
     EXPECT_EQ(r.terrain.hole_seeds[0], (dtm::Point2{50, 50}));
 }
 
-TEST(OgrReader, UnreadableFileIsAnInputError)
-{
+TEST(OgrReader, UnreadableFileIsAnInputError) {
     dtm::test::ScratchDir dir;
     dtm::test::write_file(dir / "x.shp", "not a shapefile");
     EXPECT_THROW((void)read(dir / "x.shp", InputRole::points), dtm::InputError);
 }
 
-TEST(OgrReaderRealData, JvfShapefilesCarryEpsg5514)
-{
+TEST(OgrReaderRealData, JvfShapefilesCarryEpsg5514) {
     const std::string d = "points-cz-sjtsk-jvf-dtm/derived/";
     if (!dtm::test::shared_data_available(d + "zps_points_pointz.shp")) GTEST_SKIP();
     const ReadResult points =
@@ -230,8 +220,7 @@ TEST(OgrReaderRealData, JvfShapefilesCarryEpsg5514)
     }
 }
 
-TEST(OgrReaderRealData, LastoolsPolygonZWithMAndEmptyDbf)
-{
+TEST(OgrReaderRealData, LastoolsPolygonZWithMAndEmptyDbf) {
     const std::string f = "shp-lastools-breaklines/lake_breakline.shp";
     if (!dtm::test::shared_data_available(f)) GTEST_SKIP();
     const ReadResult hard = read(dtm::test::shared_data_path(f), InputRole::breaklines);

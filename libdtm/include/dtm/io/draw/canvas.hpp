@@ -35,6 +35,15 @@ struct Stroke {
     double width_mm = 0.25;
     std::vector<double> dash_mm;  ///< on/off lengths; empty: solid
     bool round = false;           ///< round caps and joins (default: butt caps, miter joins)
+
+    /// A solid line of @p color, @p width_mm wide.
+    [[nodiscard]] static Stroke solid(Color color, double width_mm, bool round = false) {
+        Stroke s;
+        s.color = color;
+        s.width_mm = width_mm;
+        s.round = round;
+        return s;
+    }
 };
 
 enum class HAlign { left, center, right };
@@ -77,19 +86,29 @@ public:
 
     void polyline(std::span<const Point2> points, const Stroke& stroke, bool closed = false);
     /// Fills the rings (even-odd rule: inner rings are holes), then strokes them if @p outline.
-    void polygon(std::span<const std::vector<Point2>> rings, const Color& fill,
+    void polygon(std::span<const std::vector<Point2>> rings,
+                 const Color& fill,
                  const Stroke* outline = nullptr);
-    void rectangle(Point2 top_left, double width, double height, const Color* fill,
-                   const Stroke* outline);
+    void rectangle(
+        Point2 top_left, double width, double height, const Color* fill, const Stroke* outline);
     void circle(Point2 centre, double radius_mm, const Color* fill, const Stroke* outline);
     /// UTF-8 @p text at @p at, rotated by @p angle_deg counter-clockwise (as read on the page).
+    /// In a PDF, text at angles other than multiples of 90 degrees carries an /ActualText span,
+    /// so text extraction (pdftotext) and search read it as one word.
     void text(Point2 at, std::string_view text, const TextStyle& style, double angle_deg = 0.0);
     [[nodiscard]] TextSize measure(std::string_view text, const TextStyle& style) const;
     /// An RGBA image (row-major, 8 bits a channel, not premultiplied) scaled into the rectangle.
-    void image(std::span<const std::uint8_t> rgba, int columns, int rows, Point2 top_left,
-               double width_mm, double height_mm);
+    void image(std::span<const std::uint8_t> rgba,
+               int columns,
+               int rows,
+               Point2 top_left,
+               double width_mm,
+               double height_mm);
     /// Limits drawing to a rectangle until pop_clip().
     void push_clip(Point2 top_left, double width, double height);
+    /// Limits drawing to the page minus the given convex polygons (e.g. the boxes of map labels
+    /// that interrupt lines) until pop_clip(). The polygons must not overlap each other.
+    void push_clip_excluding(std::span<const std::vector<Point2>> polygons);
     void pop_clip();
     /// Starts a new page of the same size (PDF: a second page; SVG and PNG: refused).
     void new_page();

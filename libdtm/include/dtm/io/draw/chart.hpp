@@ -16,14 +16,14 @@ namespace dtm::io::draw {
 
 struct Axis {
     std::string label;
-    bool log = false;            ///< base-10 logarithmic (every value must be > 0)
-    std::optional<double> min;   ///< default: from the data
+    bool log = false;           ///< base-10 logarithmic (every value must be > 0)
+    std::optional<double> min;  ///< default: from the data
     std::optional<double> max;
 };
 
 struct Series {
-    std::string name;             ///< legend entry (empty: none)
-    std::vector<Point2> points;   ///< in data units; a NaN y breaks the line (a gap)
+    std::string name;            ///< legend entry (empty: none)
+    std::vector<Point2> points;  ///< in data units; a NaN y breaks the line (a gap)
     Color color = Color::rgb(0x1f77b4);
     bool line = true;
     bool markers = true;
@@ -54,7 +54,9 @@ struct Chart {
 void draw_chart(Canvas& canvas, const Chart& chart, Point2 top_left, double width, double height);
 
 /// One chart on its own page (.pdf, .svg or .png by extension), written atomically.
-void write_chart(const Chart& chart, const std::filesystem::path& path, double width_mm = 160.0,
+void write_chart(const Chart& chart,
+                 const std::filesystem::path& path,
+                 double width_mm = 160.0,
                  double height_mm = 100.0);
 
 /// Round tick positions covering [lo, hi]: 1, 2, 5 x 10^k steps (linear, about @p target ticks)

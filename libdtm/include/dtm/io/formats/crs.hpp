@@ -21,6 +21,22 @@ namespace dtm::io {
 /// WKT2 of an OGR spatial reference.
 [[nodiscard]] std::string srs_to_wkt(const OGRSpatialReference& srs);
 
+/// A CRS as read from a file, identified where it carries no EPSG code (issue 17.6).
+struct CrsIdentity {
+    std::string wkt;   ///< WKT2: the EPSG entry when identified, else the definition as it is
+    std::string note;  ///< what was done, for `dtm info`; empty when the file gave an EPSG code
+};
+
+/// Minimum GDAL FindMatches confidence (percent) of an identification by name and parameters.
+inline constexpr int crs_match_confidence = 90;
+
+/// Identifies @p definition (WKT of any flavour, an ESRI .prj text, ...): kept as it is when it
+/// carries an EPSG code; else the EPSG entry of GDAL's FindMatches is used when the best EPSG
+/// match is unique and at least crs_match_confidence %, or is the only EPSG match with the very
+/// same projection parameters (PROJ string: ESRI names of datums that EPSG renamed); else the
+/// definition is kept. @throws InputError if GDAL/PROJ cannot read @p definition.
+[[nodiscard]] CrsIdentity identify_crs(const std::string& definition);
+
 /// "EPSG:5514" when the CRS matches an EPSG entry (also for ESRI .prj text), else its name;
 /// empty for an empty @p wkt.
 [[nodiscard]] std::string crs_label(const std::string& wkt);
@@ -50,7 +66,9 @@ void project_to_utm(TerrainInput& terrain, UtmZone zone, const std::string& sour
 
 /// Transforms every vertex and seed from @p from_wkt to @p to_wkt with GDAL/PROJ.
 /// @throws InputError naming @p source_name if a point cannot be transformed.
-void transform_terrain(TerrainInput& terrain, const std::string& from_wkt,
-                       const std::string& to_wkt, const std::string& source_name);
+void transform_terrain(TerrainInput& terrain,
+                       const std::string& from_wkt,
+                       const std::string& to_wkt,
+                       const std::string& source_name);
 
 }  // namespace dtm::io

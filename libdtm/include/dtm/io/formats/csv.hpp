@@ -20,12 +20,14 @@ namespace dtm::io {
 /// read_ogr_text, by csv_has_geometry_column.)
 /// @throws InputError "file:line:column: expected ..., found '...'" unless
 ///         options.skip_bad_lines; Cancelled.
-[[nodiscard]] ReadResult read_csv(const InputFile& file, const ReadOptions& options,
+[[nodiscard]] ReadResult read_csv(const InputFile& file,
+                                  const ReadOptions& options,
                                   const Progress& progress = {});
 
 /// Same as read_csv() on text already in memory (@p file names it in messages). Used by the
 /// fuzz target and the tests; never touches the file system.
-[[nodiscard]] ReadResult parse_csv_text(std::string_view text, const InputFile& file,
+[[nodiscard]] ReadResult parse_csv_text(std::string_view text,
+                                        const InputFile& file,
                                         const ReadOptions& options,
                                         const Progress& progress = {});
 

@@ -14,7 +14,8 @@ namespace dtm::io {
 /// @throws InputError ("<file>: byte N: ...") on corrupt data unless options.skip_bad_lines,
 ///         in which case the problem becomes a warning and reading goes on; OptionError on
 ///         contradictory georeferencing options; Cancelled.
-[[nodiscard]] ReadResult read_hpgl(const InputFile& file, const ReadOptions& options,
+[[nodiscard]] ReadResult read_hpgl(const InputFile& file,
+                                   const ReadOptions& options,
                                    const Progress& progress = {});
 
 }  // namespace dtm::io

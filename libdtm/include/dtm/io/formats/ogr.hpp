@@ -20,12 +20,14 @@ namespace dtm::io {
 /// Vertices without a height get NaN z (the loader fills them or reports them).
 /// @throws InputError naming the file (and feature) on unreadable data, a missing layer or
 ///         field, a bad filter, or points without heights; Cancelled.
-[[nodiscard]] ReadResult read_ogr(const InputFile& file, const ReadOptions& options,
+[[nodiscard]] ReadResult read_ogr(const InputFile& file,
+                                  const ReadOptions& options,
                                   const Progress& progress = {});
 
 /// A delimited text file with a WKT or geometry column, read by OGR's CSV driver (as read_ogr;
 /// the summary's format says so).
-[[nodiscard]] ReadResult read_ogr_text(const InputFile& file, const ReadOptions& options,
+[[nodiscard]] ReadResult read_ogr_text(const InputFile& file,
+                                       const ReadOptions& options,
                                        const Progress& progress = {});
 
 }  // namespace dtm::io

@@ -17,7 +17,8 @@ namespace dtm::io {
 /// Writes @p tin as a dtm PLY file to exactly @p path (no temporary; write_tin() adds atomicity).
 /// Binary little endian unless options.ascii.
 /// @throws Error if the file cannot be written or the TIN refers to missing vertices.
-void write_tin_ply(const Tin& tin, const std::filesystem::path& path,
+void write_tin_ply(const Tin& tin,
+                   const std::filesystem::path& path,
                    const TinWriteOptions& options);
 
 struct LoadedTin {
@@ -32,7 +33,8 @@ struct LoadedTin {
 /// The reader table's entry: the TIN (ReadResult::tin), its vertices as points, its CRS.
 /// @throws InputError as read_tin_ply(), or if the file is not given as survey input (a TIN
 /// cannot be a breakline or a boundary).
-[[nodiscard]] ReadResult read_ply(const InputFile& file, const ReadOptions& options,
+[[nodiscard]] ReadResult read_ply(const InputFile& file,
+                                  const ReadOptions& options,
                                   const Progress& progress = {});
 
 }  // namespace dtm::io

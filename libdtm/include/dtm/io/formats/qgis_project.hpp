@@ -6,12 +6,36 @@
 /// cut/fill map when the build compared the surface with a base.
 #pragma once
 
+#include <array>
 #include <filesystem>
+#include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "dtm/core/point.hpp"
 
 namespace dtm::io {
+
+/// A print layout (QGIS "Layout" item) of one map sheet: the page, a map item at the sheet's
+/// extent and scale with grid crosses, and the furniture (title block, legend, scale bar, north
+/// arrow) where the dtm map sheet has it, so QGIS users can edit and print the same sheet.
+/// Rectangles are x, y, width, height in mm from the page's top-left corner.
+struct QgisLayout {
+    std::string name = "Map sheet";
+    double width_mm = 420.0;
+    double height_mm = 297.0;
+    Box2 extent;                 ///< the map item's extent (CRS units): the whole page
+    double scale = 500.0;        ///< 1 : scale
+    double grid_interval = 0.0;  ///< grid crosses every this many CRS units (0: no grid)
+    bool sjtsk = false;          ///< grid labels as positive S-JTSK Y, X (Y = -E, X = -N)
+    std::string title;
+    std::vector<std::pair<std::string, std::string>> fields;  ///< title block rows
+    std::array<double, 4> title_box{};
+    std::array<double, 4> legend_box{};
+    std::array<double, 4> scale_bar_box{};
+    std::array<double, 4> north_box{};
+};
 
 /// What the project shows. Relative paths are relative to the project file's folder and are
 /// written with a leading "./", the form QGIS resolves against the project folder.
@@ -27,15 +51,16 @@ struct QgisProject {
     std::filesystem::path contours;   ///< GeoPackage or shapefile (ogr provider)
     std::string contour_layer;        ///< layer inside a GeoPackage; empty for a shapefile
     std::string elevation_field = "elevation";
-    /// Boolean (or 0/1) field that is true on index contours (ContourWriter writes `index`). Empty: index contours are recognised from
-    /// their elevation, a multiple of index_interval.
+    /// Boolean (or 0/1) field that is true on index contours (ContourWriter writes `index`). Empty:
+    /// index contours are recognised from their elevation, a multiple of index_interval.
     std::string index_field;
     double index_interval = 5.0;
     std::filesystem::path mesh;  ///< 2DM TIN (mdal provider)
     /// GeoPackage of a volume comparison (`dtm build --base`): layer cut_fill (polygons with a
     /// `kind` of "cut" or "fill", drawn red and blue) and layer zero_lines. Empty: no layers.
     std::filesystem::path cut_fill;
-    bool mesh_visible = false;   ///< the wireframe starts hidden: it hides the DEM at small scales
+    bool mesh_visible = false;  ///< the wireframe starts hidden: it hides the DEM at small scales
+    std::optional<QgisLayout> layout;  ///< a print layout of the map sheet
 };
 
 /// The project as QGIS 3 XML (`<qgis>` with projectCrs, layer-tree-group, mapcanvas,

@@ -53,8 +53,7 @@ struct Columns {
 };
 
 Columns::Columns(csv::Layout detected, InputRole role)
-    : layout(std::move(detected)), polyline(role != InputRole::points)
-{
+    : layout(std::move(detected)), polyline(role != InputRole::points) {
     x = csv::column_of(layout, Field::x);
     y = csv::column_of(layout, Field::y);
     z = csv::column_of(layout, Field::z);
@@ -78,13 +77,13 @@ public:
     using Report = std::function<void(std::size_t offset)>;
 
     RowParser(const Columns& columns, const InputFile& file, const ReadOptions& options)
-        : c_(columns), file_(file), options_(options)
-    {
-    }
+        : c_(columns), file_(file), options_(options) {}
 
     /// Parses the lines of @p text from byte @p begin (a line start), the line before it being
     /// @p line. Returns the number of the last line.
-    std::size_t parse(std::string_view text, std::size_t begin, std::size_t line,
+    std::size_t parse(std::string_view text,
+                      std::size_t begin,
+                      std::size_t line,
                       const Report& report);
     void flush_line();
     /// Appends a later chunk's rows, labels, skipped lines and warnings.
@@ -115,15 +114,13 @@ private:
     std::size_t rows_ = 0;
 };
 
-std::string RowParser::column_name(int column) const
-{
+std::string RowParser::column_name(int column) const {
     const auto c = static_cast<std::size_t>(column);
     if (c < c_.layout.names.size()) return "column '" + c_.layout.names[c] + "'";
     return "field " + std::to_string(c + 1);
 }
 
-void RowParser::bad(std::size_t line, std::size_t column, const std::string& what)
-{
+void RowParser::bad(std::size_t line, std::size_t column, const std::string& what) {
     if (!options_.skip_bad_lines) throw InputError(file_.path, line, column, what);
     ++result_.summary.skipped_lines;
     if (result_.summary.warnings.size() < max_listed_warnings) {
@@ -132,8 +129,7 @@ void RowParser::bad(std::size_t line, std::size_t column, const std::string& wha
     }
 }
 
-bool RowParser::number_at(int column, double& value, std::size_t number)
-{
+bool RowParser::number_at(int column, double& value, std::size_t number) {
     const Cell& cell = cells_[static_cast<std::size_t>(column)];
     if (csv::parse_number(cell.text, c_.layout.decimal_comma, value)) return true;
     const std::string shown(cell.text.substr(0, 40));
@@ -142,8 +138,7 @@ bool RowParser::number_at(int column, double& value, std::size_t number)
     return false;
 }
 
-void RowParser::read_row(std::string_view line, std::size_t number)
-{
+void RowParser::read_row(std::string_view line, std::size_t number) {
     if (!csv::split_fields(line, c_.layout.delimiter, cells_)) {
         bad(number, line.find('"') + 1, "expected a closing quote");
         return;
@@ -158,13 +153,12 @@ void RowParser::read_row(std::string_view line, std::size_t number)
     if (!number_at(c_.x, p.x, number) || !number_at(c_.y, p.y, number)) return;
     if (c_.z >= 0 && !number_at(c_.z, p.z, number)) return;
     ++rows_;
-    const std::string_view id = c_.line >= 0 ? cells_[static_cast<std::size_t>(c_.line)].text
-                                             : std::string_view{};
+    const std::string_view id =
+        c_.line >= 0 ? cells_[static_cast<std::size_t>(c_.line)].text : std::string_view{};
     add_vertex(p, id, number);
 }
 
-void RowParser::add_vertex(const Point3& p, std::string_view id, std::size_t number)
-{
+void RowParser::add_vertex(const Point3& p, std::string_view id, std::size_t number) {
     TerrainInput& t = result_.terrain;
     if (c_.seeds) {
         t.hole_seeds.push_back(p.xy());
@@ -188,8 +182,7 @@ void RowParser::add_vertex(const Point3& p, std::string_view id, std::size_t num
     current_.points.push_back(p);
 }
 
-void RowParser::flush_line()
-{
+void RowParser::flush_line() {
     if (current_.points.empty()) return;
     Polyline line = std::move(current_);
     current_ = Polyline{};
@@ -201,25 +194,34 @@ void RowParser::flush_line()
     }
     if (ring) line.closed = true;
     if (line.points.size() < (ring ? 3u : 2u)) {
-        result_.summary.warnings.push_back(line.source + ": a " +
-                                           (ring ? std::string("ring") : std::string("line")) +
-                                           " of " + std::to_string(n) +
-                                           " vertices is too short and was not used");
+        result_.summary.warnings.push_back(
+            line.source + ": a " + (ring ? std::string("ring") : std::string("line")) + " of " +
+            std::to_string(n) + " vertices is too short and was not used");
         return;
     }
     TerrainInput& t = result_.terrain;
     switch (file_.role) {
-        case InputRole::breaklines: t.breaklines.push_back(std::move(line)); break;
-        case InputRole::soft_breaklines: t.soft_breaklines.push_back(std::move(line)); break;
-        case InputRole::boundary: t.boundaries.push_back(std::move(line)); break;
-        case InputRole::holes: t.holes.push_back(std::move(line)); break;
-        case InputRole::points: break;
+        case InputRole::breaklines:
+            t.breaklines.push_back(std::move(line));
+            break;
+        case InputRole::soft_breaklines:
+            t.soft_breaklines.push_back(std::move(line));
+            break;
+        case InputRole::boundary:
+            t.boundaries.push_back(std::move(line));
+            break;
+        case InputRole::holes:
+            t.holes.push_back(std::move(line));
+            break;
+        case InputRole::points:
+            break;
     }
 }
 
-std::size_t RowParser::parse(std::string_view text, std::size_t begin, std::size_t line_number,
-                             const Report& report)
-{
+std::size_t RowParser::parse(std::string_view text,
+                             std::size_t begin,
+                             std::size_t line_number,
+                             const Report& report) {
     csv::LineCursor cursor(text);
     cursor.seek(begin, line_number);
     std::string_view line;
@@ -239,8 +241,7 @@ std::size_t RowParser::parse(std::string_view text, std::size_t begin, std::size
     return cursor.line_number();
 }
 
-void RowParser::append(RowParser&& later)
-{
+void RowParser::append(RowParser&& later) {
     TerrainInput& to = result_.terrain;
     TerrainInput& from = later.result_.terrain;
     to.points.insert(to.points.end(), from.points.begin(), from.points.end());
@@ -260,8 +261,7 @@ void RowParser::append(RowParser&& later)
     rows_ += later.rows_;
 }
 
-void RowParser::reserve(std::size_t points)
-{
+void RowParser::reserve(std::size_t points) {
     result_.terrain.points.reserve(points);
     if (!labelled()) return;
     result_.labels.ids.reserve(points);
@@ -270,13 +270,11 @@ void RowParser::reserve(std::size_t points)
 
 /// A copy of the used part costs a moment of twice its size; only a large overshoot is worth it.
 template <class T>
-void shrink_if_large(std::vector<T>& v)
-{
+void shrink_if_large(std::vector<T>& v) {
     if (v.capacity() - v.size() > v.size() / 4) v.shrink_to_fit();
 }
 
-void RowParser::shrink()
-{
+void RowParser::shrink() {
     shrink_if_large(result_.terrain.points);
     shrink_if_large(result_.labels.ids);
     shrink_if_large(result_.labels.codes);
@@ -284,9 +282,9 @@ void RowParser::shrink()
 
 /// Offsets in @p block of the chunks from @p begin (line starts), and the block's end: several
 /// chunks of at least cuts.chunk_bytes when there are threads for them, else one.
-std::vector<std::size_t> chunk_starts(std::string_view block, std::size_t begin,
-                                      const csv::Cuts& cuts)
-{
+std::vector<std::size_t> chunk_starts(std::string_view block,
+                                      std::size_t begin,
+                                      const csv::Cuts& cuts) {
     const std::size_t size = block.size() - begin;
     const auto threads = static_cast<std::size_t>(tbb::this_task_arena::max_concurrency());
     const std::size_t chunk = std::max<std::size_t>(cuts.chunk_bytes, 1);
@@ -304,9 +302,9 @@ std::vector<std::size_t> chunk_starts(std::string_view block, std::size_t begin,
 
 /// The number of the line before each chunk, and the last line's: the newlines of every chunk
 /// counted in parallel, then summed in order from @p line.
-std::vector<std::size_t> chunk_lines(std::string_view block, const std::vector<std::size_t>& starts,
-                                     std::size_t line)
-{
+std::vector<std::size_t> chunk_lines(std::string_view block,
+                                     const std::vector<std::size_t>& starts,
+                                     std::size_t line) {
     const std::size_t chunks = starts.size() - 1;
     std::vector<std::size_t> lines(chunks + 1, 0);
     tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t k) {
@@ -320,16 +318,23 @@ std::vector<std::size_t> chunk_lines(std::string_view block, const std::vector<s
 
 class CsvReader {
 public:
-    CsvReader(csv::Blocks& blocks, std::string_view head, std::size_t size, const InputFile& file,
-              const ReadOptions& options, const Progress& progress, const csv::Cuts& cuts)
-        : blocks_(blocks), file_(file), options_(options), progress_(progress), cuts_(cuts),
+    CsvReader(csv::Blocks& blocks,
+              std::string_view head,
+              std::size_t size,
+              const InputFile& file,
+              const ReadOptions& options,
+              const Progress& progress,
+              const csv::Cuts& cuts)
+        : blocks_(blocks),
+          file_(file),
+          options_(options),
+          progress_(progress),
+          cuts_(cuts),
           size_(size),
-          columns_(csv::detect_layout(head, file.path.string(), options.columns,
-                                       file.role != InputRole::points),
+          columns_(csv::detect_layout(
+                       head, file.path.string(), options.columns, file.role != InputRole::points),
                    file.role),
-          parser_(columns_, file, options)
-    {
-    }
+          parser_(columns_, file, options) {}
     CsvReader(const CsvReader&) = delete;
     CsvReader& operator=(const CsvReader&) = delete;
 
@@ -340,7 +345,8 @@ private:
     /// Parses @p block from @p begin, the line before being @p line; returns the last line.
     std::size_t parse_block(std::string_view block, std::size_t begin, std::size_t line);
     /// Points only: the chunks of @p block in parallel, joined in file order.
-    void parse_chunks(std::string_view block, const std::vector<std::size_t>& starts,
+    void parse_chunks(std::string_view block,
+                      const std::vector<std::size_t>& starts,
                       const std::vector<std::size_t>& lines);
     /// Room for @p more points beyond those read, the block read reaching byte @p through.
     void make_room(std::size_t more, std::size_t through);
@@ -356,8 +362,7 @@ private:
     RowParser parser_;
 };
 
-ReadResult CsvReader::run(std::string_view head)
-{
+ReadResult CsvReader::run(std::string_view head) {
     ReadResult& result = parser_.result();
     result.summary.path = file_.path;
     result.summary.format = "text";
@@ -374,10 +379,10 @@ ReadResult CsvReader::run(std::string_view head)
     parser_.flush_line();
     parser_.shrink();
     if (layout.count_line > 0 && layout.declared_count != parser_.rows()) {
-        result.summary.warnings.push_back(
-            "line " + std::to_string(layout.count_line) + " declares " +
-            std::to_string(layout.declared_count) + " points, the file has " +
-            std::to_string(parser_.rows()));
+        result.summary.warnings.push_back("line " + std::to_string(layout.count_line) +
+                                          " declares " + std::to_string(layout.declared_count) +
+                                          " points, the file has " +
+                                          std::to_string(parser_.rows()));
     }
     if (columns_.geographic) {
         result.crs_wkt = "EPSG:4326";
@@ -386,8 +391,7 @@ ReadResult CsvReader::run(std::string_view head)
     return std::move(result);
 }
 
-std::size_t CsvReader::parse_block(std::string_view block, std::size_t begin, std::size_t line)
-{
+std::size_t CsvReader::parse_block(std::string_view block, std::size_t begin, std::size_t line) {
     const RowParser::Report report = [&](std::size_t offset) {
         this->report(blocks_.offset() + offset);
     };
@@ -400,9 +404,9 @@ std::size_t CsvReader::parse_block(std::string_view block, std::size_t begin, st
     return lines.back();
 }
 
-void CsvReader::parse_chunks(std::string_view block, const std::vector<std::size_t>& starts,
-                             const std::vector<std::size_t>& lines)
-{
+void CsvReader::parse_chunks(std::string_view block,
+                             const std::vector<std::size_t>& starts,
+                             const std::vector<std::size_t>& lines) {
     const std::size_t chunks = starts.size() - 1;
     std::vector<RowParser> parts(chunks, RowParser(columns_, file_, options_));
     std::vector<std::exception_ptr> errors(chunks);
@@ -422,8 +426,7 @@ void CsvReader::parse_chunks(std::string_view block, const std::vector<std::size
     for (RowParser& part : parts) parser_.append(std::move(part));
 }
 
-void CsvReader::make_room(std::size_t more, std::size_t through)
-{
+void CsvReader::make_room(std::size_t more, std::size_t through) {
     const std::vector<Point3>& points = parser_.result().terrain.points;
     const std::size_t needed = points.size() + more;
     const std::size_t capacity = points.capacity();
@@ -440,32 +443,32 @@ void CsvReader::make_room(std::size_t more, std::size_t through)
     parser_.reserve(room);
 }
 
-void CsvReader::report(std::size_t offset) const
-{
+void CsvReader::report(std::size_t offset) const {
     if (size_ == 0) return;
     progress_.report(std::min(1.0, static_cast<double>(offset) / static_cast<double>(size_)));
 }
 
 /// The first block, extended until it holds every line layout detection looks at.
-std::string_view first_block(csv::Blocks& blocks)
-{
+std::string_view first_block(csv::Blocks& blocks) {
     std::string_view head = blocks.next();
     while (!blocks.at_end() && !csv::holds_layout_sample(head)) head = blocks.extend();
     return head;
 }
 
-ReadResult parse_blocks(csv::Blocks& blocks, std::string_view head, std::size_t size,
-                        const InputFile& file, const ReadOptions& options,
-                        const Progress& progress, const csv::Cuts& cuts)
-{
+ReadResult parse_blocks(csv::Blocks& blocks,
+                        std::string_view head,
+                        std::size_t size,
+                        const InputFile& file,
+                        const ReadOptions& options,
+                        const Progress& progress,
+                        const csv::Cuts& cuts) {
     CsvReader reader(blocks, head, size, file, options, progress, cuts);
     return reader.run(head);
 }
 
 }  // namespace
 
-bool csv_has_geometry_column(std::string_view text)
-{
+bool csv_has_geometry_column(std::string_view text) {
     csv::LineCursor cursor(text);
     std::string_view line;
     while (cursor.next(line)) {
@@ -486,22 +489,23 @@ bool csv_has_geometry_column(std::string_view text)
     return false;
 }
 
-ReadResult read_csv(const InputFile& file, const ReadOptions& options, const Progress& progress)
-{
+ReadResult read_csv(const InputFile& file, const ReadOptions& options, const Progress& progress) {
     return csv::read_csv(file, options, progress, csv::Cuts{});
 }
 
-ReadResult parse_csv_text(std::string_view text, const InputFile& file,
-                          const ReadOptions& options, const Progress& progress)
-{
+ReadResult parse_csv_text(std::string_view text,
+                          const InputFile& file,
+                          const ReadOptions& options,
+                          const Progress& progress) {
     return csv::parse_csv_text(text, file, options, progress, csv::Cuts{});
 }
 
 namespace csv {
 
-ReadResult read_csv(const InputFile& file, const ReadOptions& options, const Progress& progress,
-                    const Cuts& cuts)
-{
+ReadResult read_csv(const InputFile& file,
+                    const ReadOptions& options,
+                    const Progress& progress,
+                    const Cuts& cuts) {
     std::ifstream in(file.path, std::ios::binary);
     if (!in) throw InputError(file.path, 0, 0, "cannot open the file");
     std::error_code ec;
@@ -526,9 +530,11 @@ ReadResult read_csv(const InputFile& file, const ReadOptions& options, const Pro
     return result;
 }
 
-ReadResult parse_csv_text(std::string_view text, const InputFile& file,
-                          const ReadOptions& options, const Progress& progress, const Cuts& cuts)
-{
+ReadResult parse_csv_text(std::string_view text,
+                          const InputFile& file,
+                          const ReadOptions& options,
+                          const Progress& progress,
+                          const Cuts& cuts) {
     std::size_t at = 0;
     Blocks blocks(
         [text, &at](char* to, std::size_t bytes) {

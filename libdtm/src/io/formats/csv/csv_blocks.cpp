@@ -12,13 +12,11 @@
 namespace dtm::io::csv {
 
 Blocks::Blocks(Fill fill, std::size_t block_bytes, std::size_t input_bytes)
-    : fill_(std::move(fill)), block_bytes_(std::max<std::size_t>(block_bytes, 1)),
-      buffer_(input_bytes > 0 ? std::min(block_bytes_, input_bytes + 1) : block_bytes_, '\0')
-{
-}
+    : fill_(std::move(fill)),
+      block_bytes_(std::max<std::size_t>(block_bytes, 1)),
+      buffer_(input_bytes > 0 ? std::min(block_bytes_, input_bytes + 1) : block_bytes_, '\0') {}
 
-std::string_view Blocks::next()
-{
+std::string_view Blocks::next() {
     offset_ += cut_;
     std::memmove(buffer_.data(), buffer_.data() + cut_, end_ - cut_);
     end_ -= cut_;
@@ -26,16 +24,14 @@ std::string_view Blocks::next()
     return cut_after(0);
 }
 
-std::string_view Blocks::extend()
-{
+std::string_view Blocks::extend() {
     if (!at_end()) buffer_.resize(buffer_.size() + block_bytes_);
     return cut_after(cut_);
 }
 
 /// Fills the buffer, growing it until a line ends at or after @p from (or the input ends), and
 /// cuts after the last line end.
-std::string_view Blocks::cut_after(std::size_t from)
-{
+std::string_view Blocks::cut_after(std::size_t from) {
     for (;;) {
         while (!eof_ && end_ < buffer_.size()) {
             const std::size_t got = fill_(buffer_.data() + end_, buffer_.size() - end_);

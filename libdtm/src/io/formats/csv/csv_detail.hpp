@@ -25,10 +25,14 @@ struct Cuts {
 };
 
 /// read_csv() and parse_csv_text() with the given cuts.
-[[nodiscard]] ReadResult read_csv(const InputFile& file, const ReadOptions& options,
-                                  const Progress& progress, const Cuts& cuts);
-[[nodiscard]] ReadResult parse_csv_text(std::string_view text, const InputFile& file,
-                                        const ReadOptions& options, const Progress& progress,
+[[nodiscard]] ReadResult read_csv(const InputFile& file,
+                                  const ReadOptions& options,
+                                  const Progress& progress,
+                                  const Cuts& cuts);
+[[nodiscard]] ReadResult parse_csv_text(std::string_view text,
+                                        const InputFile& file,
+                                        const ReadOptions& options,
+                                        const Progress& progress,
                                         const Cuts& cuts);
 
 /// Reads an input in blocks that end at a line end (or at the end of the input), reusing one
@@ -78,8 +82,7 @@ public:
     bool next(std::string_view& line);
     /// Continue at byte @p offset (a line start; a BOM there is text) as if @p line_number lines
     /// were read.
-    void seek(std::size_t offset, std::size_t line_number) noexcept
-    {
+    void seek(std::size_t offset, std::size_t line_number) noexcept {
         pos_ = offset;
         line_number_ = line_number;
     }
@@ -112,13 +115,14 @@ struct Layout {
     std::size_t header_line = 0;  ///< 1-based line of the header, 0 if none
     std::size_t count_line = 0;   ///< 1-based line of a point-count first line, 0 if none
     std::size_t declared_count = 0;
-    std::vector<Field> fields;    ///< role of each column
+    std::vector<Field> fields;       ///< role of each column
     std::vector<std::string> names;  ///< header names (empty without a header)
     std::size_t data_offset = 0;     ///< byte offset where data lines start (after any BOM)
     std::size_t data_line = 0;       ///< line number before the first data line
 };
 
-/// Role named by a header or ReadOptions::columns word ("east", "elevation", "shapeid", ...); skip if none.
+/// Role named by a header or ReadOptions::columns word ("east", "elevation", "shapeid", ...); skip
+/// if none.
 /// @p polyline: "id" groups polyline vertices instead of naming points.
 [[nodiscard]] Field field_from_name(std::string_view name, bool polyline);
 
@@ -127,10 +131,13 @@ struct Layout {
 [[nodiscard]] bool holds_layout_sample(std::string_view text);
 
 /// Detects the layout of @p text. @p columns is ReadOptions::columns (may be empty).
-/// @throws InputError (located at @p file) for an empty file, an unknown ReadOptions::columns word or a
+/// @throws InputError (located at @p file) for an empty file, an unknown ReadOptions::columns word
+/// or a
 ///         header without the needed columns.
-[[nodiscard]] Layout detect_layout(std::string_view text, const std::string& file,
-                                   const std::string& columns, bool polyline);
+[[nodiscard]] Layout detect_layout(std::string_view text,
+                                   const std::string& file,
+                                   const std::string& columns,
+                                   bool polyline);
 
 /// Index of the first column with role @p f, or -1.
 [[nodiscard]] int column_of(const Layout& layout, Field f) noexcept;

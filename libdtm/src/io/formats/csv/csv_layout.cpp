@@ -7,7 +7,8 @@
 //   - a first line holding one integer, followed by lines with several fields, is a point count;
 //   - the first line is a header if it has a field that is not a number and either a field
 //     names a known column or the next line has fewer non-numbers;
-//   - columns are mapped by header name, or by ReadOptions::columns, or guessed: "x y [z]"; for points,
+//   - columns are mapped by header name, or by ReadOptions::columns, or guessed: "x y [z]"; for
+//   points,
 //     "id x y z [code]" when the first of 4+ columns holds integers and the next two do not;
 //     for polylines, "line_id x y [z]" when the first of 3+ columns does (pputils layout).
 #include <algorithm>
@@ -23,13 +24,11 @@
 
 namespace dtm::io::csv {
 
-LineCursor::LineCursor(std::string_view text) : text_(text)
-{
+LineCursor::LineCursor(std::string_view text) : text_(text) {
     if (text_.substr(0, 3) == "\xEF\xBB\xBF") pos_ = 3;
 }
 
-bool LineCursor::next(std::string_view& line)
-{
+bool LineCursor::next(std::string_view& line) {
     if (pos_ >= text_.size()) return false;
     const char* begin = text_.data() + pos_;
     const std::size_t rest = text_.size() - pos_;
@@ -42,13 +41,11 @@ bool LineCursor::next(std::string_view& line)
     return true;
 }
 
-bool is_blank(std::string_view line) noexcept
-{
+bool is_blank(std::string_view line) noexcept {
     return std::all_of(line.begin(), line.end(), [](char c) { return c == ' ' || c == '\t'; });
 }
 
-bool is_comment(std::string_view line) noexcept
-{
+bool is_comment(std::string_view line) noexcept {
     const std::size_t i = line.find_first_not_of(" \t");
     if (i == std::string_view::npos) return false;
     return line[i] == '#' || line.substr(i, 2) == "//";
@@ -58,8 +55,7 @@ namespace {
 
 bool is_space(char c) noexcept { return c == ' ' || c == '\t'; }
 
-std::string_view trim(std::string_view s) noexcept
-{
+std::string_view trim(std::string_view s) noexcept {
     while (!s.empty() && is_space(s.front())) s.remove_prefix(1);
     while (!s.empty() && is_space(s.back())) s.remove_suffix(1);
     return s;
@@ -67,8 +63,7 @@ std::string_view trim(std::string_view s) noexcept
 
 /// Reads one quoted field starting at line[i] == '"'; returns the index after the closing quote
 /// or npos if it is unterminated. "" inside stays doubled in the view (ids only).
-std::size_t end_of_quoted(std::string_view line, std::size_t i) noexcept
-{
+std::size_t end_of_quoted(std::string_view line, std::size_t i) noexcept {
     for (std::size_t j = i + 1; j < line.size(); ++j) {
         if (line[j] != '"') continue;
         if (j + 1 < line.size() && line[j + 1] == '"') {
@@ -82,8 +77,7 @@ std::size_t end_of_quoted(std::string_view line, std::size_t i) noexcept
 
 }  // namespace
 
-bool split_fields(std::string_view line, char delimiter, std::vector<Cell>& cells)
-{
+bool split_fields(std::string_view line, char delimiter, std::vector<Cell>& cells) {
     cells.clear();
     std::size_t i = 0;
     const std::size_t n = line.size();
@@ -109,8 +103,7 @@ bool split_fields(std::string_view line, char delimiter, std::vector<Cell>& cell
     }
 }
 
-bool parse_number(std::string_view text, bool decimal_comma, double& value) noexcept
-{
+bool parse_number(std::string_view text, bool decimal_comma, double& value) noexcept {
     if (!text.empty() && text.front() == '+') text.remove_prefix(1);
     if (text.empty()) return false;
     char buffer[64];
@@ -125,22 +118,22 @@ bool parse_number(std::string_view text, bool decimal_comma, double& value) noex
     return ec == std::errc{} && ptr == end && std::isfinite(value);
 }
 
-Field field_from_name(std::string_view raw, bool polyline)
-{
+Field field_from_name(std::string_view raw, bool polyline) {
     std::string name;
     for (char c : trim(raw)) name += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     static const std::set<std::string, std::less<>> xs{"x", "east", "easting", "e"};
     static const std::set<std::string, std::less<>> ys{"y", "north", "northing", "n"};
-    static const std::set<std::string, std::less<>> zs{"z",      "elev", "elevation", "height",
-                                                       "h",      "alt",  "altitude",  "zz"};
+    static const std::set<std::string, std::less<>> zs{"z", "elev", "elevation", "height",
+                                                       "h", "alt",  "altitude",  "zz"};
     static const std::set<std::string, std::less<>> lats{"lat", "latitude"};
     static const std::set<std::string, std::less<>> lons{"lon", "long", "longitude", "lng"};
-    static const std::set<std::string, std::less<>> ids{"id",     "name",  "point", "number",
-                                                        "cislo",  "\xC4\x8D\xC3\xADslo",
-                                                        "pt",     "pid"};
-    static const std::set<std::string, std::less<>> codes{"code", "kod", "k\xC3\xB3" "d"};
-    static const std::set<std::string, std::less<>> lines{"shapeid", "shape_id", "line",
-                                                          "line_id", "lineid"};
+    static const std::set<std::string, std::less<>> ids{
+        "id", "name", "point", "number", "cislo", "\xC4\x8D\xC3\xADslo", "pt", "pid"};
+    static const std::set<std::string, std::less<>> codes{"code", "kod",
+                                                          "k\xC3\xB3"
+                                                          "d"};
+    static const std::set<std::string, std::less<>> lines{"shapeid", "shape_id", "line", "line_id",
+                                                          "lineid"};
     if (xs.count(name)) return Field::x;
     if (ys.count(name)) return Field::y;
     if (zs.count(name)) return Field::z;
@@ -152,8 +145,7 @@ Field field_from_name(std::string_view raw, bool polyline)
     return Field::skip;
 }
 
-int column_of(const Layout& layout, Field f) noexcept
-{
+int column_of(const Layout& layout, Field f) noexcept {
     const auto it = std::find(layout.fields.begin(), layout.fields.end(), f);
     return it == layout.fields.end() ? -1 : static_cast<int>(it - layout.fields.begin());
 }
@@ -169,8 +161,7 @@ struct SampleLine {
     std::size_t end_offset = 0;  ///< offset just past this line
 };
 
-std::vector<SampleLine> sample_lines(std::string_view text, std::size_t wanted)
-{
+std::vector<SampleLine> sample_lines(std::string_view text, std::size_t wanted) {
     std::vector<SampleLine> out;
     LineCursor cursor(text);
     std::string_view line;
@@ -182,19 +173,19 @@ std::vector<SampleLine> sample_lines(std::string_view text, std::size_t wanted)
 }
 
 /// Count of @p c outside double quotes.
-std::size_t count_unquoted(std::string_view line, char c) noexcept
-{
+std::size_t count_unquoted(std::string_view line, char c) noexcept {
     std::size_t count = 0;
     bool quoted = false;
     for (char ch : line) {
-        if (ch == '"') quoted = !quoted;
-        else if (ch == c && !quoted) ++count;
+        if (ch == '"')
+            quoted = !quoted;
+        else if (ch == c && !quoted)
+            ++count;
     }
     return count;
 }
 
-char detect_delimiter(const std::vector<SampleLine>& sample)
-{
+char detect_delimiter(const std::vector<SampleLine>& sample) {
     std::size_t semicolons = 0, tabs = 0, commas = 0;
     for (const SampleLine& s : sample) {
         semicolons += count_unquoted(s.text, ';');
@@ -213,16 +204,14 @@ char detect_delimiter(const std::vector<SampleLine>& sample)
     return ' ';
 }
 
-bool is_integer(std::string_view text) noexcept
-{
+bool is_integer(std::string_view text) noexcept {
     long long v = 0;
     if (!text.empty() && text.front() == '+') text.remove_prefix(1);
     const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
     return ec == std::errc{} && ptr == text.data() + text.size();
 }
 
-std::size_t non_numbers(const std::vector<Cell>& cells, bool decimal_comma)
-{
+std::size_t non_numbers(const std::vector<Cell>& cells, bool decimal_comma) {
     double v = 0;
     return static_cast<std::size_t>(std::count_if(cells.begin(), cells.end(), [&](const Cell& c) {
         return !parse_number(c.text, decimal_comma, v);
@@ -233,15 +222,16 @@ std::size_t non_numbers(const std::vector<Cell>& cells, bool decimal_comma)
 
 namespace {
 
-[[noreturn]] void fail(const std::string& file, std::size_t line, std::size_t column,
-                       const std::string& what)
-{
+[[noreturn]] void fail(const std::string& file,
+                       std::size_t line,
+                       std::size_t column,
+                       const std::string& what) {
     throw InputError(file, line, column, what);
 }
 
-std::vector<Field> fields_from_columns(const std::string& columns, const std::string& file,
-                                       bool polyline)
-{
+std::vector<Field> fields_from_columns(const std::string& columns,
+                                       const std::string& file,
+                                       bool polyline) {
     std::vector<Field> fields;
     std::size_t start = 0;
     while (start <= columns.size()) {
@@ -252,7 +242,8 @@ std::vector<Field> fields_from_columns(const std::string& columns, const std::st
         if (f == Field::skip && !(word.empty() || word == "-" || word == "skip" || word == "_")) {
             fail(file, 0, 0,
                  "`columns`: expected a column name (x, y, z, east, north, elev, lat, lon, id, "
-                 "code, shapeid or - to skip), found '" + std::string(word) + "'");
+                 "code, shapeid or - to skip), found '" +
+                     std::string(word) + "'");
         }
         fields.push_back(f);
         start = end + 1;
@@ -261,9 +252,9 @@ std::vector<Field> fields_from_columns(const std::string& columns, const std::st
 }
 
 /// Guesses the roles of a headerless file from its first data lines.
-std::vector<Field> guess_fields(const std::vector<std::vector<Cell>>& rows, bool polyline,
-                                bool decimal_comma)
-{
+std::vector<Field> guess_fields(const std::vector<std::vector<Cell>>& rows,
+                                bool polyline,
+                                bool decimal_comma) {
     const std::size_t n = rows.front().size();
     std::vector<Field> fields(n, Field::skip);
     if (n < 2) return fields;
@@ -273,7 +264,8 @@ std::vector<Field> guess_fields(const std::vector<std::vector<Cell>>& rows, bool
         });
     };
     bool first_is_id = false;
-    first_is_id = n >= (polyline ? 3u : 4u) && all_integer(0) && !(all_integer(1) && all_integer(2));
+    first_is_id =
+        n >= (polyline ? 3u : 4u) && all_integer(0) && !(all_integer(1) && all_integer(2));
     const std::size_t c0 = first_is_id ? 1 : 0;
     if (first_is_id) fields[0] = polyline ? Field::line_id : Field::id;
     fields[c0] = Field::x;
@@ -285,8 +277,7 @@ std::vector<Field> guess_fields(const std::vector<std::vector<Cell>>& rows, bool
     return fields;
 }
 
-void check_header_fields(Layout& layout, const std::vector<Cell>& cells, const std::string& file)
-{
+void check_header_fields(Layout& layout, const std::vector<Cell>& cells, const std::string& file) {
     for (std::size_t i = 0; i < layout.fields.size(); ++i) {
         if (layout.fields[i] == Field::skip) continue;
         for (std::size_t j = 0; j < i; ++j) {
@@ -301,14 +292,14 @@ void check_header_fields(Layout& layout, const std::vector<Cell>& cells, const s
 
 }  // namespace
 
-bool holds_layout_sample(std::string_view text)
-{
+bool holds_layout_sample(std::string_view text) {
     return sample_lines(text, sample_size).size() == sample_size;
 }
 
-Layout detect_layout(std::string_view text, const std::string& file, const std::string& columns,
-                     bool polyline)
-{
+Layout detect_layout(std::string_view text,
+                     const std::string& file,
+                     const std::string& columns,
+                     bool polyline) {
     std::vector<SampleLine> sample = sample_lines(text, sample_size);
     if (sample.empty()) fail(file, 0, 0, "expected data lines, found an empty file");
     Layout layout;
@@ -333,11 +324,11 @@ Layout detect_layout(std::string_view text, const std::string& file, const std::
     const std::size_t bad_first = non_numbers(rows[0], layout.decimal_comma);
     bool named = false;
     for (const Cell& c : rows[0]) named = named || field_from_name(c.text, polyline) != Field::skip;
-    const bool header = bad_first > 0 &&
-                        (named || (rows.size() > 1 &&
-                                   non_numbers(rows[1], layout.decimal_comma) < bad_first));
-    layout.data_offset = first > 0 ? sample_lines(text, 1).front().end_offset
-                                   : LineCursor(text).offset();
+    const bool header =
+        bad_first > 0 &&
+        (named || (rows.size() > 1 && non_numbers(rows[1], layout.decimal_comma) < bad_first));
+    layout.data_offset =
+        first > 0 ? sample_lines(text, 1).front().end_offset : LineCursor(text).offset();
     layout.data_line = first > 0 ? layout.count_line : 0;
     if (header) {
         layout.header_line = sample[0].number;
@@ -356,7 +347,8 @@ Layout detect_layout(std::string_view text, const std::string& file, const std::
         layout.fields = guess_fields(rows, polyline, layout.decimal_comma);
     }
     const bool planar = column_of(layout, Field::x) >= 0 && column_of(layout, Field::y) >= 0;
-    const bool geographic = column_of(layout, Field::lat) >= 0 && column_of(layout, Field::lon) >= 0;
+    const bool geographic =
+        column_of(layout, Field::lat) >= 0 && column_of(layout, Field::lon) >= 0;
     if (!planar && !geographic) {
         fail(file, layout.header_line > 0 ? layout.header_line : sample[0].number, 0,
              "expected x and y columns (x/y, east/north, e/n or lat/lon; or `columns`), found " +

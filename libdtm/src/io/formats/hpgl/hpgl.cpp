@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // HPGL plan reader: bytes -> plot (hpgl_lexer, hpgl_pe, hpgl_plot) -> spot heights and lines
-// by pen role (hpgl_plan_heights, hpgl_plan_lines) -> ground coordinates (hpgl_georef) -> ReadResult.
-// See docs/formats.md, section "HPGL", for the user-facing rules.
+// by pen role (hpgl_plan_heights, hpgl_plan_lines) -> ground coordinates (hpgl_georef) ->
+// ReadResult. See docs/formats.md, section "HPGL", for the user-facing rules.
 #include "dtm/io/formats/hpgl.hpp"
 
 #include <algorithm>
@@ -19,8 +19,7 @@
 namespace dtm::io {
 namespace {
 
-std::string read_bytes(const std::filesystem::path& path)
-{
+std::string read_bytes(const std::filesystem::path& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(path, 0, 0, "cannot open the file");
     std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -35,8 +34,7 @@ struct Output {
     double zmin = std::numeric_limits<double>::infinity();
     double zmax = -std::numeric_limits<double>::infinity();
 
-    Point3 place(const Point3& p, bool counts_for_z)
-    {
+    Point3 place(const Point3& p, bool counts_for_z) {
         const Point2 g = transform.apply({p.x, p.y});
         box.add(g);
         if (counts_for_z) {
@@ -47,10 +45,10 @@ struct Output {
     }
 };
 
-void emit(hpgl::TerrainPlan& plan, const std::filesystem::path& path, Output& out)
-{
+void emit(hpgl::TerrainPlan& plan, const std::filesystem::path& path, Output& out) {
     TerrainInput& t = out.result.terrain;
-    for (const hpgl::SpotHeight& s : plan.spots) t.points.push_back(out.place({s.at.x, s.at.y, s.z}, true));
+    for (const hpgl::SpotHeight& s : plan.spots)
+        t.points.push_back(out.place({s.at.x, s.at.y, s.z}, true));
     for (hpgl::RoleLine& line : plan.lines) {
         Polyline poly;
         poly.closed = line.closed;
@@ -59,17 +57,28 @@ void emit(hpgl::TerrainPlan& plan, const std::filesystem::path& path, Output& ou
         for (Point3& p : line.points) p = out.place(p, hard);
         poly.points = std::move(line.points);
         switch (line.role) {
-        case PenRole::breakline: t.breaklines.push_back(std::move(poly)); break;
-        case PenRole::soft_breakline: t.soft_breaklines.push_back(std::move(poly)); break;
-        case PenRole::boundary: t.boundaries.push_back(std::move(poly)); break;
-        case PenRole::hole: t.holes.push_back(std::move(poly)); break;
-        default: break;
+            case PenRole::breakline:
+                t.breaklines.push_back(std::move(poly));
+                break;
+            case PenRole::soft_breakline:
+                t.soft_breaklines.push_back(std::move(poly));
+                break;
+            case PenRole::boundary:
+                t.boundaries.push_back(std::move(poly));
+                break;
+            case PenRole::hole:
+                t.holes.push_back(std::move(poly));
+                break;
+            default:
+                break;
         }
     }
 }
 
-void summarize(const hpgl::Plot& plot, const hpgl::TerrainPlan& plan, hpgl::Georeference& geo, Output& out)
-{
+void summarize(const hpgl::Plot& plot,
+               const hpgl::TerrainPlan& plan,
+               hpgl::Georeference& geo,
+               Output& out) {
     InputSummary& s = out.result.summary;
     const TerrainInput& t = out.result.terrain;
     s.format = "hpgl";
@@ -86,34 +95,39 @@ void summarize(const hpgl::Plot& plot, const hpgl::TerrainPlan& plan, hpgl::Geor
     auto& w = s.warnings;
     w.insert(w.end(), plot.warnings.begin(), plot.warnings.end());
     if (plot.unknown_instructions > 0) {
-        w.push_back(std::to_string(plot.unknown_instructions) + " instructions not understood and skipped (" +
-                    plot.unknown_names + ")");
+        w.push_back(std::to_string(plot.unknown_instructions) +
+                    " instructions not understood and skipped (" + plot.unknown_names + ")");
     }
     w.insert(w.end(), plan.warnings.begin(), plan.warnings.end());
     w.insert(w.end(), geo.notes.begin(), geo.notes.end());
-    w.push_back(std::to_string(plot.labels.size()) + " labels, " + std::to_string(plan.height_labels) +
-                " spot heights (" + std::to_string(plan.height_labels - plan.labels_without_marker) +
-                " on markers), " + std::to_string(plan.markers) + " markers (" + std::to_string(plan.crosses) +
+    w.push_back(std::to_string(plot.labels.size()) + " labels, " +
+                std::to_string(plan.height_labels) + " spot heights (" +
+                std::to_string(plan.height_labels - plan.labels_without_marker) + " on markers), " +
+                std::to_string(plan.markers) + " markers (" + std::to_string(plan.crosses) +
                 " crosses)");
 }
 
 }  // namespace
 
-std::string_view pen_role_name(PenRole role) noexcept
-{
+std::string_view pen_role_name(PenRole role) noexcept {
     switch (role) {
-    case PenRole::points: return "points";
-    case PenRole::breakline: return "breakline";
-    case PenRole::soft_breakline: return "soft-breakline";
-    case PenRole::boundary: return "boundary";
-    case PenRole::hole: return "hole";
-    case PenRole::ignore: return "ignore";
+        case PenRole::points:
+            return "points";
+        case PenRole::breakline:
+            return "breakline";
+        case PenRole::soft_breakline:
+            return "soft-breakline";
+        case PenRole::boundary:
+            return "boundary";
+        case PenRole::hole:
+            return "hole";
+        case PenRole::ignore:
+            return "ignore";
     }
     return "ignore";
 }
 
-ReadResult read_hpgl(const InputFile& file, const ReadOptions& options, const Progress& progress)
-{
+ReadResult read_hpgl(const InputFile& file, const ReadOptions& options, const Progress& progress) {
     const HpglOptions& hpgl_options = options.hpgl;
     if (!(hpgl_options.marker_radius_mm >= 0.0) || !std::isfinite(hpgl_options.marker_radius_mm)) {
         throw OptionError("hpgl.marker_radius_mm",

@@ -9,6 +9,8 @@
 // coordinates such as S-JTSK well conditioned). Residuals and their RMS are reported.
 // Reference: Ghilani, "Adjustment Computations", 6th ed., ch. 18 (2-D conformal and affine
 // coordinate transformations).
+#include "io/formats/hpgl/hpgl_georef.hpp"
+
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -17,35 +19,33 @@
 #include <sstream>
 
 #include "dtm/core/error.hpp"
-#include "io/formats/hpgl/hpgl_georef.hpp"
 #include "io/formats/hpgl/hpgl_plot.hpp"
 
 namespace dtm::io::hpgl {
 namespace {
 
-std::string format(double v, int decimals)
-{
+std::string format(double v, int decimals) {
     char buffer[64];
     std::snprintf(buffer, sizeof buffer, "%.*f", decimals, v);
     return buffer;
 }
 
 /// Splits one CSV line into numbers; false if a field is not a number.
-bool split_numbers(const std::string& line, std::vector<double>& values, std::size_t& bad_column)
-{
+bool split_numbers(const std::string& line, std::vector<double>& values, std::size_t& bad_column) {
     values.clear();
     std::size_t i = 0;
     while (i < line.size()) {
-        while (i < line.size() && (line[i] == ',' || line[i] == ';' || line[i] == ' ' || line[i] == '\t' ||
-                                   line[i] == '\r'))
+        while (i < line.size() && (line[i] == ',' || line[i] == ';' || line[i] == ' ' ||
+                                   line[i] == '\t' || line[i] == '\r'))
             ++i;
         if (i >= line.size()) break;
         const char* begin = line.c_str() + i;
         char* end = nullptr;
         const double v = std::strtod(begin, &end);
         const std::size_t used = static_cast<std::size_t>(end - begin);
-        const bool ends_field = i + used >= line.size() || std::string_view(",; \t\r").find(line[i + used]) !=
-                                                              std::string_view::npos;
+        const bool ends_field =
+            i + used >= line.size() ||
+            std::string_view(",; \t\r").find(line[i + used]) != std::string_view::npos;
         if (used == 0 || !ends_field || !std::isfinite(v)) {
             bad_column = i + 1;
             return false;
@@ -58,8 +58,7 @@ bool split_numbers(const std::string& line, std::vector<double>& values, std::si
 
 }  // namespace
 
-std::vector<ControlPoint> read_control_points(const std::filesystem::path& file)
-{
+std::vector<ControlPoint> read_control_points(const std::filesystem::path& file) {
     std::ifstream in(file);
     if (!in) throw InputError(file, 0, 0, "cannot open the control-point file");
     std::vector<ControlPoint> points;
@@ -70,7 +69,8 @@ std::vector<ControlPoint> read_control_points(const std::filesystem::path& file)
     double to_units = 1.0;  // a header naming px_mm, py_mm: paper millimetres
     while (std::getline(in, line)) {
         ++number;
-        if (number == 1 && line.size() >= 3 && line.compare(0, 3, "\xEF\xBB\xBF") == 0) line.erase(0, 3);
+        if (number == 1 && line.size() >= 3 && line.compare(0, 3, "\xEF\xBB\xBF") == 0)
+            line.erase(0, 3);
         const auto first = line.find_first_not_of(" \t\r");
         if (first == std::string::npos || line[first] == '#') continue;
         std::size_t column = 0;
@@ -78,25 +78,29 @@ std::vector<ControlPoint> read_control_points(const std::filesystem::path& file)
             if (points.empty() && !header) {  // one header line before the data
                 header = true;
                 std::string lower = line;
-                for (char& ch : lower) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+                for (char& ch : lower)
+                    ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
                 if (lower.find("px_mm") != std::string::npos) to_units = units_per_mm;
                 continue;
             }
             throw InputError(file, number, column, "expected four numbers px,py,E,N");
         }
         if (values.size() != 4) {
-            throw InputError(file, number, 0,
-                             "expected four numbers px,py,E,N, found " + std::to_string(values.size()));
+            throw InputError(
+                file, number, 0,
+                "expected four numbers px,py,E,N, found " + std::to_string(values.size()));
         }
         points.push_back({{values[0] * to_units, values[1] * to_units}, {values[2], values[3]}});
     }
     return points;
 }
 
-Affine fit_control_points(const std::vector<ControlPoint>& points, const std::filesystem::path& file)
-{
+Affine fit_control_points(const std::vector<ControlPoint>& points,
+                          const std::filesystem::path& file) {
     if (points.size() < 2) {
-        throw InputError(file, 0, 0, "at least 2 control points are needed, found " + std::to_string(points.size()));
+        throw InputError(
+            file, 0, 0,
+            "at least 2 control points are needed, found " + std::to_string(points.size()));
     }
     const double n = static_cast<double>(points.size());
     Point2 mp{}, mg{};
@@ -108,11 +112,15 @@ Affine fit_control_points(const std::vector<ControlPoint>& points, const std::fi
     }
     Affine t;
     if (points.size() == 2) {
-        const double px = points[1].plotter.x - points[0].plotter.x, py = points[1].plotter.y - points[0].plotter.y;
-        const double gx = points[1].ground.x - points[0].ground.x, gy = points[1].ground.y - points[0].ground.y;
+        const double px = points[1].plotter.x - points[0].plotter.x,
+                     py = points[1].plotter.y - points[0].plotter.y;
+        const double gx = points[1].ground.x - points[0].ground.x,
+                     gy = points[1].ground.y - points[0].ground.y;
         const double d = px * px + py * py;
-        if (d == 0.0) throw InputError(file, 0, 0, "the two control points have the same plotter position");
-        const double a = (gx * px + gy * py) / d, b = (gy * px - gx * py) / d;  // (g / p) as complex numbers
+        if (d == 0.0)
+            throw InputError(file, 0, 0, "the two control points have the same plotter position");
+        const double a = (gx * px + gy * py) / d,
+                     b = (gy * px - gx * py) / d;  // (g / p) as complex numbers
         t = {0.0, a, -b, 0.0, b, a};
     } else {
         double sxx = 0, sxy = 0, syy = 0, sxe = 0, sye = 0, sxn = 0, syn = 0;
@@ -129,7 +137,8 @@ Affine fit_control_points(const std::vector<ControlPoint>& points, const std::fi
         }
         const double det = sxx * syy - sxy * sxy;
         if (!(std::abs(det) > 1e-12 * (sxx * syy)) || sxx == 0.0 || syy == 0.0) {
-            throw InputError(file, 0, 0, "the control points are collinear: an affine transform is undefined");
+            throw InputError(file, 0, 0,
+                             "the control points are collinear: an affine transform is undefined");
         }
         t = {0.0, (sxe * syy - sye * sxy) / det, (sye * sxx - sxe * sxy) / det,
              0.0, (sxn * syy - syn * sxy) / det, (syn * sxx - sxn * sxy) / det};
@@ -139,8 +148,7 @@ Affine fit_control_points(const std::vector<ControlPoint>& points, const std::fi
     return t;
 }
 
-Georeference make_georeference(const HpglOptions& options)
-{
+Georeference make_georeference(const HpglOptions& options) {
     Georeference g;
     if (options.scale != 0.0 && !options.control_file.empty()) {
         throw OptionError("hpgl.scale",
@@ -155,11 +163,13 @@ Georeference make_georeference(const HpglOptions& options)
             const double r = std::hypot(p.x - points[i].ground.x, p.y - points[i].ground.y);
             sum += r * r;
             if (points.size() > 2) {
-                g.notes.push_back("control point " + std::to_string(i + 1) + ": residual " + format(r, 4) + " m");
+                g.notes.push_back("control point " + std::to_string(i + 1) + ": residual " +
+                                  format(r, 4) + " m");
             }
         }
-        g.notes.push_back(std::string(points.size() == 2 ? "similarity" : "affine") + " transform from " +
-                          std::to_string(points.size()) + " control points, RMS residual " +
+        g.notes.push_back(std::string(points.size() == 2 ? "similarity" : "affine") +
+                          " transform from " + std::to_string(points.size()) +
+                          " control points, RMS residual " +
                           format(std::sqrt(sum / static_cast<double>(points.size())), 4) + " m");
         return g;
     }
@@ -181,8 +191,9 @@ Georeference make_georeference(const HpglOptions& options)
     }
     const double mm = 1.0 / units_per_mm;
     g.transform = {0.0, mm, 0.0, 0.0, 0.0, mm};
-    g.notes.push_back("not georeferenced (no `hpgl.scale` or `hpgl.control_file`): coordinates are plotter "
-                      "millimetres on paper");
+    g.notes.push_back(
+        "not georeferenced (no `hpgl.scale` or `hpgl.control_file`): coordinates are plotter "
+        "millimetres on paper");
     return g;
 }
 

@@ -17,8 +17,7 @@ namespace dtm::io::hpgl {
 struct Affine {
     double e0 = 0.0, ex = 1.0, ey = 0.0;
     double n0 = 0.0, nx = 0.0, ny = 1.0;
-    [[nodiscard]] Point2 apply(Point2 p) const noexcept
-    {
+    [[nodiscard]] Point2 apply(Point2 p) const noexcept {
         return {e0 + ex * p.x + ey * p.y, n0 + nx * p.x + ny * p.y};
     }
 };

@@ -16,8 +16,8 @@
 #include "io/formats/hpgl/hpgl_lexer.hpp"
 
 #include <algorithm>
-#include <cstdio>
 #include <cstdint>
+#include <cstdio>
 
 #include "dtm/core/error.hpp"
 
@@ -31,8 +31,7 @@ bool is_letter(char c) noexcept { return (c >= 'A' && c <= 'Z') || (c >= 'a' && 
 bool is_digit(char c) noexcept { return c >= '0' && c <= '9'; }
 char upper(char c) noexcept { return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 32) : c; }
 
-std::string describe_byte(char c)
-{
+std::string describe_byte(char c) {
     const auto u = static_cast<unsigned char>(c);
     char buffer[24];
     if (u >= 33 && u < 127) {
@@ -44,8 +43,7 @@ std::string describe_byte(char c)
 }
 
 /// Parses a decimal number at @p pos ("-12", "+.5", "1385.640646"); advances @p pos.
-double parse_number(std::string_view bytes, std::size_t& pos)
-{
+double parse_number(std::string_view bytes, std::size_t& pos) {
     bool negative = false;
     if (bytes[pos] == '+' || bytes[pos] == '-') negative = bytes[pos++] == '-';
     std::uint64_t mantissa = 0;
@@ -83,8 +81,7 @@ double parse_number(std::string_view bytes, std::size_t& pos)
 
 }  // namespace
 
-void Diagnostics::problem(std::size_t offset, const std::string& what)
-{
+void Diagnostics::problem(std::size_t offset, const std::string& what) {
     const std::string message = "byte " + std::to_string(offset) + ": " + what;
     if (strict_) throw InputError(file_, 0, 0, message);
     ++problems_;
@@ -93,8 +90,7 @@ void Diagnostics::problem(std::size_t offset, const std::string& what)
 
 void Diagnostics::warn(const std::string& what) { warnings_.push_back(what); }
 
-std::vector<std::string> Diagnostics::take_warnings()
-{
+std::vector<std::string> Diagnostics::take_warnings() {
     if (problems_ > max_stored_warnings) {
         warnings_.push_back(std::to_string(problems_ - max_stored_warnings) +
                             " further corrupt places skipped");
@@ -102,8 +98,7 @@ std::vector<std::string> Diagnostics::take_warnings()
     return std::move(warnings_);
 }
 
-bool Lexer::next(Command& command)
-{
+bool Lexer::next(Command& command) {
     while (pos_ < bytes_.size()) {
         const char c = bytes_[pos_];
         if (c == escape) {
@@ -148,8 +143,7 @@ bool Lexer::next(Command& command)
     return false;
 }
 
-void Lexer::skip_stray()
-{
+void Lexer::skip_stray() {
     // Bytes outside ASCII where an instruction should start are corruption (for example 8-bit
     // data mangled by a text conversion). Printable text (comments, "X0=0;" notes some drivers
     // leave) is skipped up to the next separator with one summary warning.
@@ -166,16 +160,15 @@ void Lexer::skip_stray()
         ++pos_;
 }
 
-void Lexer::finish()
-{
+void Lexer::finish() {
     if (stray_runs_ > 0) {
-        diag_.warn(std::to_string(stray_runs_) + " runs of text that are not HP-GL skipped (first at byte " +
+        diag_.warn(std::to_string(stray_runs_) +
+                   " runs of text that are not HP-GL skipped (first at byte " +
                    std::to_string(first_stray_) + ")");
     }
 }
 
-void Lexer::read_numbers(Command& command)
-{
+void Lexer::read_numbers(Command& command) {
     while (pos_ < bytes_.size()) {
         const char c = bytes_[pos_];
         if (c == ' ' || c == ',' || c == '\t' || c == '\r' || c == '\n') {
@@ -194,8 +187,7 @@ void Lexer::read_numbers(Command& command)
     }
 }
 
-void Lexer::read_label(Command& command)
-{
+void Lexer::read_label(Command& command) {
     const auto end = bytes_.find(terminator_, pos_);
     if (end == std::string_view::npos) {
         diag_.problem(command.offset, "label text is not terminated (terminator " +
@@ -208,8 +200,7 @@ void Lexer::read_label(Command& command)
     pos_ = end + 1;
 }
 
-void Lexer::read_terminator_definition(Command& command)
-{
+void Lexer::read_terminator_definition(Command& command) {
     if (pos_ >= bytes_.size() || bytes_[pos_] == ';') {
         terminator_ = '\x03';
         if (pos_ < bytes_.size()) ++pos_;
@@ -221,8 +212,7 @@ void Lexer::read_terminator_definition(Command& command)
     read_numbers(command);  // optional ",mode"
 }
 
-void Lexer::read_symbol_mode(Command& command)
-{
+void Lexer::read_symbol_mode(Command& command) {
     if (pos_ < bytes_.size()) {
         const auto c = static_cast<unsigned char>(bytes_[pos_]);
         if (c > ' ' && c != ';' && c < 127) {
@@ -233,14 +223,14 @@ void Lexer::read_symbol_mode(Command& command)
     if (pos_ < bytes_.size() && bytes_[pos_] == ';') ++pos_;
 }
 
-void Lexer::skip_escape()
-{
+void Lexer::skip_escape() {
     ++pos_;  // ESC
     if (pos_ >= bytes_.size()) return;
     const char c = bytes_[pos_];
     if (c == '%') {
         std::size_t i = pos_ + 1;
-        while (i < bytes_.size() && (is_digit(bytes_[i]) || bytes_[i] == '-' || bytes_[i] == '+')) ++i;
+        while (i < bytes_.size() && (is_digit(bytes_[i]) || bytes_[i] == '-' || bytes_[i] == '+'))
+            ++i;
         if (i >= bytes_.size()) {
             pos_ = i;
             return;
@@ -281,19 +271,19 @@ void Lexer::skip_escape()
     if (c >= '0' && c <= '~') ++pos_;  // two-character escape: ESC E, ESC 9, ...
 }
 
-void Lexer::skip_pcl_parameterized()
-{
+void Lexer::skip_pcl_parameterized() {
     const char group = bytes_[pos_++];
     char family = 0;
     if (pos_ < bytes_.size() && bytes_[pos_] >= '`' && bytes_[pos_] <= '~') family = bytes_[pos_++];
     while (pos_ < bytes_.size()) {
         const std::size_t start = pos_;
-        while (pos_ < bytes_.size() &&
-               (is_digit(bytes_[pos_]) || bytes_[pos_] == '+' || bytes_[pos_] == '-' || bytes_[pos_] == '.'))
+        while (pos_ < bytes_.size() && (is_digit(bytes_[pos_]) || bytes_[pos_] == '+' ||
+                                        bytes_[pos_] == '-' || bytes_[pos_] == '.'))
             ++pos_;
         std::uint64_t count = 0;
         for (std::size_t i = start; i < pos_; ++i) {
-            if (is_digit(bytes_[i]) && count < (std::uint64_t{1} << 40)) count = count * 10 + static_cast<unsigned>(bytes_[i] - '0');
+            if (is_digit(bytes_[i]) && count < (std::uint64_t{1} << 40))
+                count = count * 10 + static_cast<unsigned>(bytes_[i] - '0');
             if (bytes_[i] == '.') break;
         }
         if (pos_ >= bytes_.size()) return;
@@ -302,15 +292,16 @@ void Lexer::skip_pcl_parameterized()
         ++pos_;
         const char kind = upper(parameter);
         const bool binary = kind == 'W' || (group == '&' && family == 'p' && kind == 'X');
-        if (binary) pos_ = static_cast<std::size_t>(std::min<std::uint64_t>(bytes_.size(), pos_ + count));
+        if (binary)
+            pos_ = static_cast<std::size_t>(std::min<std::uint64_t>(bytes_.size(), pos_ + count));
         if (parameter >= '@' && parameter <= '^') return;  // upper case ends the escape
     }
 }
 
-void Lexer::skip_pjl_lines()
-{
+void Lexer::skip_pjl_lines() {
     while (true) {
-        while (pos_ < bytes_.size() && (bytes_[pos_] == '\r' || bytes_[pos_] == '\n' || bytes_[pos_] == ' '))
+        while (pos_ < bytes_.size() &&
+               (bytes_[pos_] == '\r' || bytes_[pos_] == '\n' || bytes_[pos_] == ' '))
             ++pos_;
         if (bytes_.substr(pos_, 4) != "@PJL" && bytes_.substr(pos_, 4) != "@pjl") return;
         auto end = bytes_.find('\n', pos_);
@@ -318,7 +309,8 @@ void Lexer::skip_pjl_lines()
         std::string line(bytes_.substr(pos_, end - pos_));
         std::transform(line.begin(), line.end(), line.begin(), [](char ch) { return upper(ch); });
         if (line.find("ENTER") != std::string::npos && line.find("LANGUAGE") != std::string::npos) {
-            pcl_mode_ = line.find("HPGL") == std::string::npos && line.find("HP-GL") == std::string::npos;
+            pcl_mode_ =
+                line.find("HPGL") == std::string::npos && line.find("HP-GL") == std::string::npos;
         }
         pos_ = end;
     }

@@ -19,7 +19,8 @@ namespace dtm::io::hpgl {
 /// InputError(file, "byte N: ..."); otherwise problems become (capped) warnings.
 class Diagnostics {
 public:
-    Diagnostics(std::filesystem::path file, bool strict) : file_(std::move(file)), strict_(strict) {}
+    Diagnostics(std::filesystem::path file, bool strict)
+        : file_(std::move(file)), strict_(strict) {}
     /// A corrupt or unreadable part of the input at byte @p offset (0-based).
     void problem(std::size_t offset, const std::string& what);
     /// Something worth telling the user that is not corruption.
@@ -37,13 +38,12 @@ private:
 
 /// One instruction. Views point into the input bytes; vectors are reused between calls.
 struct Command {
-    char name[2] = {0, 0};  ///< upper-case mnemonic
-    std::size_t offset = 0; ///< byte offset of the mnemonic
+    char name[2] = {0, 0};       ///< upper-case mnemonic
+    std::size_t offset = 0;      ///< byte offset of the mnemonic
     std::vector<double> params;  ///< numeric parameters in order (quoted strings skipped)
     std::string_view text;       ///< LB/BL/WD label text (without terminator); SM symbol
     std::vector<PeItem> pe;      ///< decoded PE items
-    [[nodiscard]] bool is(const char (&mnemonic)[3]) const noexcept
-    {
+    [[nodiscard]] bool is(const char (&mnemonic)[3]) const noexcept {
         return name[0] == mnemonic[0] && name[1] == mnemonic[1];
     }
 };
@@ -73,7 +73,7 @@ private:
     std::string_view bytes_;
     Diagnostics& diag_;
     std::size_t pos_ = 0;
-    bool pcl_mode_ = false;   ///< inside PCL (after ESC %#A): skip until the next escape
+    bool pcl_mode_ = false;  ///< inside PCL (after ESC %#A): skip until the next escape
     char terminator_ = '\x03';
     bool saw_hpgl_ = false;
     std::size_t stray_runs_ = 0;

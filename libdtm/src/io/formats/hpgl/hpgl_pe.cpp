@@ -30,46 +30,41 @@ constexpr unsigned char escape = 0x1B;
 
 struct DigitSet {
     bool seven_bit = false;
-    [[nodiscard]] bool non_final(unsigned char c) const noexcept
-    {
+    [[nodiscard]] bool non_final(unsigned char c) const noexcept {
         return seven_bit ? (c >= 63 && c <= 94) : (c >= 63 && c <= 126);
     }
-    [[nodiscard]] bool final_digit(unsigned char c) const noexcept
-    {
+    [[nodiscard]] bool final_digit(unsigned char c) const noexcept {
         return seven_bit ? (c >= 95 && c <= 126) : (c >= 191 && c <= 254);
     }
-    [[nodiscard]] unsigned char fold(unsigned char c) const noexcept
-    {
+    [[nodiscard]] unsigned char fold(unsigned char c) const noexcept {
         return seven_bit ? static_cast<unsigned char>(c & 0x7F) : c;
     }
-    [[nodiscard]] unsigned value(unsigned char c) const noexcept
-    {
+    [[nodiscard]] unsigned value(unsigned char c) const noexcept {
         if (seven_bit) return c >= 95 ? c - 95u : c - 63u;
         return c >= 191 ? c - 191u : c - 63u;
     }
     [[nodiscard]] unsigned shift() const noexcept { return seven_bit ? 5u : 6u; }
 };
 
-std::string byte_text(unsigned char c)
-{
+std::string byte_text(unsigned char c) {
     char buffer[16];
     std::snprintf(buffer, sizeof buffer, "0x%02X", static_cast<unsigned>(c));
     return buffer;
 }
 
-bool ignorable(unsigned char c) noexcept { return c <= ' ' || c == 127 || (c >= 128 && c <= 160) || c == 255; }
+bool ignorable(unsigned char c) noexcept {
+    return c <= ' ' || c == 127 || (c >= 128 && c <= 160) || c == 255;
+}
 
 /// 8-bit flags are read without their eighth bit (0xBD is '=').
-unsigned char flag_of(unsigned char c) noexcept
-{
+unsigned char flag_of(unsigned char c) noexcept {
     const auto low = static_cast<unsigned char>(c & 0x7F);
     const bool is_flag = low == ':' || low == '<' || low == '>' || low == '=' || low == '7';
     return is_flag && (c == low || c >= 0xB7) ? low : 0;
 }
 
 /// True if a whole number (non-final digits then a final one) starts at @p pos.
-bool number_follows(std::string_view bytes, std::size_t pos, DigitSet digits)
-{
+bool number_follows(std::string_view bytes, std::size_t pos, DigitSet digits) {
     for (std::size_t i = pos; i < bytes.size(); ++i) {
         const auto c = digits.fold(static_cast<unsigned char>(bytes[i]));
         if (digits.final_digit(c)) return true;
@@ -81,12 +76,9 @@ bool number_follows(std::string_view bytes, std::size_t pos, DigitSet digits)
 class PeDecoder {
 public:
     PeDecoder(std::string_view bytes, std::size_t pos, std::vector<PeItem>& out, Diagnostics& diag)
-        : bytes_(bytes), pos_(pos), out_(out), diag_(diag)
-    {
-    }
+        : bytes_(bytes), pos_(pos), out_(out), diag_(diag) {}
 
-    std::size_t run()
-    {
+    std::size_t run() {
         out_.clear();
         while (pos_ < bytes_.size()) {
             const auto raw = static_cast<unsigned char>(bytes_[pos_]);
@@ -113,54 +105,58 @@ public:
 
 private:
     /// C2/C3 then 80-BF: a UTF-8 re-encoded 8-bit byte.
-    [[nodiscard]] bool mangled() const noexcept
-    {
+    [[nodiscard]] bool mangled() const noexcept {
         if (pos_ == 0) return false;
         const auto before = static_cast<unsigned char>(bytes_[pos_ - 1]);
         const auto c = static_cast<unsigned char>(bytes_[pos_]);
         return (before == 0xC2 || before == 0xC3) && c >= 0x80 && c <= 0xBF;
     }
 
-    void report_invalid(unsigned char c)
-    {
+    void report_invalid(unsigned char c) {
         std::string what = "invalid byte " + byte_text(c) + " in PE (polyline encoded) data";
-        if (mangled()) what += " (after " + byte_text(static_cast<unsigned char>(bytes_[pos_ - 1])) + ": the plot looks re-encoded as UTF-8)";
+        if (mangled())
+            what += " (after " + byte_text(static_cast<unsigned char>(bytes_[pos_ - 1])) +
+                    ": the plot looks re-encoded as UTF-8)";
         diag_.problem(pos_, what);
     }
 
-    static bool is_letter(unsigned char c) noexcept
-    {
+    static bool is_letter(unsigned char c) noexcept {
         return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z');
     }
 
-    void flag(unsigned char c)
-    {
+    void flag(unsigned char c) {
         ++pos_;
         switch (c) {
-        case ':': {
-            double pen = 0.0;
-            if (read_number(pen)) out_.push_back({PeItem::Kind::pen, false, 0.0, 0.0, static_cast<int>(pen)});
-            break;
-        }
-        case '<': pen_up_ = true; break;
-        case '=': absolute_ = true; break;
-        case '7': digits_.seven_bit = true; break;
-        default: {  // '>'
-            double bits = 0.0;
-            if (read_number(bits)) {
-                if (bits < 0.0 || bits > 52.0) {
-                    diag_.problem(pos_, "PE fractional bits out of range");
-                } else {
-                    fraction_ = std::ldexp(1.0, -static_cast<int>(bits));
-                }
+            case ':': {
+                double pen = 0.0;
+                if (read_number(pen))
+                    out_.push_back({PeItem::Kind::pen, false, 0.0, 0.0, static_cast<int>(pen)});
+                break;
             }
-            break;
-        }
+            case '<':
+                pen_up_ = true;
+                break;
+            case '=':
+                absolute_ = true;
+                break;
+            case '7':
+                digits_.seven_bit = true;
+                break;
+            default: {  // '>'
+                double bits = 0.0;
+                if (read_number(bits)) {
+                    if (bits < 0.0 || bits > 52.0) {
+                        diag_.problem(pos_, "PE fractional bits out of range");
+                    } else {
+                        fraction_ = std::ldexp(1.0, -static_cast<int>(bits));
+                    }
+                }
+                break;
+            }
         }
     }
 
-    void coordinate()
-    {
+    void coordinate() {
         double value = 0.0;
         if (!read_number(value)) {
             have_x_ = false;
@@ -173,14 +169,14 @@ private:
             return;
         }
         have_x_ = false;
-        out_.push_back({pen_up_ ? PeItem::Kind::move : PeItem::Kind::draw, absolute_, x_, value, 0});
+        out_.push_back(
+            {pen_up_ ? PeItem::Kind::move : PeItem::Kind::draw, absolute_, x_, value, 0});
         pen_up_ = false;
         absolute_ = false;
     }
 
     /// Reads one signed number; false (after reporting) if it is malformed.
-    bool read_number(double& result)
-    {
+    bool read_number(double& result) {
         std::uint64_t magnitude = 0;
         unsigned shift = 0;
         while (pos_ < bytes_.size()) {
@@ -227,9 +223,10 @@ private:
 
 }  // namespace
 
-std::size_t decode_pe(std::string_view bytes, std::size_t pos, std::vector<PeItem>& out,
-                      Diagnostics& diagnostics)
-{
+std::size_t decode_pe(std::string_view bytes,
+                      std::size_t pos,
+                      std::vector<PeItem>& out,
+                      Diagnostics& diagnostics) {
     return PeDecoder(bytes, pos, out, diagnostics).run();
 }
 

@@ -18,13 +18,15 @@ struct PeItem {
     bool absolute = false;  ///< '=' flag: x, y are absolute (otherwise relative)
     double x = 0.0;         ///< in current units, fractional bits applied
     double y = 0.0;
-    int pen = 0;            ///< Kind::pen only
+    int pen = 0;  ///< Kind::pen only
 };
 
 /// Decodes PE data starting at @p pos (just after "PE") and returns the position after it: after
 /// the ';', or at the escape or the next instruction that ends it. Invalid bytes are reported to
 /// @p diagnostics with their offset (strict mode throws there).
-std::size_t decode_pe(std::string_view bytes, std::size_t pos, std::vector<PeItem>& out,
+std::size_t decode_pe(std::string_view bytes,
+                      std::size_t pos,
+                      std::vector<PeItem>& out,
                       Diagnostics& diagnostics);
 
 }  // namespace dtm::io::hpgl

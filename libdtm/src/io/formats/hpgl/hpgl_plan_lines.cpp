@@ -30,13 +30,10 @@ const double unknown = std::numeric_limits<double>::quiet_NaN();
 class NearestSpot {
 public:
     explicit NearestSpot(const std::vector<SpotHeight>& spots, double cell)
-        : places_(positions(spots)), grid_(places_, cell)
-    {
-    }
+        : places_(positions(spots)), grid_(places_, cell) {}
 
     /// Index of the spot height within @p radius of @p p that is nearest, or -1.
-    [[nodiscard]] long within(Point2 p, double radius) const
-    {
+    [[nodiscard]] long within(Point2 p, double radius) const {
         long best = -1;
         double best_d = std::numeric_limits<double>::infinity();
         grid_.near(p, radius, [&](std::uint32_t i, double d) {
@@ -49,8 +46,7 @@ public:
     }
 
 private:
-    static std::vector<Point2> positions(const std::vector<SpotHeight>& spots)
-    {
+    static std::vector<Point2> positions(const std::vector<SpotHeight>& spots) {
         std::vector<Point2> out;
         for (const SpotHeight& s : spots) out.push_back(s.at);
         return out;
@@ -61,8 +57,7 @@ private:
 };
 
 /// Fills unknown z by linear interpolation along the line (cyclic when closed).
-void interpolate(std::vector<Point3>& pts, bool closed)
-{
+void interpolate(std::vector<Point3>& pts, bool closed) {
     const std::size_t n = pts.size();
     std::vector<std::size_t> known;
     for (std::size_t i = 0; i < n; ++i) {
@@ -93,16 +88,17 @@ void interpolate(std::vector<Point3>& pts, bool closed)
     for (std::size_t i = known.back() + 1; i < n; ++i) pts[i].z = pts[known.back()].z;
 }
 
-std::string describe(const RoleLine& line)
-{
-    return std::string(pen_role_name(line.role)) + " at byte " + std::to_string(line.offset) + " (pen " +
-           std::to_string(line.pen) + ")";
+std::string describe(const RoleLine& line) {
+    return std::string(pen_role_name(line.role)) + " at byte " + std::to_string(line.offset) +
+           " (pen " + std::to_string(line.pen) + ")";
 }
 
 }  // namespace
 
-void assign_line_roles(const Plot& plot, const HpglOptions& options, double radius, TerrainPlan& plan)
-{
+void assign_line_roles(const Plot& plot,
+                       const HpglOptions& options,
+                       double radius,
+                       TerrainPlan& plan) {
     const NearestSpot spots(plan.spots, radius);
     std::map<int, std::size_t> ignored_by_pen;
     std::size_t made_soft = 0;
@@ -119,7 +115,8 @@ void assign_line_roles(const Plot& plot, const HpglOptions& options, double radi
         }
         RoleLine out{role, line.pen, {}, false, line.offset, 0};
         for (const Point2& p : line.points) out.points.push_back({p.x, p.y, unknown});
-        if (out.points.size() >= 3 && distance(line.points.front(), line.points.back()) <= closing_tolerance) {
+        if (out.points.size() >= 3 &&
+            distance(line.points.front(), line.points.back()) <= closing_tolerance) {
             out.points.pop_back();
             out.closed = true;
         }
@@ -142,21 +139,25 @@ void assign_line_roles(const Plot& plot, const HpglOptions& options, double radi
                 out.role = PenRole::soft_breakline;
                 ++made_soft;
             } else if (role != PenRole::soft_breakline) {
-                plan.warnings.push_back(describe(out) +
-                                        " has no spot height on its vertices: heights left to the surface");
+                plan.warnings.push_back(
+                    describe(out) +
+                    " has no spot height on its vertices: heights left to the surface");
             }
         }
         plan.lines.push_back(std::move(out));
     }
     if (made_soft > 0) {
-        plan.warnings.push_back(std::to_string(made_soft) +
-                                " breaklines have no spot height within the marker radius of a vertex: made soft");
+        plan.warnings.push_back(
+            std::to_string(made_soft) +
+            " breaklines have no spot height within the marker radius of a vertex: made soft");
     }
     if (!ignored_by_pen.empty()) {
         std::string pens;
-        for (const auto& [pen, count] : ignored_by_pen) pens += " " + std::to_string(pen) + ":" + std::to_string(count);
+        for (const auto& [pen, count] : ignored_by_pen)
+            pens += " " + std::to_string(pen) + ":" + std::to_string(count);
         plan.warnings.push_back(std::to_string(plan.ignored_lines) +
-                                " lines on pens without a role ignored (pen:lines" + pens + "); see `hpgl.pens`");
+                                " lines on pens without a role ignored (pen:lines" + pens +
+                                "); see `hpgl.pens`");
     }
 }
 

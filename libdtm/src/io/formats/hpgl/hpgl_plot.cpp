@@ -12,13 +12,14 @@
 // coordinates stay in the rotated (logical) frame the file was written in, which is the frame
 // users read control points from; IW clipping is not applied.
 // Reference: HP-GL/2 and HP RTL Reference Guide (Hewlett-Packard, 1997), chapters 4-7.
+#include "io/formats/hpgl/hpgl_plot.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <numbers>
 
 #include "io/formats/hpgl/hpgl_lexer.hpp"
-#include "io/formats/hpgl/hpgl_plot.hpp"
 
 namespace dtm::io::hpgl {
 namespace {
@@ -33,23 +34,23 @@ constexpr int code(char first, char second) { return first * 256 + second; }
 /// Instructions understood and deliberately without effect on the recorded geometry.
 constexpr std::array<int, 66> ignored = [] {
     std::array<int, 66> list{
-        code("AC"), code("AF"), code("AH"), code("AP"), code("BF"), code("BL"), code("BP"), code("CA"),
-        code("CC"), code("CM"), code("CO"), code("CP"), code("CR"), code("CS"), code("CT"), code("CV"),
-        code("DL"), code("DS"), code("DV"), code("EA"), code("EC"), code("EP"), code("ER"), code("ES"),
-        code("EW"), code("FP"), code("FR"), code("FS"), code("FT"), code("GM"), code("IM"), code("IV"),
-        code("IW"), code("KY"), code("LA"), code("LM"), code("LO"), code("LT"), code("MC"), code("MG"),
-        code("NP"), code("NR"), code("OA"), code("OC"), code("OE"), code("OH"), code("OI"), code("OP"),
-        code("OS"), code("PB"), code("PC"), code("PG"), code("PM"), code("PP"), code("PT"), code("PW"),
-        code("QL"), code("RA"), code("RF"), code("RR"), code("SA"), code("SL"), code("SS"), code("TD"),
-        code("TR"), code("UL")};
+        code("AC"), code("AF"), code("AH"), code("AP"), code("BF"), code("BL"), code("BP"),
+        code("CA"), code("CC"), code("CM"), code("CO"), code("CP"), code("CR"), code("CS"),
+        code("CT"), code("CV"), code("DL"), code("DS"), code("DV"), code("EA"), code("EC"),
+        code("EP"), code("ER"), code("ES"), code("EW"), code("FP"), code("FR"), code("FS"),
+        code("FT"), code("GM"), code("IM"), code("IV"), code("IW"), code("KY"), code("LA"),
+        code("LM"), code("LO"), code("LT"), code("MC"), code("MG"), code("NP"), code("NR"),
+        code("OA"), code("OC"), code("OE"), code("OH"), code("OI"), code("OP"), code("OS"),
+        code("PB"), code("PC"), code("PG"), code("PM"), code("PP"), code("PT"), code("PW"),
+        code("QL"), code("RA"), code("RF"), code("RR"), code("SA"), code("SL"), code("SS"),
+        code("TD"), code("TR"), code("UL")};
     std::sort(list.begin(), list.end());
     return list;
 }();
 constexpr std::array<int, 8> also_ignored{code("SV"), code("TL"), code("VS"), code("WD"),
                                           code("WG"), code("WU"), code("XT"), code("YT")};
 
-bool is_ignored(int name)
-{
+bool is_ignored(int name) {
     return std::binary_search(ignored.begin(), ignored.end(), name) ||
            std::find(also_ignored.begin(), also_ignored.end(), name) != also_ignored.end();
 }
@@ -57,8 +58,7 @@ bool is_ignored(int name)
 class Plotter {
 public:
     Plotter(Plot& plot, Diagnostics& diag, const PlotOptions& options)
-        : plot_(plot), diag_(diag), options_(options)
-    {
+        : plot_(plot), diag_(diag), options_(options) {
         reset(true);
     }
 
@@ -82,7 +82,9 @@ private:
     void label_size(const Command& c, bool relative);
     void unknown(const Command& c);
 
-    [[nodiscard]] Point2 to_plotter(double x, double y) const { return {ax_ * x + bx_, ay_ * y + by_}; }
+    [[nodiscard]] Point2 to_plotter(double x, double y) const {
+        return {ax_ * x + bx_, ay_ * y + by_};
+    }
     [[nodiscard]] Point2 delta(double dx, double dy) const { return {ax_ * dx, ay_ * dy}; }
 
     Plot& plot_;
@@ -97,22 +99,20 @@ private:
     long line_ = -1;  ///< index of the polyline being drawn, -1 when none
     double page_w_ = default_page_width, page_h_ = default_page_height;
     Point2 p1_, p2_;
-    std::vector<double> sc_;  ///< last SC parameters (empty: scaling off)
+    std::vector<double> sc_;                            ///< last SC parameters (empty: scaling off)
     double ax_ = 1.0, bx_ = 0.0, ay_ = 1.0, by_ = 0.0;  ///< user units -> plotter units
     double dir_x_ = 1.0, dir_y_ = 0.0;
     double char_w_ = 0.19 * cm, char_h_ = 0.27 * cm;
     std::size_t odd_coordinates_ = 0;
     long rotation_ = 0;  ///< RO angle; 90 and 270 swap the page axes of the logical frame
 
-    [[nodiscard]] Point2 page() const
-    {
+    [[nodiscard]] Point2 page() const {
         const bool swapped = ((rotation_ % 180) + 180) % 180 == 90;
         return swapped ? Point2{page_h_, page_w_} : Point2{page_w_, page_h_};
     }
 };
 
-void Plotter::reset(bool initialize)
-{
+void Plotter::reset(bool initialize) {
     absolute_ = true;
     symbol_ = 0;
     sc_.clear();
@@ -131,81 +131,125 @@ void Plotter::reset(bool initialize)
     p2_ = page();
 }
 
-void Plotter::execute(const Command& c)
-{
+void Plotter::execute(const Command& c) {
     ++plot_.instructions;
     offset_ = c.offset;
     switch (code(c.name[0], c.name[1])) {
-    case code("IN"): reset(true); break;
-    case code("DF"): reset(false); break;
-    case code("SP"): select_pen(c); break;
-    case code("PU"): pen_down_ = false; line_ = -1; moves(c); break;
-    case code("PD"):
-        pen_down_ = true;
-        if (c.params.empty()) start_line();
-        moves(c);
-        break;
-    case code("PA"): absolute_ = true; moves(c); break;
-    case code("PR"): absolute_ = false; moves(c); break;
-    case code("PE"): pe(c); break;
-    case code("CI"): circle(c); break;
-    case code("AA"): arc(c, false); break;
-    case code("AR"): arc(c, true); break;
-    case code("LB"): label(c); break;
-    case code("SM"): symbol_ = c.text.empty() ? '\0' : c.text[0]; break;
-    case code("DT"): break;  // handled by the tokenizer
-    case code("IP"): scaling_points(c, false); break;
-    case code("IR"): scaling_points(c, true); break;
-    case code("SC"): sc_ = c.params; update_scaling(c.offset); break;
-    case code("RO"): rotation_ = c.params.empty() ? 0 : static_cast<long>(c.params[0]); break;
-    case code("PS"):
-        if (c.params.size() >= 1 && c.params[0] > 0) page_w_ = c.params[0];
-        if (c.params.size() >= 2 && c.params[1] > 0) page_h_ = c.params[1];
-        p1_ = {};
-        p2_ = page();
-        update_scaling(c.offset);
-        break;
-    case code("DI"): label_direction(c, false); break;
-    case code("DR"): label_direction(c, true); break;
-    case code("SI"): label_size(c, false); break;
-    case code("SR"): label_size(c, true); break;
-    default: unknown(c); break;
+        case code("IN"):
+            reset(true);
+            break;
+        case code("DF"):
+            reset(false);
+            break;
+        case code("SP"):
+            select_pen(c);
+            break;
+        case code("PU"):
+            pen_down_ = false;
+            line_ = -1;
+            moves(c);
+            break;
+        case code("PD"):
+            pen_down_ = true;
+            if (c.params.empty()) start_line();
+            moves(c);
+            break;
+        case code("PA"):
+            absolute_ = true;
+            moves(c);
+            break;
+        case code("PR"):
+            absolute_ = false;
+            moves(c);
+            break;
+        case code("PE"):
+            pe(c);
+            break;
+        case code("CI"):
+            circle(c);
+            break;
+        case code("AA"):
+            arc(c, false);
+            break;
+        case code("AR"):
+            arc(c, true);
+            break;
+        case code("LB"):
+            label(c);
+            break;
+        case code("SM"):
+            symbol_ = c.text.empty() ? '\0' : c.text[0];
+            break;
+        case code("DT"):
+            break;  // handled by the tokenizer
+        case code("IP"):
+            scaling_points(c, false);
+            break;
+        case code("IR"):
+            scaling_points(c, true);
+            break;
+        case code("SC"):
+            sc_ = c.params;
+            update_scaling(c.offset);
+            break;
+        case code("RO"):
+            rotation_ = c.params.empty() ? 0 : static_cast<long>(c.params[0]);
+            break;
+        case code("PS"):
+            if (c.params.size() >= 1 && c.params[0] > 0) page_w_ = c.params[0];
+            if (c.params.size() >= 2 && c.params[1] > 0) page_h_ = c.params[1];
+            p1_ = {};
+            p2_ = page();
+            update_scaling(c.offset);
+            break;
+        case code("DI"):
+            label_direction(c, false);
+            break;
+        case code("DR"):
+            label_direction(c, true);
+            break;
+        case code("SI"):
+            label_size(c, false);
+            break;
+        case code("SR"):
+            label_size(c, true);
+            break;
+        default:
+            unknown(c);
+            break;
     }
 }
 
-void Plotter::unknown(const Command& c)
-{
+void Plotter::unknown(const Command& c) {
     const int name = code(c.name[0], c.name[1]);
     if (is_ignored(name)) return;
     ++plot_.unknown_instructions;
     const std::string mnemonic{c.name[0], c.name[1]};
-    if (plot_.unknown_names.size() < 60 && plot_.unknown_names.find(mnemonic) == std::string::npos) {
+    if (plot_.unknown_names.size() < 60 &&
+        plot_.unknown_names.find(mnemonic) == std::string::npos) {
         if (!plot_.unknown_names.empty()) plot_.unknown_names += ' ';
         plot_.unknown_names += mnemonic;
     }
 }
 
-void Plotter::select_pen(const Command& c)
-{
+void Plotter::select_pen(const Command& c) {
     const double pen = c.params.empty() ? 0.0 : c.params[0];
     pen_ = (pen >= 0.0 && pen < 1e6) ? static_cast<int>(pen) : 0;
     line_ = -1;
 }
 
-void Plotter::moves(const Command& c)
-{
+void Plotter::moves(const Command& c) {
     const auto& p = c.params;
     if (p.size() % 2 != 0) ++odd_coordinates_;
     for (std::size_t i = 0; i + 1 < p.size(); i += 2) {
-        const Point2 target = absolute_ ? to_plotter(p[i], p[i + 1])
-                                        : Point2{pos_.x + delta(p[i], p[i + 1]).x,
-                                                 pos_.y + delta(p[i], p[i + 1]).y};
+        const Point2 target =
+            absolute_ ? to_plotter(p[i], p[i + 1])
+                      : Point2{pos_.x + delta(p[i], p[i + 1]).x, pos_.y + delta(p[i], p[i + 1]).y};
         segment_to(target, true);
     }
 }
 
-void Plotter::pe(const Command& c)
-{
+void Plotter::pe(const Command& c) {
     // Each pair is a pen-down move unless flagged pen-up; the pen stays as the last pair left it.
     for (const PeItem& item : c.pe) {
         if (item.kind == PeItem::Kind::pen) {
@@ -222,8 +266,7 @@ void Plotter::pe(const Command& c)
     }
 }
 
-void Plotter::start_line()
-{
+void Plotter::start_line() {
     if (pen_ == 0 || line_ >= 0) return;
     auto& lines = plot_.lines;
     if (!lines.empty() && lines.back().pen == pen_ && lines.back().points.back() == pos_) {
@@ -234,8 +277,7 @@ void Plotter::start_line()
     line_ = static_cast<long>(lines.size()) - 1;
 }
 
-void Plotter::segment_to(Point2 target, bool symbol)
-{
+void Plotter::segment_to(Point2 target, bool symbol) {
     if (!std::isfinite(target.x) || !std::isfinite(target.y)) {
         diag_.problem(offset_, "coordinate out of range");
         return;
@@ -251,8 +293,7 @@ void Plotter::segment_to(Point2 target, bool symbol)
     }
 }
 
-void Plotter::circle(const Command& c)
-{
+void Plotter::circle(const Command& c) {
     line_ = -1;
     if (c.params.empty() || pen_ == 0) return;
     const double radius = std::abs(c.params[0] * ax_);
@@ -261,15 +302,15 @@ void Plotter::circle(const Command& c)
     }
 }
 
-void Plotter::arc(const Command& c, bool relative)
-{
+void Plotter::arc(const Command& c, bool relative) {
     const auto& p = c.params;
     if (p.size() < 3) return;
-    const Point2 centre = relative ? Point2{pos_.x + delta(p[0], p[1]).x, pos_.y + delta(p[0], p[1]).y}
-                                   : to_plotter(p[0], p[1]);
+    const Point2 centre = relative
+                              ? Point2{pos_.x + delta(p[0], p[1]).x, pos_.y + delta(p[0], p[1]).y}
+                              : to_plotter(p[0], p[1]);
     const double sweep = std::clamp(p[2], -360.0, 360.0) * std::numbers::pi / 180.0;
-    const double chord = std::clamp(p.size() >= 4 ? std::abs(p[3]) : 5.0, 0.5, 180.0) *
-                         std::numbers::pi / 180.0;
+    const double chord =
+        std::clamp(p.size() >= 4 ? std::abs(p[3]) : 5.0, 0.5, 180.0) * std::numbers::pi / 180.0;
     const double radius = std::hypot(pos_.x - centre.x, pos_.y - centre.y);
     const double start = std::atan2(pos_.y - centre.y, pos_.x - centre.x);
     const int steps = std::max(1, static_cast<int>(std::ceil(std::abs(sweep) / chord)));
@@ -280,8 +321,7 @@ void Plotter::arc(const Command& c, bool relative)
     }
 }
 
-void Plotter::label(const Command& c)
-{
+void Plotter::label(const Command& c) {
     if (pen_ != 0) plot_.labels.push_back({pen_, pos_, std::string(c.text), c.offset});
     line_ = -1;
     // Advance the pen as the plotter would (character cell 1.5 x width, line 2 x height).
@@ -299,8 +339,7 @@ void Plotter::label(const Command& c)
     pos_ = {start.x + column * dir_x_ - row * dir_y_, start.y + column * dir_y_ + row * dir_x_};
 }
 
-void Plotter::scaling_points(const Command& c, bool percent)
-{
+void Plotter::scaling_points(const Command& c, bool percent) {
     const auto& p = c.params;
     const Point2 size{p2_.x - p1_.x, p2_.y - p1_.y};
     const Point2 page_size = page();
@@ -308,7 +347,8 @@ void Plotter::scaling_points(const Command& c, bool percent)
         p1_ = {};
         p2_ = page_size;
     } else if (p.size() >= 2) {
-        p1_ = percent ? Point2{p[0] / 100.0 * page_size.x, p[1] / 100.0 * page_size.y} : Point2{p[0], p[1]};
+        p1_ = percent ? Point2{p[0] / 100.0 * page_size.x, p[1] / 100.0 * page_size.y}
+                      : Point2{p[0], p[1]};
         if (p.size() >= 4) {
             p2_ = percent ? Point2{p[2] / 100.0 * page_size.x, p[3] / 100.0 * page_size.y}
                           : Point2{p[2], p[3]};
@@ -319,8 +359,7 @@ void Plotter::scaling_points(const Command& c, bool percent)
     update_scaling(c.offset);
 }
 
-void Plotter::update_scaling(std::size_t offset)
-{
+void Plotter::update_scaling(std::size_t offset) {
     ax_ = ay_ = 1.0;
     bx_ = by_ = 0.0;
     if (sc_.size() < 4) return;
@@ -347,8 +386,7 @@ void Plotter::update_scaling(std::size_t offset)
     by_ = p1_.y - ay_ * sc_[2];
 }
 
-void Plotter::isotropic(double left, double bottom)
-{
+void Plotter::isotropic(double left, double bottom) {
     const double sx = (p2_.x - p1_.x) / (sc_[1] - sc_[0]);
     const double sy = (p2_.y - p1_.y) / (sc_[3] - sc_[2]);
     const double s = std::min(std::abs(sx), std::abs(sy));
@@ -360,8 +398,7 @@ void Plotter::isotropic(double left, double bottom)
     by_ = p1_.y + std::copysign(spare_y * bottom / 100.0, sy) - ay_ * sc_[2];
 }
 
-void Plotter::label_direction(const Command& c, bool relative)
-{
+void Plotter::label_direction(const Command& c, bool relative) {
     double run = c.params.size() >= 2 ? c.params[0] : 1.0;
     double rise = c.params.size() >= 2 ? c.params[1] : 0.0;
     if (relative) {
@@ -375,8 +412,7 @@ void Plotter::label_direction(const Command& c, bool relative)
     }
 }
 
-void Plotter::label_size(const Command& c, bool relative)
-{
+void Plotter::label_size(const Command& c, bool relative) {
     if (c.params.size() < 2) {
         char_w_ = 0.19 * cm;
         char_h_ = 0.27 * cm;
@@ -386,8 +422,7 @@ void Plotter::label_size(const Command& c, bool relative)
     char_h_ = relative ? c.params[1] / 100.0 * std::abs(p2_.y - p1_.y) : c.params[1] * cm;
 }
 
-void Plotter::finish()
-{
+void Plotter::finish() {
     if (odd_coordinates_ > 0) {
         diag_.warn(std::to_string(odd_coordinates_) +
                    " instructions had an odd number of coordinates (last one ignored)");
@@ -396,9 +431,10 @@ void Plotter::finish()
 
 }  // namespace
 
-Plot plot_hpgl(std::string_view bytes, const std::filesystem::path& file, const PlotOptions& options,
-               const Progress& progress)
-{
+Plot plot_hpgl(std::string_view bytes,
+               const std::filesystem::path& file,
+               const PlotOptions& options,
+               const Progress& progress) {
     Plot plot;
     Diagnostics diag(file, options.strict);
     Lexer lexer(bytes, diag);
@@ -408,8 +444,9 @@ Plot plot_hpgl(std::string_view bytes, const std::filesystem::path& file, const 
     while (lexer.next(command)) {
         plotter.execute(command);
         if ((++count & 0xFFFF) == 0 && !bytes.empty()) {
-            progress.report(static_cast<double>(lexer.position()) / static_cast<double>(bytes.size()),
-                            "reading HPGL");
+            progress.report(
+                static_cast<double>(lexer.position()) / static_cast<double>(bytes.size()),
+                "reading HPGL");
         }
     }
     plotter.finish();

@@ -58,7 +58,9 @@ struct PlotOptions {
 
 /// Runs the whole byte stream through the tokenizer and the plotter state machine.
 /// @throws InputError("<file>: byte N: ...") when strict and the data is corrupt; Cancelled.
-[[nodiscard]] Plot plot_hpgl(std::string_view bytes, const std::filesystem::path& file,
-                             const PlotOptions& options, const Progress& progress = {});
+[[nodiscard]] Plot plot_hpgl(std::string_view bytes,
+                             const std::filesystem::path& file,
+                             const PlotOptions& options,
+                             const Progress& progress = {});
 
 }  // namespace dtm::io::hpgl

@@ -8,8 +8,8 @@
 // Reference: Greg Turk, "The PLY Polygon File Format" (1994).
 #include <algorithm>
 #include <bit>
-#include <charconv>
 #include <cerrno>
+#include <charconv>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -27,6 +27,7 @@
 
 #include "dtm/core/error.hpp"
 #include "dtm/io/formats/ply.hpp"
+#include "io/formats/tin_checks.hpp"
 
 namespace dtm::io {
 namespace {
@@ -453,14 +454,14 @@ LoadedTin read_tin_ply(const fs::path& path) {
     }
     try {
         link_neighbours(reader.tin);
+        detail::check_tin_from_file(reader.tin);
     } catch (const InputError& e) {
         throw InputError(path, 0, 0, e.what());
     }
     return {std::move(reader.tin), header.crs_wkt};
 }
 
-ReadResult read_ply(const InputFile& file, const ReadOptions&, const Progress& progress)
-{
+ReadResult read_ply(const InputFile& file, const ReadOptions&, const Progress& progress) {
     if (file.role != InputRole::points) {
         throw InputError(file.path, 0, 0,
                          "a dtm PLY TIN is a survey input (the surface itself), not a line or "

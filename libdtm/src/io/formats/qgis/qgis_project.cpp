@@ -337,6 +337,9 @@ std::string qgis_project_xml(const QgisProject& project) {
         xml.leaf("layer", {{"id", std::string(e.id)}});
     }
     xml.close("layerorder");
+    if (project.layout) {
+        qgis::write_layouts(xml, project, crs);
+    }
     write_properties(xml);
     xml.close("qgis");
     return xml.str();

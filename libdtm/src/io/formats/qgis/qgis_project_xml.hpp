@@ -84,6 +84,9 @@ void write_layer_head(XmlWriter& xml,
 void write_symbol_properties(XmlWriter& xml,
                              std::span<const std::pair<std::string_view, std::string>> props);
 
+/// The `<Layouts>` element with the project's print layout (qgis_project_layout.cpp).
+void write_layouts(XmlWriter& xml, const QgisProject& project, const CrsInfo& crs);
+
 void write_dem_layer(XmlWriter& xml, const QgisProject& project, const CrsInfo& crs);
 void write_hillshade_layer(XmlWriter& xml, const QgisProject& project, const CrsInfo& crs);
 void write_contours_layer(XmlWriter& xml, const QgisProject& project, const CrsInfo& crs);

@@ -216,6 +216,52 @@ TEST(QgisProject, OnlyRequestedLayersAreWritten) {
         1u);
 }
 
+TEST(QgisProject, PrintLayoutHoldsTheSheetWithItsMapAndFurniture) {
+    dtm::io::QgisProject project = sample_project();
+    EXPECT_EQ(dtm::io::qgis_project_xml(project).find("<Layouts>"), std::string::npos);
+    dtm::io::QgisLayout layout;
+    layout.width_mm = 400.0;
+    layout.height_mm = 280.0;
+    layout.extent = {-744400.0, -1045340.0, -744200.0, -1045200.0};
+    layout.scale = 500.0;
+    layout.grid_interval = 50.0;
+    layout.sjtsk = true;
+    layout.title = "Horní Lhota";
+    layout.fields = {{"Scale", "1 : 500"}};
+    layout.title_box = {300.0, 230.0, 90.0, 40.0};
+    project.layout = layout;
+    Xml doc(CPLParseXMLString(dtm::io::qgis_project_xml(project).c_str()));
+    ASSERT_TRUE(doc);
+    CPLXMLNode* l = CPLGetXMLNode(doc.get(), "=qgis.Layouts.Layout");
+    ASSERT_NE(l, nullptr);
+    EXPECT_STREQ(CPLGetXMLValue(l, "name", ""), "Map sheet");
+    EXPECT_STREQ(CPLGetXMLValue(l, "PageCollection.LayoutItem.size", ""), "400,280,mm");
+    std::map<std::string, const CPLXMLNode*> items;
+    for (const CPLXMLNode* item : children(l, "LayoutItem")) {
+        items[CPLGetXMLValue(item, "type", "")] = item;
+    }
+    ASSERT_EQ(items.count("65639"), 1u);  // map
+    const CPLXMLNode* map = items["65639"];
+    EXPECT_STREQ(CPLGetXMLValue(map, "Extent.xmin", ""), "-744400");
+    EXPECT_STREQ(CPLGetXMLValue(map, "Extent.ymax", ""), "-1045200");
+    EXPECT_STREQ(CPLGetXMLValue(map, "crs.spatialrefsys.authid", ""), "EPSG:5514");
+    EXPECT_STREQ(CPLGetXMLValue(map, "ComposerMapGrid.intervalX", ""), "50");
+    EXPECT_NE(std::string(CPLGetXMLValue(map, "ComposerMapGrid.annotationExpression", ""))
+                  .find("'Y ' || format_number(-@grid_number"),
+              std::string::npos);
+    const std::string uuid = CPLGetXMLValue(map, "uuid", "");
+    for (const char* type : {"65640", "65646"}) {  // north arrow, scale bar
+        ASSERT_EQ(items.count(type), 1u) << type;
+        EXPECT_EQ(CPLGetXMLValue(items[type], "mapUuid", ""), uuid) << type;
+    }
+    ASSERT_EQ(items.count("65642"), 1u);  // legend
+    EXPECT_EQ(CPLGetXMLValue(items["65642"], "map_uuid", ""), uuid);
+    ASSERT_EQ(items.count("65641"), 1u);  // title block
+    EXPECT_NE(std::string(CPLGetXMLValue(items["65641"], "labelText", "")).find("Horní Lhota"),
+              std::string::npos);
+    EXPECT_STREQ(CPLGetXMLValue(items["65641"], "position", ""), "300,230,mm");
+}
+
 TEST(QgisProject, WriteCreatesTheFile) {
     dtm::test::ScratchDir dir;
     dtm::io::write_qgis_project(sample_project(), dir / "dtm.qgs");
