@@ -11,6 +11,8 @@ packages=(
     libcairo2-dev fonts-dejavu-core poppler-utils
     libexpat1-dev libxml2-utils python3-lxml python3-ezdxf
     python3-scipy strace python3-qgis clang-format
+    # test-only oracles (volumes): numpy statistics, QGIS processing algorithms (headless)
+    python3-numpy qgis-providers
 )
 
 missing=()

@@ -126,4 +126,26 @@ TEST(FailFast, AMissingOrUnwritableFolderIsReportedFirst) {
     fs::permissions(locked, fs::perms::owner_all);
 }
 
+TEST(FailFast, TheAnalysesCheckTheirOutputsFirst) {
+    const dtm::test::ScratchDir dir;
+    const std::string not_a_folder = (dir / "points.csv" / "out").string();  // under the FIFO
+    expect_fast_usage_error(
+        run_on_fifo(dir, {"volume", "{in}", "--plane", "0", "-o", not_a_folder, "-q"}), {"-o"});
+    expect_fast_usage_error(
+        run_on_fifo(dir, {"build", "{in}", "--base", "{in}", "-o", not_a_folder, "-q"}), {"-o"});
+    expect_fast_usage_error(
+        run_on_fifo(dir, {"profile", "{in}", "--line", "{in}", "-o", not_a_folder, "-q"}), {"-o"});
+    expect_fast_usage_error(
+        run_on_fifo(dir, {"sections", "{in}", "--alignment", "{in}", "--interval", "10", "--width",
+                          "20", "-o", not_a_folder, "-q"}),
+        {"-o"});
+    expect_fast_usage_error(
+        run_on_fifo(dir, {"check", "{in}", "{in}", "-o", (dir / "no" / "r.csv").string(), "-q"}),
+        {"-o", "does not exist"});
+    expect_fast_usage_error(
+        run_on_fifo(dir, {"check", "{in}", "{in}", "-o", (dir / "r.csv").string(), "--stats",
+                          (dir / "no" / "s.json").string(), "-q"}),
+        {"--stats"});
+}
+
 }  // namespace

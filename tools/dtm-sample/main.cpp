@@ -30,6 +30,7 @@ int write_sample(const std::filesystem::path& dir, double spacing) {
     write_csv_files(survey, dir);
     write_shapefiles(survey, dir);
     write_hpgl_plan(survey, dir);
+    write_natural_files(natural_survey(survey), dir);
     std::size_t vertices = 0;
     for (const Line& line : survey.breaklines) {
         vertices += line.vertices.size();

@@ -131,6 +131,17 @@ void write_shapefiles(const Survey& survey, const std::filesystem::path& dir) {
     write_layer(dir / "building.shp", {survey.building}, true);
 }
 
+void write_natural_files(const Survey& natural, const std::filesystem::path& dir) {
+    std::ofstream points = open_text(dir / "natural_points.csv");
+    points << "id,x,y,z\n";
+    for (const SurveyPoint& p : natural.points) {
+        points << p.id << format(",%.3f,%.3f,%.3f\n", p.e, p.n, p.z);
+    }
+    write_layer(dir / "natural_breaklines.shp", natural.breaklines, false);
+    write_layer(dir / "natural_boundary.shp", {natural.boundary}, true);
+    write_layer(dir / "natural_building.shp", {natural.building}, true);
+}
+
 void write_hpgl_plan(const Survey& survey, const std::filesystem::path& dir) {
     std::ofstream out = open_text(dir / "plan_500.hpgl");
     out << "IN;SP1;SI0.12,0.18;\nPU400,200;LBSAMPLE SITE S-JTSK 1:500\x03\n";

@@ -21,6 +21,9 @@ inline constexpr double ground_metres_per_plotter_unit = plan_scale / 40.0 / 100
 void write_csv_files(const Survey& survey, const std::filesystem::path& dir);
 /// breaklines.shp (LineStringZ, field `kind`), boundary.shp and building.shp (PolygonZ).
 void write_shapefiles(const Survey& survey, const std::filesystem::path& dir);
+/// The natural ground before the road (natural_survey): natural_points.csv (id,x,y,z),
+/// natural_breaklines.shp, natural_boundary.shp and natural_building.shp.
+void write_natural_files(const Survey& natural, const std::filesystem::path& dir);
 /// plan_500.hpgl: spot heights as `SM*` symbols with `LB` height labels (pen 1), breaklines pen
 /// 2, boundary pen 3, building pen 4.
 void write_hpgl_plan(const Survey& survey, const std::filesystem::path& dir);

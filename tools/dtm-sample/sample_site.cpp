@@ -168,4 +168,27 @@ Survey make_survey(const SurveyOptions& options) {
     return survey;
 }
 
+Survey natural_survey(const Survey& built) {
+    Survey natural = built;
+    const auto ground = [](SurveyPoint& p) {
+        p.z = round_to(natural_z(p.e - origin_e, p.n - origin_n), 0.001);
+    };
+    for (SurveyPoint& p : natural.points) {
+        ground(p);
+    }
+    for (Line& line : natural.breaklines) {
+        for (SurveyPoint& p : line.vertices) {
+            ground(p);
+        }
+    }
+    for (Line* ring : {&natural.boundary, &natural.building}) {
+        for (SurveyPoint& p : ring->vertices) {
+            ground(p);
+        }
+    }
+    natural.bad_lines.clear();
+    natural.check_points.clear();
+    return natural;
+}
+
 }  // namespace dtm::sample

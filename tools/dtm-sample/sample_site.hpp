@@ -44,4 +44,10 @@ struct SurveyOptions {
 /// Builds the survey. Deterministic for given options (own PRNG, no std distributions).
 [[nodiscard]] Survey make_survey(const SurveyOptions& options = {});
 
+/// The same survey before the road was built: every point, breakline, boundary and building
+/// vertex at the same place with the natural ground's height (natural_z, to the millimetre).
+/// Triangulated with the same lines it gives the same triangles as the built survey, so the road's
+/// cut and fill between the two TINs has an independent closed form triangle by triangle.
+[[nodiscard]] Survey natural_survey(const Survey& built);
+
 }  // namespace dtm::sample

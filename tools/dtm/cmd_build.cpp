@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // dtm build INPUTS... -o OUTDIR: the main job, products::build() (libdtm/src/products/build.cpp)
 // behind its options. This file declares the options and prints the summary; what is written
-// and how the cell and interval are chosen is the library's (docs/products.md).
+// and how the cell and interval are chosen is the library's (docs/products.md). With --base BASE
+// the volume products of the TIN against BASE go into volume/ and dtm.qgs shows a cut/fill map.
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -20,6 +21,7 @@ namespace {
 
 struct BuildArgs {
     InputArgs input;
+    InputArgs base;  ///< --base BASE...: compare the TIN with this surface
     std::string out_dir;
     products::BuildOptions build;
     bool quiet = false;
@@ -42,6 +44,10 @@ void print_summary(const products::BuildReport& r, const std::string& out_dir) {
         std::printf("dtm build: map.pdf at 1:%g, %zu contour labels (%zu positions without room)\n",
                     r.map_scale, r.map_labels, r.map_label_failures);
     }
+    if (r.has_volume) {
+        std::printf("dtm build: against the base: fill %.3f, cut %.3f, net %.3f (volume/)\n",
+                    r.volume.fill, r.volume.cut, r.volume.net());
+    }
     std::printf("dtm build: products and report.json in %s\n", out_dir.c_str());
 }
 
@@ -50,6 +56,12 @@ int run_build(BuildArgs& args) {
     args.build.wording = cli_text;
     args.build.flat_areas.assign(args.input.flat_areas.begin(), args.input.flat_areas.end());
     args.build.dem = args.input.dem;
+    if (!args.base.inputs.empty()) {
+        InputArgs base = args.base;
+        base.read = args.input.read;  // the reader options are the command's
+        base.crs = args.input.crs;
+        args.build.base = to_load_options(base);
+    }
     const products::BuildReport report =
         products::build(to_load_options(args.input), args.out_dir, args.build, progress);
     if (report.contour_flats && !args.quiet) print_contour_flats(*report.contour_flats, "build");
@@ -68,10 +80,12 @@ int run_build(BuildArgs& args) {
 Command build_command() {
     return {"build",
             "The main job: TIN, DEM, hillshade, contours, contour map sheet (PDF), VTK surface, "
-            "2DM mesh, QGIS project with its print layout, and report into one folder",
+            "2DM mesh, QGIS project with its print layout, and report into one folder (with "
+            "--base: volumes and a cut/fill map too)",
             [](CLI::App& app) {
                 auto args = std::make_shared<BuildArgs>();
                 add_input_options(app, args->input);
+                add_surface_options(app, "base", args->base);
                 app.add_option("-o,--output", args->out_dir, "Output folder (created if needed)")
                     ->required();
                 app.add_option("--cell", args->build.cell,

@@ -26,5 +26,9 @@ Command build_command();
 Command methods_command();
 Command voronoi_command();
 Command map_command();
+Command volume_command();
+Command profile_command();
+Command check_command();
+Command sections_command();
 
 }  // namespace dtm::cli

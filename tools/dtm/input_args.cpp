@@ -27,10 +27,13 @@ void add_input_options(CLI::App& app, InputArgs& args) {
     files("--flat-areas", args.flat_areas,
           "Real flats (lakes, ponds): closed lines or polygons at one height whose inside stays "
           "flat when contour flats are removed; hard breaklines otherwise; repeatable");
-    io::ReadOptions& o = args.read;
-    app.add_option("--crs", args.crs.default_crs,
+    add_reader_options(app, args.read, args.crs);
+}
+
+void add_reader_options(CLI::App& app, io::ReadOptions& o, io::CrsOptions& crs) {
+    app.add_option("--crs", crs.default_crs,
                    "CRS of inputs that carry none (EPSG:5514, WKT, PROJ)");
-    app.add_option("--target-crs", args.crs.target_crs,
+    app.add_option("--target-crs", crs.target_crs,
                    "Transform every input into this CRS (default: the first input's CRS; "
                    "geographic inputs go to their UTM zone)");
     app.add_option("--columns", o.columns,
@@ -56,6 +59,21 @@ void add_input_options(CLI::App& app, InputArgs& args) {
                    "x = y = 0; default 0: every point)")
         ->check(CLI::NonNegativeNumber);
     add_hpgl_options(app, o.hpgl);
+}
+
+void add_surface_options(CLI::App& app, const std::string& name, InputArgs& args) {
+    const auto files = [&app](const std::string& flag, std::vector<std::string>& into,
+                              const std::string& what) {
+        app.add_option(flag, into, what)->check(CLI::ExistingPath)->allow_extra_args(false);
+    };
+    files("--" + name, args.inputs,
+          "The " + name + " surface: a dtm .ply TIN, or points (and lines) to triangulate");
+    files("--" + name + "-breaklines", args.breaklines,
+          "Hard breaklines of the " + name + " surface");
+    files("--" + name + "-soft-breaklines", args.soft_breaklines,
+          "Soft breaklines of the " + name + " surface");
+    files("--" + name + "-boundary", args.boundaries, "Outer boundary of the " + name + " surface");
+    files("--" + name + "-holes", args.holes, "Holes of the " + name + " surface");
 }
 
 io::LoadOptions to_load_options(const InputArgs& args) {

@@ -28,6 +28,16 @@ struct InputArgs {
 /// Declares the positional INPUTS and the reader options on @p app.
 void add_input_options(CLI::App& app, InputArgs& args);
 
+/// Declares the reader options alone (--crs, --target-crs, --columns, --layer, --where,
+/// --z-field, --skip-bad-lines, --retriangulate, --surface, HP-GL options), for commands whose
+/// files are declared otherwise.
+void add_reader_options(CLI::App& app, io::ReadOptions& read, io::CrsOptions& crs);
+
+/// Declares a second surface's files: --NAME FILE... (points, lines or a dtm .ply TIN) and
+/// --NAME-breaklines, --NAME-soft-breaklines, --NAME-boundary, --NAME-holes. The reader options
+/// (--crs, --columns, --layer, ...) are the command's.
+void add_surface_options(CLI::App& app, const std::string& name, InputArgs& args);
+
 /// The LoadOptions for io::load_inputs and products::build (the --flat-areas files come last,
 /// as breaklines).
 [[nodiscard]] io::LoadOptions to_load_options(const InputArgs& args);

@@ -36,7 +36,8 @@ int main(int argc, char** argv) {
 
     const std::vector<Command> commands{tin_command(),     info_command(),  grid_command(),
                                         contour_command(), build_command(), methods_command(),
-                                        voronoi_command(), map_command()};
+                                        voronoi_command(), map_command(),   volume_command(),
+                                        profile_command(), check_command(), sections_command()};
     std::function<int()> run;
     for (const Command& command : commands) {
         CLI::App* sub = app.add_subcommand(std::string(command.name), std::string(command.summary));

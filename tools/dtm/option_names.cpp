@@ -11,7 +11,7 @@
 namespace dtm::cli {
 namespace {
 
-constexpr std::array<std::pair<std::string_view, std::string_view>, 48> flags{{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 51> flags{{
     // io::LoadOptions: the files of each role (TerrainInput's members)
     {"breaklines", "--breaklines"},
     {"soft_breaklines", "--soft-breaklines"},
@@ -69,6 +69,10 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 48> flags{{
     {"dem.max_error", "--dem-max-error"},
     // products::ContourFileOptions
     {"spot_heights", "--spot-heights"},
+    // products::CheckJob, ProfileJob, SectionsJob
+    {"interpolation", "--interpolation"},
+    {"plot_format", "--plot"},
+    {"stats", "--stats"},
 }};
 
 }  // namespace

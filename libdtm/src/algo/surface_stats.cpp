@@ -15,27 +15,12 @@
 #include <cmath>
 #include <vector>
 
+#include "algo/detail/compensated_sum.hpp"
+
 namespace dtm {
 namespace {
 
-/// Neumaier's compensated sum.
-class CompensatedSum {
-public:
-    void add(double value) noexcept {
-        const double t = sum_ + value;
-        if (std::fabs(sum_) >= std::fabs(value)) {
-            compensation_ += (sum_ - t) + value;
-        } else {
-            compensation_ += (value - t) + sum_;
-        }
-        sum_ = t;
-    }
-    [[nodiscard]] double value() const noexcept { return sum_ + compensation_; }
-
-private:
-    double sum_ = 0.0;
-    double compensation_ = 0.0;
-};
+using detail::CompensatedSum;
 
 }  // namespace
 

@@ -38,6 +38,15 @@ bool process_gone(long pid) {
     return pid > 0 && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH;
 }
 
+/// Whether the staging folder's entry @p name is, or holds, a recorded file ("volume" holds
+/// "volume/volume.json").
+bool recorded(const std::vector<std::string>& files, const std::string& name) {
+    return std::any_of(files.begin(), files.end(), [&name](const std::string& file) {
+        return file == name || (file.size() > name.size() && file[name.size()] == '/' &&
+                                file.compare(0, name.size(), name) == 0);
+    });
+}
+
 /// Step 1: the staging folder becomes the complete new state of the target.
 void carry_over(const fs::path& target,
                 const fs::path& staging,
@@ -45,8 +54,7 @@ void carry_over(const fs::path& target,
     std::error_code ec;
     for (fs::directory_iterator it(staging, ec), end; !ec && it != end; it.increment(ec)) {
         const std::string name = it->path().filename().string();
-        if (std::find(files.begin(), files.end(), name) == files.end())
-            fs::remove_all(it->path(), ec);
+        if (!recorded(files, name)) fs::remove_all(it->path(), ec);
     }
     for (const std::string& name : files) {
         if (!fs::exists(staging / name, ec)) {

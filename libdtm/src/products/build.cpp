@@ -1,13 +1,15 @@
 // SPDX-License-Identifier: MIT
 // The main job: read -> surface -> product steps -> report -> commit.
 //
-//   io::load_inputs ─> LoadedInputs ─> products::surface ─> Tin ─┬─ write_tin ─> tin.ply tin.2dm
-//   surface.vtp (every reader)      (one CRS)      (as is, or triangulate)   ├─ dem ───────>
-//   dem.tif hillshade.tif
-//                                                               ├─ contours ──> contours.gpkg
-//                                                               ├─ map ───────> map.pdf
-//                                                               ├─ project ───> dtm.qgs
-//                                                               └─ report ────> report.json
+//   io::load_inputs ─> LoadedInputs ─> products::surface ─> Tin
+//   (every reader)      (one CRS)      (as is, or triangulate)
+//     ─┬─ write_tin ─> tin.ply tin.2dm surface.vtp
+//      ├─ dem ───────> dem.tif hillshade.tif
+//      ├─ contours ──> contours.gpkg
+//      ├─ map ───────> map.pdf
+//      ├─ volume ────> volume/ (with a base)
+//      ├─ project ───> dtm.qgs
+//      └─ report ────> report.json
 //
 // Every file goes into one io::AtomicDirectory, committed only after the report: a failed or
 // cancelled run leaves the output folder as it was. The steps run in the order of the table
@@ -37,7 +39,8 @@ constexpr detail::BuildStep steps[] = {
     {"write_tin", 0.60, nullptr, &detail::write_tin_files},
     {"dem", 0.80, nullptr, &detail::write_dem},
     {"contours", 0.90, nullptr, &detail::write_contours},
-    {"map", 0.97, nullptr, &detail::write_map_sheet},
+    {"map", 0.95, nullptr, &detail::write_map_sheet},
+    {"volume", 0.97, &detail::wants_volume, &detail::write_volume},
     {"project", 0.97, nullptr, &detail::write_project},
 };
 

@@ -53,6 +53,10 @@ void write_dem(BuildContext& context, const Progress& progress);
 void write_contours(BuildContext& context, const Progress& progress);
 /// map.pdf, the contour map sheet; report.map_*, map_layout (map_step.cpp).
 void write_map_sheet(BuildContext& context, const Progress& progress);
+/// With BuildOptions::base: volume/ (volume.json, volume.txt, difference.ply, difference.tif,
+/// cut_fill.gpkg, zero_lines.dxf); report.volume (volume_step.cpp).
+bool wants_volume(const BuildOptions& options);
+void write_volume(BuildContext& context, const Progress& progress);
 /// dtm.qgs with a layer for each product written before it (project_step.cpp).
 void write_project(BuildContext& context, const Progress& progress);
 

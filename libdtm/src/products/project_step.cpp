@@ -34,6 +34,7 @@ void write_project(BuildContext& context, const Progress&) {
     }
     project.mesh = layer("tin.2dm");
     project.layout = context.map_layout;
+    project.cut_fill = layer("volume/cut_fill.gpkg");
     io::write_qgis_project(project, context.out.add("dtm.qgs"));
 }
 

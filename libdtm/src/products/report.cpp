@@ -207,6 +207,19 @@ void write_products(io::JsonWriter& json, const BuildReport& report) {
         json.value("spot_heights", report.map_spot_heights);
         json.end();
     }
+    if (report.has_volume) {
+        const VolumeResult& v = report.volume;
+        json.begin_object("volume");  // the figures of volume/volume.json
+        json.value("base", report.volume_base);
+        json.value("fill", v.fill);
+        json.value("cut", v.cut);
+        json.value("net", v.net());
+        json.value("fill_area", v.fill_area);
+        json.value("cut_area", v.cut_area);
+        json.value("top_only_area", v.top_only_area);
+        json.value("base_only_area", v.base_only_area);
+        json.end();
+    }
     json.begin_object("timings_seconds");
     double total = 0.0;
     for (const StageTime& t : report.timings) {

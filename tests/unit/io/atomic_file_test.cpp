@@ -210,6 +210,22 @@ TEST(AtomicDirectory, NamesAreRecordedOnceInOrderAndCompanionsStayBehind) {
     EXPECT_EQ(names_in(dir.path()), std::vector<std::string>{"out"});
 }
 
+TEST(AtomicDirectory, FilesInASubfolderMoveWithItAndReplaceTheOldSubfolder) {
+    const ScratchDir dir;
+    fs::create_directories(dir / "out" / "volume");
+    write_file(dir / "out" / "volume" / "old.json", "old");
+    {
+        dtm::io::AtomicDirectory out(dir / "out");
+        fs::create_directory(out.staging() / "volume");
+        write_file(out.add("volume/volume.json"), "new");
+        write_file(out.add("a.txt"), "a");
+        out.commit();
+    }
+    EXPECT_EQ(names_in(dir / "out"), (std::vector<std::string>{"a.txt", "volume"}));
+    EXPECT_EQ(names_in(dir / "out" / "volume"), std::vector<std::string>{"volume.json"});
+    EXPECT_EQ(read_file(dir / "out" / "volume" / "volume.json"), "new");
+}
+
 TEST(AtomicDirectory, MissingFileFailsTheCommit) {
     const ScratchDir dir;
     dtm::io::AtomicDirectory out(dir / "out");

@@ -52,7 +52,8 @@ public:
     AtomicDirectory& operator=(const AtomicDirectory&) = delete;
     ~AtomicDirectory();
 
-    /// Where to write the file @p name (a plain file name) in the staging folder; the name is
+    /// Where to write the file @p name (a file name, or a path in a subfolder the caller
+    /// creates in the staging folder: "volume/volume.json") in the staging folder; the name is
     /// recorded, once, in the order of the calls, for commit(). A writer may write companions next
     /// to it (a shapefile's .shx, .dbf): only recorded names are moved.
     [[nodiscard]] std::filesystem::path add(const std::string& name);

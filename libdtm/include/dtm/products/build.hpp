@@ -35,6 +35,10 @@ struct BuildOptions {
     double interval = 0.0;        ///< contour interval; 0: default_interval()
     std::size_t index_every = 5;  ///< every n-th contour level is an index contour (0: none)
     double map_scale = 0.0;       ///< 1 : map_scale of map.pdf; 0: default_map_scale() (map.hpp)
+    /// Step "volume": the files of a base surface (a dtm TIN, or terrain triangulated with
+    /// `triangulate`); the TIN is compared with it (products::write_volume_products into
+    /// volume/, a cut/fill map in dtm.qgs). No files: no volume step.
+    io::LoadOptions base;
     /// How texts written into the products (the report's warnings and rules) name options.
     /// Empty: as the library does, `field`; tools/dtm passes its flag spelling.
     std::function<std::string(std::string_view)> wording;
@@ -43,11 +47,11 @@ struct BuildOptions {
 /// Reads @p inputs (io::load_inputs), takes their surface (products::surface) and runs the
 /// product steps, each writing its files into one io::AtomicDirectory: tin.ply, tin.2dm,
 /// surface.vtp (step "write_tin"), dem.tif, hillshade.tif ("dem"), contours.gpkg ("contours"),
-/// map.pdf ("map"), dtm.qgs with a print layout of the map sheet ("project"), then report.json;
-/// only when all are complete do they move into
-/// @p out_dir (created if needed; other files there are left alone). The steps are listed in
-/// src/products/build.cpp: a new product is one more step there, with its options here and its
-/// section in BuildReport.
+/// map.pdf ("map"), with a base volume/ ("volume"), dtm.qgs with a print layout of the map sheet
+/// and, with a base, a cut/fill map ("project"), then report.json; only when all are complete do
+/// they move into @p out_dir (created if needed; other files there are left alone). The steps are
+/// listed in src/products/build.cpp: a new product is one more step there, with its options here
+/// and its section in BuildReport.
 /// @returns the report, as written to report.json.
 /// @throws OptionError if @p out_dir is a file (`out_dir`); InputError for unreadable inputs or a
 /// surface without triangles; Error; Cancelled. @p out_dir is unchanged whenever it throws.

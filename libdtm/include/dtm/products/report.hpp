@@ -15,6 +15,7 @@
 #include "dtm/algo/dem_reduce.hpp"
 #include "dtm/algo/surface_stats.hpp"
 #include "dtm/algo/triangulate.hpp"
+#include "dtm/algo/volume.hpp"
 #include "dtm/core/grid.hpp"
 #include "dtm/io/inputs.hpp"
 
@@ -58,6 +59,10 @@ struct BuildReport {
     std::size_t map_labels = 0;
     std::size_t map_label_failures = 0;
     std::size_t map_spot_heights = 0;
+    // the volume against the base (step "volume": volume/), when one was given
+    bool has_volume = false;
+    VolumeResult volume;
+    std::string volume_base;  ///< the base's files
     // the run
     std::vector<StageTime> timings;
     std::vector<std::string> outputs;  ///< file names written into the output folder

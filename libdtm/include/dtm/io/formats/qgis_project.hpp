@@ -2,7 +2,8 @@
 /// @file
 /// @brief A QGIS project (.qgs, XML) that opens the products of `dtm build` ready to look at:
 /// the DEM in a terrain colour ramp multiplied over its hillshade, contours labelled by
-/// elevation with index contours emphasised, and the TIN as a mesh layer (2DM through MDAL).
+/// elevation with index contours emphasised, the TIN as a mesh layer (2DM through MDAL), and a
+/// cut/fill map when the build compared the surface with a base.
 #pragma once
 
 #include <array>
@@ -61,7 +62,10 @@ struct QgisProject {
     std::string spot_layer;
     double label_height = 1.0;   ///< text height of those labels, CRS units
     std::filesystem::path mesh;  ///< 2DM TIN (mdal provider)
-    bool mesh_visible = false;   ///< the wireframe starts hidden: it hides the DEM at small scales
+    /// GeoPackage of a volume comparison (`dtm build --base`): layer cut_fill (polygons with a
+    /// `kind` of "cut" or "fill", drawn red and blue) and layer zero_lines. Empty: no layers.
+    std::filesystem::path cut_fill;
+    bool mesh_visible = false;  ///< the wireframe starts hidden: it hides the DEM at small scales
     std::optional<QgisLayout> layout;  ///< a print layout of the map sheet
 };
 

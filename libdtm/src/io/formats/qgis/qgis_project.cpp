@@ -223,6 +223,12 @@ std::vector<TreeEntry> tree_entries(const QgisProject& project) {
         entries.push_back({qgis::contour_labels_id, "Contour labels",
                            in_contours(project.contour_label_layer), "ogr", true});
     }
+    if (!project.cut_fill.empty()) {
+        entries.push_back({qgis::zero_lines_id, "Zero lines",
+                           qgis::cut_fill_source(project, "zero_lines"), "ogr", true});
+        entries.push_back({qgis::cut_fill_id, "Cut and fill",
+                           qgis::cut_fill_source(project, "cut_fill"), "ogr", true});
+    }
     if (!project.contours.empty()) {
         entries.push_back(
             {qgis::contours_id, "Contours", qgis::contours_source(project), "ogr", true});
@@ -325,6 +331,10 @@ std::string qgis_project_xml(const QgisProject& project) {
     }
     if (!project.contours.empty() && !project.contour_label_layer.empty()) {
         qgis::write_label_layer(xml, project, crs, LabelLayer::contour_labels);
+    }
+    if (!project.cut_fill.empty()) {
+        qgis::write_zero_lines_layer(xml, project, crs);
+        qgis::write_cut_fill_layer(xml, project, crs);
     }
     if (!project.contours.empty()) {
         qgis::write_contours_layer(xml, project, crs);

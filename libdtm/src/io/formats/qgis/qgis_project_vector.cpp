@@ -26,19 +26,11 @@ void write_line_symbol(XmlWriter& xml, std::string_view name, std::string color,
                         {"clip_to_extent", "1"},
                         {"force_rhr", "0"}});
     xml.open("layer", {{"class", "SimpleLine"}, {"enabled", "1"}, {"locked", "0"}, {"pass", "0"}});
-    // QGIS >= 3.26 reads the Option map, older 3.x the prop list; both say the same.
     const std::pair<std::string_view, std::string> props[] = {
         {"capstyle", "round"},   {"joinstyle", "round"},        {"line_color", color},
         {"line_style", "solid"}, {"line_width", number(width)}, {"line_width_unit", "MM"},
         {"offset", "0"},         {"offset_unit", "MM"},         {"use_custom_dash", "0"}};
-    xml.open("Option", {{"type", "Map"}});
-    for (const auto& [key, value] : props) {
-        xml.option(key, value);
-    }
-    xml.close("Option");
-    for (const auto& [key, value] : props) {
-        xml.leaf("prop", {{"k", std::string(key)}, {"v", value}});
-    }
+    write_symbol_properties(xml, props);
     xml.close("layer");
     xml.close("symbol");
 }
@@ -137,6 +129,18 @@ void write_contour_labeling(XmlWriter& xml, const QgisProject& project) {
 }
 
 }  // namespace
+
+void write_symbol_properties(XmlWriter& xml,
+                             std::span<const std::pair<std::string_view, std::string>> props) {
+    xml.open("Option", {{"type", "Map"}});
+    for (const auto& [key, value] : props) {
+        xml.option(key, value);
+    }
+    xml.close("Option");
+    for (const auto& [key, value] : props) {
+        xml.leaf("prop", {{"k", std::string(key)}, {"v", value}});
+    }
+}
 
 void write_contours_layer(XmlWriter& xml, const QgisProject& project, const CrsInfo& crs) {
     open_maplayer(xml, "vector", "Line");

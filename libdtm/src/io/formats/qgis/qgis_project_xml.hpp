@@ -5,6 +5,7 @@
 #pragma once
 
 #include <initializer_list>
+#include <span>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -58,6 +59,8 @@ inline constexpr std::string_view contours_id = "dtm_contours_layer";
 inline constexpr std::string_view mesh_id = "dtm_tin_mesh_layer";
 inline constexpr std::string_view contour_labels_id = "dtm_contour_labels_layer";
 inline constexpr std::string_view spot_heights_id = "dtm_spot_heights_layer";
+inline constexpr std::string_view cut_fill_id = "dtm_cut_fill_layer";
+inline constexpr std::string_view zero_lines_id = "dtm_zero_lines_layer";
 
 /// A layer path as QGIS reads it: a relative path gets a leading "./" (QgsPathResolver resolves
 /// only "./" and "../" paths against the project folder; a bare name would be taken relative to
@@ -78,6 +81,11 @@ void write_layer_head(XmlWriter& xml,
                       std::string_view name,
                       std::string_view provider);
 
+/// A symbol layer's properties, written both as the Option map (QGIS >= 3.26) and as the prop
+/// list older 3.x read; they say the same.
+void write_symbol_properties(XmlWriter& xml,
+                             std::span<const std::pair<std::string_view, std::string>> props);
+
 /// The `<Layouts>` element with the project's print layout (qgis_project_layout.cpp).
 void write_layouts(XmlWriter& xml, const QgisProject& project, const CrsInfo& crs);
 
@@ -90,5 +98,9 @@ void write_label_layer(XmlWriter& xml,
                        const QgisProject& project,
                        const CrsInfo& crs,
                        LabelLayer kind);
+void write_cut_fill_layer(XmlWriter& xml, const QgisProject& project, const CrsInfo& crs);
+void write_zero_lines_layer(XmlWriter& xml, const QgisProject& project, const CrsInfo& crs);
+/// The `datasource` of a layer of the cut/fill GeoPackage.
+[[nodiscard]] std::string cut_fill_source(const QgisProject& project, std::string_view layer);
 
 }  // namespace dtm::io::qgis

@@ -1,0 +1,223 @@
+// SPDX-License-Identifier: MIT
+// The profile job: surfaces and lines in one CRS, sections cut in parallel (algo/profile), and
+// the products: CSV, GeoPackage, DXF and plots.
+#include "dtm/products/profile.hpp"
+
+#include <cctype>
+#include <cstdio>
+#include <fstream>
+
+#include "dtm/core/error.hpp"
+#include "dtm/io/atomic_file.hpp"
+#include "dtm/io/draw/canvas.hpp"
+#include "dtm/io/formats/crs.hpp"
+#include "dtm/io/formats/dxf.hpp"
+#include "dtm/io/formats/vector_file.hpp"
+#include "dtm/io/output_check.hpp"
+#include "dtm/products/profile_plot.hpp"
+#include "products/detail/staged_folder.hpp"
+
+namespace dtm::products {
+namespace fs = std::filesystem;
+
+std::vector<LoadedSurface> load_surfaces(const std::vector<SurfaceSource>& sources,
+                                         std::vector<std::string>& notes,
+                                         const Progress& progress) {
+    std::vector<LoadedSurface> out;
+    const double n = static_cast<double>(sources.size());
+    for (std::size_t i = 0; i < sources.size(); ++i) {
+        const double at = static_cast<double>(i);
+        out.push_back(load_surface(sources[i], out.empty() ? std::string() : out.front().crs_wkt,
+                                   progress.sub(at / n, (at + 1.0) / n)));
+        if (!out.back().transformed_from.empty()) {
+            notes.push_back(out.back().name + " reprojected from " + out.back().transformed_from +
+                            " into " + io::crs_label(out.front().crs_wkt));
+        }
+    }
+    return out;
+}
+
+namespace {
+
+/// @p name as an R12 layer name: characters other than letters, digits, '_', '-', '$' become '_'.
+std::string dxf_layer_name(std::string name) {
+    for (char& c : name) {
+        const auto u = static_cast<unsigned char>(c);
+        if (!(std::isalnum(u) || c == '_' || c == '-' || c == '$')) c = '_';
+    }
+    return name;
+}
+
+void write_csv(const fs::path& path,
+               const std::vector<Polyline>& lines,
+               const std::vector<std::string>& names,
+               const std::vector<std::vector<Profile>>& sections,
+               ProfileReport& report) {
+    std::ofstream out(path, std::ios::binary);
+    out << "line,surface,run,chainage,x,y,z\n";
+    char row[256];
+    for (std::size_t l = 0; l < lines.size(); ++l) {
+        for (std::size_t s = 0; s < names.size(); ++s) {
+            const Profile& p = sections[s][l];
+            for (std::size_t r = 0; r < p.runs.size(); ++r) {
+                for (const ProfilePoint& q : p.runs[r].points) {
+                    std::snprintf(row, sizeof row, "%zu,%s,%zu,%.6f,%.6f,%.6f,%.6f\n", l + 1,
+                                  names[s].c_str(), r + 1, q.chainage, q.x, q.y, q.z);
+                    out << row;
+                    ++report.breakpoints;
+                }
+            }
+            report.gaps += p.runs.empty() ? 0 : p.runs.size() - 1;
+        }
+    }
+    if (!out) {
+        throw Error("cannot write " + path.string());
+    }
+}
+
+std::vector<Point3> run_points(const ProfileRun& run) {
+    std::vector<Point3> pts;
+    pts.reserve(run.points.size());
+    for (const ProfilePoint& q : run.points) {
+        pts.push_back({q.x, q.y, q.z});
+    }
+    return pts;
+}
+
+void write_vectors(const fs::path& folder,
+                   const std::string& crs,
+                   const std::vector<std::string>& names,
+                   const std::vector<std::vector<Profile>>& sections) {
+    io::VectorFile gpkg(folder / "profile.gpkg", crs);
+    using T = io::VectorField::Type;
+    const std::size_t layer = gpkg.add_layer("profiles", io::VectorGeometry::line_3d,
+                                             {{"line", T::integer},
+                                              {"surface", T::text},
+                                              {"run", T::integer},
+                                              {"chainage_from", T::real},
+                                              {"chainage_to", T::real}});
+    std::vector<io::DxfLayer> layers;
+    for (std::size_t s = 0; s < names.size(); ++s) {
+        layers.push_back({dxf_layer_name("PROFILE_" + names[s]), static_cast<int>(1 + s % 6)});
+    }
+    io::DxfWriter dxf(folder / "profile.dxf", layers);
+    for (std::size_t s = 0; s < names.size(); ++s) {
+        for (std::size_t l = 0; l < sections[s].size(); ++l) {
+            const Profile& p = sections[s][l];
+            for (std::size_t r = 0; r < p.runs.size(); ++r) {
+                const std::vector<Point3> pts = run_points(p.runs[r]);
+                gpkg.add_line(
+                    layer, pts,
+                    {static_cast<long long>(l + 1), names[s], static_cast<long long>(r + 1),
+                     p.runs[r].points.front().chainage, p.runs[r].points.back().chainage});
+                dxf.polyline(layers[s].name, pts, false);
+            }
+        }
+    }
+    gpkg.commit();
+    dxf.finish();
+}
+
+std::vector<std::string> write_plots(const fs::path& folder,
+                                     const ProfileJob& job,
+                                     const std::vector<Polyline>& lines,
+                                     const std::vector<std::string>& names,
+                                     const std::vector<std::vector<Profile>>& sections) {
+    std::vector<std::string> files;
+    const double width = 270.0;  // A4 landscape
+    const double height = 190.0;
+    std::unique_ptr<io::draw::Canvas> pdf;
+    if (job.plot_format == "pdf") {
+        pdf = std::make_unique<io::draw::Canvas>(folder / "profile.pdf", width, height);
+        files.emplace_back("profile.pdf");
+    }
+    for (std::size_t l = 0; l < lines.size(); ++l) {
+        ProfilePlot plot;
+        plot.title = "Profile " + std::to_string(l + 1) +
+                     (lines[l].source.empty() ? std::string() : " (" + lines[l].source + ")");
+        plot.names = names;
+        plot.exaggeration = job.exaggeration;
+        plot.station_interval = job.station_interval;
+        for (std::size_t s = 0; s < names.size(); ++s) {
+            plot.profiles.push_back(sections[s][l]);
+        }
+        if (pdf) {
+            if (l > 0) {
+                pdf->new_page();
+            }
+            draw_profile(*pdf, plot, {10.0, 10.0}, width - 20.0, height - 20.0);
+        } else {
+            const std::string name = "profile_" + std::to_string(l + 1) + "." + job.plot_format;
+            io::draw::Canvas page(folder / name, width, height);
+            draw_profile(page, plot, {10.0, 10.0}, width - 20.0, height - 20.0);
+            page.finish();
+            files.push_back(name);
+        }
+    }
+    if (pdf) {
+        pdf->finish();
+    }
+    return files;
+}
+
+}  // namespace
+
+ProfileReport run_profile(const ProfileJob& job,
+                          const fs::path& out_dir,
+                          const Progress& progress) {
+    if (job.surfaces.empty()) {
+        throw UsageError("profile: give at least one surface");
+    }
+    if (!job.plot_format.empty() && job.plot_format != "pdf" && job.plot_format != "svg" &&
+        job.plot_format != "png") {
+        throw OptionError("plot_format", "profile: `plot_format` must be pdf, svg, png or none");
+    }
+    io::check_output(out_dir, io::OutputKind::folder, "out_dir");  // before any input is read
+    io::AtomicDirectory staging(out_dir);
+    ProfileReport report;
+    const std::vector<LoadedSurface> surfaces =
+        load_surfaces(job.surfaces, report.notes, progress.sub(0.0, 0.5));
+    const std::string crs = surfaces.front().crs_wkt;
+    const std::vector<Polyline> lines = load_lines(job.lines, job.line_reader, crs);
+    std::vector<std::vector<Point3>> points;
+    for (const Polyline& l : lines) {
+        points.push_back(l.points);
+        if (l.closed && !l.points.empty()) {
+            points.back().push_back(l.points.front());
+        }
+    }
+    std::vector<std::vector<Profile>> sections;
+    for (std::size_t s = 0; s < surfaces.size(); ++s) {
+        report.surfaces.push_back(surfaces[s].name);
+        const TinSection section(surfaces[s].tin);
+        sections.push_back(section.cut_all(points, job.threads, progress.sub(0.5, 0.7)));
+    }
+    for (std::size_t l = 0; l < lines.size(); ++l) {
+        bool any = false;
+        for (const auto& s : sections) {
+            any = any || !s[l].runs.empty();
+        }
+        if (!any) {
+            throw InputError(
+                job.lines, 0, 0,
+                (lines[l].source.empty() ? "line " + std::to_string(l + 1) : lines[l].source) +
+                    ": the line lies outside every surface");
+        }
+    }
+    report.lines = lines.size();
+    write_csv(staging.staging() / "profile.csv", lines, report.surfaces, sections, report);
+    report.files.emplace_back("profile.csv");
+    write_vectors(staging.staging(), crs, report.surfaces, sections);
+    report.files.insert(report.files.end(), {"profile.gpkg", "profile.dxf"});
+    progress.report(0.8, "drawing the profiles");
+    if (!job.plot_format.empty()) {
+        const std::vector<std::string> plots =
+            write_plots(staging.staging(), job, lines, report.surfaces, sections);
+        report.files.insert(report.files.end(), plots.begin(), plots.end());
+    }
+    detail::commit_files(staging, report.files);
+    progress.report(1.0, "done");
+    return report;
+}
+
+}  // namespace dtm::products
