@@ -16,7 +16,8 @@
 #    exact Delaunay TIN. The same comparison is therefore repeated with gdal_grid run on the same
 #    points shifted to local coordinates (then re-georeferenced with gdal_translate -a_ullr):
 #    there the two must agree everywhere.
-# 3. Contours at 1 m: `dtm contour` on the TIN (`dtm tin` PLY as input) and on the points
+# 3. Contours at 1 m (`--no-labels`: gdal_contour places no labels either): `dtm contour` on
+#    the TIN (`dtm tin` PLY as input) and on the points
 #    (reading + triangulation included) against `gdal_contour -i 1` on gdal_grid's 2000 x 2000
 #    raster; all write a GeoPackage.
 set -euo pipefail
@@ -79,9 +80,9 @@ echo -n "dtm vs gdal_grid in local coordinates: "
 echo "== contours at 1 m"
 "$dtm" tin "$work/points.csv" -o "$work/tin.ply" -q >/dev/null
 t0=$(now)
-"$dtm" contour "$work/tin.ply" -o "$work/dtm_contours_tin.gpkg" --interval 1 -q
+"$dtm" contour "$work/tin.ply" -o "$work/dtm_contours_tin.gpkg" --interval 1 --no-labels -q
 t1=$(now)
-"$dtm" contour "$work/points.csv" -o "$work/dtm_contours.gpkg" --interval 1 -q
+"$dtm" contour "$work/points.csv" -o "$work/dtm_contours.gpkg" --interval 1 --no-labels -q
 t2=$(now)
 gdal_contour -q -i 1 -a elevation -3d "$work/gdal.tif" "$work/gdal_contours.gpkg"
 t3=$(now)
