@@ -15,6 +15,7 @@
 #include <string>
 
 #include "dtm/core/error.hpp"
+#include "dtm/io/extension.hpp"
 #include "dtm/io/formats/crs.hpp"
 
 namespace dtm::io {
@@ -42,10 +43,15 @@ DatasetPtr open_vector(const std::filesystem::path& path) {
     std::call_once(registered, [] { GDALAllRegister(); });
     const char* const open_options[] = {"GEOM_POSSIBLE_NAMES=WKT,geometry,the_geom,geom,wkt_geom",
                                         "KEEP_GEOM_COLUMNS=NO", nullptr};
+    // A .dxf is read by GDAL's DXF driver only: any other driver would take a drawing whose text
+    // happens to look like its format (the DXF fuzzer led GDAL's OpenJUMP driver, which leaks on
+    // such input, to a drawing with "<JCSDataFile" in it).
+    const char* const dxf_only[] = {"DXF", nullptr};
+    const char* const* drivers = lower_extension(path) == "dxf" ? dxf_only : nullptr;
     CPLErrorReset();
     CPLPushErrorHandler(CPLQuietErrorHandler);
     auto* ds = static_cast<GDALDataset*>(GDALOpenEx(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY,
-                                                    nullptr, open_options, nullptr));
+                                                    drivers, open_options, nullptr));
     CPLPopErrorHandler();
     if (ds == nullptr) {
         throw InputError(path, 0, 0,
