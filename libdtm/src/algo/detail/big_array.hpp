@@ -104,4 +104,14 @@ void prefault_in_parallel(std::vector<T>& v) {
                       [&](std::size_t i) { std::memset(begin + i * page, 0, 1); });
 }
 
+/// Makes @p v @p n copies of @p value in fresh storage, reserved for huge pages and faulted in on
+/// all threads before the (serial) initialisation: for large arrays built from scratch.
+template <class T>
+void assign_fresh(std::vector<T>& v, std::size_t n, const T& value) {
+    std::vector<T>().swap(v);
+    reserve_huge(v, n);
+    prefault_in_parallel(v);
+    v.assign(n, value);
+}
+
 }  // namespace dtm::detail

@@ -43,14 +43,9 @@ namespace dtm::detail {
 
 MeshEditor::MeshEditor(GhostMesh& mesh, std::vector<double>& z, double z_tolerance)
     : mesh_(mesh), z_(z), z_tolerance_(z_tolerance) {
-    // Fresh arrays of the mesh's size: faulted in on all threads before their initialisation.
-    reserve_huge(vertex_edge_, mesh.points.size());
-    prefault_in_parallel(vertex_edge_);
-    vertex_edge_.assign(mesh.points.size(), no_half_edge);
-    std::vector<std::array<std::uint8_t, 3>>().swap(mesh.bits);
-    reserve_huge(mesh.bits, mesh.tris.size());
-    prefault_in_parallel(mesh.bits);
-    mesh.bits.assign(mesh.tris.size(), {0, 0, 0});
+    // Fresh arrays of the mesh's size, faulted in on all threads before their initialisation.
+    assign_fresh(vertex_edge_, mesh.points.size(), no_half_edge);
+    assign_fresh(mesh.bits, mesh.tris.size(), std::array<std::uint8_t, 3>{0, 0, 0});
     // A half-edge out of every vertex, whichever thread writes last: it is only where walks
     // start, and nothing depends on where they start (the sector a segment enters, the triangle
     // or vertex a point lies in are unique, and a point on an edge is reported on the edge's

@@ -36,15 +36,9 @@ Tin with_coherent_vertices(const Tin& tin) {
         });
     };
     constexpr std::uint64_t unused = ~std::uint64_t{0};
-    // The copy's arrays are fresh memory: each is reserved for huge pages and faulted in on all
-    // threads before its (serial) initialisation.
-    const auto fresh = [](auto& v, std::size_t n, const auto& value) {
-        reserve_huge(v, n);
-        prefault_in_parallel(v);
-        v.assign(n, value);
-    };
+    // The copy's arrays are fresh memory (assign_fresh: huge pages, faulted in on all threads).
     std::vector<std::uint64_t> first;  // first corner 3 t + i
-    fresh(first, tin.vertices.size(), unused);
+    assign_fresh(first, tin.vertices.size(), unused);
     for_blocks([&](std::size_t, std::size_t lo, std::size_t hi) {
         for (std::size_t t = lo; t < hi; ++t) {
             for (std::size_t i = 0; i < 3; ++i) {
@@ -66,9 +60,9 @@ Tin with_coherent_vertices(const Tin& tin) {
     });
     for (std::size_t b = 0; b < blocks; ++b) start[b + 1] += start[b];
     Tin out;
-    fresh(out.vertices, start[blocks], Point3{});
+    assign_fresh(out.vertices, start[blocks], Point3{});
     std::vector<VertexIndex> renumber;
-    fresh(renumber, tin.vertices.size(), no_vertex);
+    assign_fresh(renumber, tin.vertices.size(), no_vertex);
     for_blocks([&](std::size_t b, std::size_t lo, std::size_t hi) {
         std::size_t next = start[b];
         for (std::size_t t = lo; t < hi; ++t) {
@@ -80,7 +74,7 @@ Tin with_coherent_vertices(const Tin& tin) {
             }
         }
     });
-    fresh(out.triangles, count, Triangle{});
+    assign_fresh(out.triangles, count, Triangle{});
     for_blocks([&](std::size_t, std::size_t lo, std::size_t hi) {
         for (std::size_t t = lo; t < hi; ++t) {
             Triangle tri = tin.triangles[t];
