@@ -20,6 +20,10 @@
 // (data-dependent triangulations under C1 cubic interpolants).
 #include "dtm/algo/cocircular_diagonals.hpp"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <atomic>
 #include <utility>
 #include <vector>
 
@@ -37,12 +41,13 @@ bool improvable(const Tin& tin,
                 int slot,
                 Criterion criterion,
                 detail::EdgeQuad& q) {
+    const TriangleIndex u = tin.triangles[t].n[static_cast<std::size_t>(slot)];
+    if (u == no_triangle || u < t) return false;
     q = detail::edge_quad(tin, t, slot);
-    if (!q.valid || q.u < t || constrained.contains(q.a, q.b)) return false;
     const auto& p = tin.vertices;
     // t = (c, a, b) counter-clockwise, d beyond ab.
-    return geom::incircle(p[q.c], p[q.a], p[q.b], p[q.d]) == 0 &&
-           detail::flip_improves(tin, q, criterion);
+    return q.valid && geom::incircle(p[q.c], p[q.a], p[q.b], p[q.d]) == 0 &&
+           !constrained.contains(q.a, q.b) && detail::flip_improves(tin, q, criterion);
 }
 
 }  // namespace
@@ -50,13 +55,22 @@ bool improvable(const Tin& tin,
 bool has_improvable_cocircular_edge(const Tin& tin, Criterion criterion) {
     if (!is_data_dependent(criterion)) return false;
     const detail::ConstrainedEdgeSet constrained(tin);
-    detail::EdgeQuad q;
-    for (TriangleIndex t = 0; t < tin.triangles.size(); ++t) {
-        for (int s = 0; s < 3; ++s) {
-            if (improvable(tin, constrained, t, s, criterion, q)) return true;
-        }
-    }
-    return false;
+    std::atomic<bool> found{false};
+    tbb::parallel_for(tbb::blocked_range<TriangleIndex>(
+                          0, static_cast<TriangleIndex>(tin.triangles.size()), 1 << 14),
+                      [&](const tbb::blocked_range<TriangleIndex>& r) {
+                          detail::EdgeQuad q;
+                          for (TriangleIndex t = r.begin(); t != r.end(); ++t) {
+                              if (found.load(std::memory_order_relaxed)) return;
+                              for (int s = 0; s < 3; ++s) {
+                                  if (improvable(tin, constrained, t, s, criterion, q)) {
+                                      found.store(true, std::memory_order_relaxed);
+                                      return;
+                                  }
+                              }
+                          }
+                      });
+    return found.load();
 }
 
 std::size_t choose_cocircular_diagonals(Tin& tin, Criterion criterion) {
