@@ -154,7 +154,7 @@ VolumeReport run_volume(const VolumeJob& job, const fs::path& out_dir, const Pro
     LoadedSurface top;
     LoadedSurface base;
     if (job.base_kind == VolumeBaseKind::surface) {  // both read at once
-        std::vector<std::string> notes;  // the reprojection note is worded below
+        std::vector<std::string> notes;              // the reprojection note is worded below
         std::vector<LoadedSurface> both =
             load_surfaces({job.top, job.base}, notes, progress.sub(0.0, 0.3));
         top = std::move(both[0]);
