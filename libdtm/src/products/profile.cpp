@@ -3,6 +3,7 @@
 // the products: CSV, GeoPackage, DXF and plots.
 #include "dtm/products/profile.hpp"
 
+#include <tbb/parallel_for.h>
 #include <tbb/task_group.h>
 
 #include <cctype>
@@ -10,6 +11,7 @@
 #include <chrono>
 #include <cstdio>
 #include <fstream>
+#include <memory>
 #include <string>
 #include <type_traits>
 
@@ -199,11 +201,15 @@ ProfileReport run_profile(const ProfileJob& job,
     }
     report.read_seconds = since(start);
     const auto cut_start = std::chrono::steady_clock::now();
+    // Each surface's index (a sequential pass) is built beside the others'.
+    std::vector<std::unique_ptr<TinSection>> indexes(surfaces.size());
+    tbb::parallel_for(std::size_t{0}, surfaces.size(), [&](std::size_t s) {
+        indexes[s] = std::make_unique<TinSection>(surfaces[s].tin);
+    });
     std::vector<std::vector<Profile>> sections;
     for (std::size_t s = 0; s < surfaces.size(); ++s) {
         report.surfaces.push_back(surfaces[s].name);
-        const TinSection section(surfaces[s].tin);
-        sections.push_back(section.cut_all(points, job.threads, progress.sub(0.5, 0.7)));
+        sections.push_back(indexes[s]->cut_all(points, job.threads, progress.sub(0.5, 0.7)));
     }
     for (std::size_t l = 0; l < lines.size(); ++l) {
         bool any = false;
