@@ -70,8 +70,8 @@ MethodResult run_incremental_kirkpatrick(const MethodInput& input,
         result.counters.extra["max_children"] = hierarchy.max_children();
         const std::size_t inserting =
             we.bytes() + hierarchy.bytes() + detail::bytes_of(pts) + detail::bytes_of(order);
-        hierarchy = {};
-        order = {};
+        detail::free_storage(hierarchy);
+        detail::free_storage(order);
         result.counters.flips = we.flips();
         result.tin.triangles = we.release_triangles();  // after the edges are freed: less
         peak = std::max(peak, inserting);

@@ -32,6 +32,7 @@
 
 #include "dtm/core/error.hpp"
 #include "methods/detail/counting_predicates.hpp"
+#include "methods/detail/free_storage.hpp"
 #include "methods/detail/voronoi_output.hpp"
 
 namespace dtm::methods {
@@ -91,15 +92,15 @@ public:
         g.vertex_count = static_cast<std::uint32_t>(vref_.size());
         g.he = std::move(he_);
         // The rest is the builder's own: freed before the result is made.
-        prev_ = {};
-        vref_ = {};
-        free_edges_ = {};
-        free_vertices_ = {};
-        face_edge_ = {};
-        stamp_ = {};
-        first_stop_ = {};
-        events_ = {};
-        killed_ = {};
+        detail::free_storage(prev_);
+        detail::free_storage(vref_);
+        detail::free_storage(free_edges_);
+        detail::free_storage(free_vertices_);
+        detail::free_storage(face_edge_);
+        detail::free_storage(stamp_);
+        detail::free_storage(first_stop_);
+        detail::free_storage(events_);
+        detail::free_storage(killed_);
         return g;
     }
 
@@ -427,7 +428,7 @@ MethodResult run_voronoi_dc(const MethodInput& input,
     Builder builder(sites.xy, pred, progress);
     builder.set_total(order.size());
     builder.build(order.data(), order.size());
-    order = {};
+    detail::free_storage(order);
     result.counters.peak_bytes = builder.peak_bytes();
     detail::finish_voronoi(builder.release(), std::move(sites), input.points,
                            detail::FinishOptions{}, pred, result, progress.sub(0.8, 1.0));
