@@ -80,16 +80,18 @@ std::vector<Corners> clip_ears(std::vector<VertexIndex> poly, SuperTriangle& st)
 void KirkpatrickHierarchy::build(std::vector<Corners> triangles,
                                  std::size_t vertex_count,
                                  SuperTriangle& st) {
-    free_storage(inner_);
+    free_storage(first_child_);
     free_storage(children_);
-    leaves_ = std::move(triangles);
+    corners_ = std::move(triangles);
+    leaves_ = corners_.size();
     levels_ = 1;
     max_children_ = 0;
     TriMesh mesh;
-    mesh.tri = link_triangles(leaves_, vertex_count);
+    mesh.tri = link_triangles(corners_, vertex_count);
     std::vector<std::uint32_t> node_of(mesh.tri.size());
-    inner_.reserve(2 * leaves_.size());  // 1.7 per leaf measured
-    children_.reserve(6 * leaves_.size());
+    corners_.reserve(3 * leaves_);  // 2.7 nodes per leaf measured
+    first_child_.reserve(2 * leaves_ + 1);
+    children_.reserve(6 * leaves_);
     for (TriangleIndex t = 0; t < mesh.tri.size(); ++t) node_of[t] = t;
     std::vector<TriangleIndex> vtri(vertex_count, no_triangle);
     for (TriangleIndex t = 0; t < mesh.tri.size(); ++t) {
@@ -185,19 +187,21 @@ void KirkpatrickHierarchy::build(std::vector<Corners> triangles,
                 // The node of the new triangle, children: the old star triangles it overlaps.
                 const auto first = static_cast<std::uint32_t>(children_.size());
                 for (std::size_t j = 0; j < d; ++j) {
-                    if (!separated(fresh[k], corners(old_nodes[j]), st)) {
+                    if (!separated(fresh[k], corners_[old_nodes[j]], st)) {
                         children_.push_back(old_nodes[j]);
                     }
                 }
                 max_children_ = std::max<std::size_t>(max_children_, children_.size() - first);
-                node_of[slot[k]] = static_cast<std::uint32_t>(nodes());
-                inner_.push_back({fresh[k], first});
+                node_of[slot[k]] = static_cast<std::uint32_t>(corners_.size());
+                corners_.push_back(fresh[k]);
+                first_child_.push_back(first);
             }
             vtri[v] = no_triangle;
         }
         std::erase_if(remaining, [&](VertexIndex v) { return vtri[v] == no_triangle; });
         ++levels_;
     }
+    first_child_.push_back(static_cast<std::uint32_t>(children_.size()));
     // The big triangle is the one live triangle left.
     std::vector<bool> is_free(mesh.tri.size(), false);
     for (const TriangleIndex t : free_slots) is_free[t] = true;
@@ -209,24 +213,20 @@ void KirkpatrickHierarchy::build(std::vector<Corners> triangles,
 KirkpatrickHierarchy::Corners KirkpatrickHierarchy::locate(VertexIndex q,
                                                            SuperTriangle& st,
                                                            std::uint64_t& steps) const {
-    const std::size_t leaves = leaves_.size();
     std::uint32_t at = root_;
-    while (at >= leaves) {
-        const std::size_t k = at - leaves;
-        const std::uint32_t begin = inner_[k].first_child;
-        const std::uint32_t end = k + 1 < inner_.size()
-                                      ? inner_[k + 1].first_child
-                                      : static_cast<std::uint32_t>(children_.size());
+    while (at >= leaves_) {
+        const std::uint32_t begin = first_child_[at - leaves_];
+        const std::uint32_t end = first_child_[at - leaves_ + 1];
         if (begin == end) break;
         std::uint32_t next = children_[begin];  // the children cover the node: one holds q
         for (std::uint32_t c = begin; c < end; ++c) {
             ++steps;
             next = children_[c];
-            if (contains(corners(next), q, st)) break;
+            if (contains(corners_[next], q, st)) break;
         }
         at = next;
     }
-    return corners(at);
+    return corners_[at];
 }
 
 }  // namespace dtm::methods::detail

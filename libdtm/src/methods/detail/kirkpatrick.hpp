@@ -30,30 +30,24 @@ public:
     /// (closed); @p steps counts the triangles tested.
     [[nodiscard]] Corners locate(VertexIndex q, SuperTriangle& st, std::uint64_t& steps) const;
 
-    [[nodiscard]] bool empty() const noexcept { return leaves_.empty(); }
+    [[nodiscard]] bool empty() const noexcept { return corners_.empty(); }
     [[nodiscard]] std::size_t levels() const noexcept { return levels_; }
-    [[nodiscard]] std::size_t nodes() const noexcept { return leaves_.size() + inner_.size(); }
+    [[nodiscard]] std::size_t nodes() const noexcept { return corners_.size(); }
     [[nodiscard]] std::size_t bytes() const noexcept {
-        return leaves_.capacity() * sizeof(Corners) + inner_.capacity() * sizeof(Inner) +
-               children_.capacity() * sizeof(std::uint32_t);
+        return corners_.capacity() * sizeof(Corners) +
+               (first_child_.capacity() + children_.capacity()) * sizeof(std::uint32_t);
     }
     /// Largest number of children of a node (Kirkpatrick's H).
     [[nodiscard]] std::size_t max_children() const noexcept { return max_children_; }
 
 private:
     /// Nodes are numbered leaves first (the lowest level, no children), then the inner nodes
-    /// in the order they were made. Inner node k's children are children_[first_child of k,
-    /// first_child of k + 1): made together, they lie side by side, so no count is stored.
-    struct Inner {
-        Corners v;
-        std::uint32_t first_child = 0;  ///< into children_
-    };
-    [[nodiscard]] const Corners& corners(std::uint32_t node) const noexcept {
-        return node < leaves_.size() ? leaves_[node] : inner_[node - leaves_.size()].v;
-    }
-    std::vector<Corners> leaves_;
-    std::vector<Inner> inner_;
+    /// in the order they were made. Inner node k (node leaves_ + k) has the children
+    /// children_[first_child_[k], first_child_[k + 1]): made together, they lie side by side.
+    std::vector<Corners> corners_;            ///< per node
+    std::vector<std::uint32_t> first_child_;  ///< per inner node, and one past the last
     std::vector<std::uint32_t> children_;
+    std::size_t leaves_ = 0;
     std::uint32_t root_ = 0;
     std::size_t levels_ = 0;
     std::size_t max_children_ = 0;
