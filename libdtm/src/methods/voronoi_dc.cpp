@@ -140,17 +140,15 @@ private:
     [[nodiscard]] std::uint32_t twin_face(std::uint32_t h) const { return he_[h ^ 1u].face; }
     [[nodiscard]] bool dead(std::uint32_t h) const { return he_[h].face == dead_face; }
 
-    std::uint32_t new_edge(std::uint32_t face_left, std::uint32_t face_right) {
+    [[gnu::always_inline]] std::uint32_t new_edge(std::uint32_t face_left,
+                                                  std::uint32_t face_right) {
         std::uint32_t e;
         if (!free_edges_.empty()) {
             e = free_edges_.back();
             free_edges_.pop_back();
         } else {
             e = static_cast<std::uint32_t>(he_.size());
-            if (he_.size() + 2 > he_.capacity()) {  // by an eighth, not by doubling
-                he_.reserve(he_.capacity() + he_.capacity() / 8 + 64);
-                prev_.reserve(he_.capacity());
-            }
+            if (he_.size() + 2 > he_.capacity()) grow();
             he_.resize(he_.size() + 2);
             prev_.resize(prev_.size() + 2);
         }
@@ -159,13 +157,21 @@ private:
         return e;
     }
 
+    /// Room for more half-edges and vertices, by an eighth (not by doubling); out of line, so
+    /// that new_edge and new_vertex stay small.
+    [[gnu::cold, gnu::noinline]] void grow() {
+        he_.reserve(he_.size() + he_.size() / 8 + 64);
+        prev_.reserve(he_.capacity());
+        vref_.reserve(vref_.size() + vref_.size() / 8 + 64);
+    }
+
     std::uint32_t new_vertex() {
         if (!free_vertices_.empty()) {
             const std::uint32_t v = free_vertices_.back();
             free_vertices_.pop_back();
             return v;
         }
-        if (vref_.size() == vref_.capacity()) vref_.reserve(vref_.size() + vref_.size() / 8 + 64);
+        if (vref_.size() == vref_.capacity()) grow();
         vref_.push_back(0);
         return static_cast<std::uint32_t>(vref_.size() - 1);
     }
