@@ -14,6 +14,8 @@
 #include <cmath>
 #include <fstream>
 #include <span>
+#include <string>
+#include <vector>
 
 #include "dtm/algo/cut_fill.hpp"
 #include "dtm/algo/difference_surface.hpp"
@@ -149,12 +151,20 @@ VolumeReport run_volume(const VolumeJob& job, const fs::path& out_dir, const Pro
     io::check_output(out_dir, io::OutputKind::folder, "out_dir");  // before any input is read
     io::AtomicDirectory staging(out_dir);
     VolumeReport report;
-    LoadedSurface top = load_surface(job.top, {}, progress.sub(0.0, 0.15));
+    LoadedSurface top;
+    LoadedSurface base;
+    if (job.base_kind == VolumeBaseKind::surface) {  // both read at once
+        std::vector<std::string> notes;              // the reprojection note is worded below
+        std::vector<LoadedSurface> both =
+            load_surfaces({job.top, job.base}, notes, progress.sub(0.0, 0.3));
+        top = std::move(both[0]);
+        base = std::move(both[1]);
+    } else {
+        top = load_surface(job.top, {}, progress.sub(0.0, 0.15));
+    }
     report.crs_wkt = top.crs_wkt;
     report.top = top.description();
-    LoadedSurface base;
     if (job.base_kind == VolumeBaseKind::surface) {
-        base = load_surface(job.base, top.crs_wkt, progress.sub(0.15, 0.3));
         report.base = base.description();
         if (!base.transformed_from.empty()) {
             report.notes.push_back("the base was reprojected from " + base.transformed_from +
