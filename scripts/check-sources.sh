@@ -4,7 +4,9 @@
 #   1. no command-line vocabulary in the library: no "--flag" in any string literal under
 #      libdtm/ (the library names options as `field`; tools/dtm maps fields to flags);
 #   2. io does not run the triangulator: nothing under libdtm/*/io includes algo/triangulate.hpp;
-#   3. every tracked C++ file is formatted with the repository's .clang-format (clang-format
+#   3. no `x = {};` under libdtm/src/methods: for a vector it keeps the capacity, so it frees
+#      nothing (detail::free_storage(x) does);
+#   4. every tracked C++ file is formatted with the repository's .clang-format (clang-format
 #      --dry-run -Werror; skipped outside a git checkout or without clang-format).
 # Usage: scripts/check-sources.sh [--no-format]
 set -euo pipefail
@@ -36,6 +38,12 @@ for path in io:
     for number, line in enumerate(path.read_text(encoding="utf-8").splitlines(), 1):
         if re.match(r'\s*#\s*include\s*[<"]dtm/algo/triangulate\.hpp[">]', line):
             bad.append(f"{path}:{number}: io includes the triangulator (algo/triangulate.hpp)")
+for path in sorted(pathlib.Path("libdtm/src/methods").rglob("*")):
+    if path.suffix not in (".cpp", ".hpp"):
+        continue
+    for number, line in enumerate(path.read_text(encoding="utf-8").splitlines(), 1):
+        if re.match(r'\s*[A-Za-z_][A-Za-z0-9_.]*\s*=\s*\{\s*\};', line):
+            bad.append(f"{path}:{number}: '= {{}};' keeps a vector's memory: use free_storage()")
 for b in bad:
     print(f"check-sources: {b}", file=sys.stderr)
 sys.exit(1 if bad else 0)

@@ -7,8 +7,11 @@
 #include <ogrsf_frmts.h>
 
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 #include "dtm/io/tin_file.hpp"
 #include "support/analysis_fixtures.hpp"
@@ -181,6 +184,70 @@ TEST(CliVolume, WithinAPolygonAndABaseInAnotherCrs) {
     // / 3.
     EXPECT_NEAR(dtm::test::json_number(json, "volume", "fill"), 400.0 * 4.0 / 3.0, 1e-6);
     EXPECT_NEAR(dtm::test::json_number(json, "area", "overlap"), 400.0, 1e-6);
+}
+
+// Two independent surveys of the same ground clipped to a square: both TINs' edges cross the
+// square's sides at rounded points, and the products (difference TIN, GeoTIFF, cut/fill map) used
+// to fail on the near-collinear chains two clipped boundaries make ("edge used twice"). Only
+// the top is clipped now; the base's area inside the polygon still gives "base only".
+TEST(CliVolume, WithinAPolygonTwoRandomSurveysGiveEveryProduct) {
+    const dtm::test::ScratchDir dir;
+    std::uint64_t state = 12345;
+    const auto uniform = [&state] {  // splitmix64: the same numbers on every platform
+        state += 0x9E3779B97F4A7C15ULL;
+        std::uint64_t z = state;
+        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+        z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+        return static_cast<double>((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
+    };
+    std::vector<std::string> paths;
+    for (const int survey : {0, 1}) {
+        std::string csv = "x,y,z\n";
+        char line[128];
+        const auto add = [&](double x, double y) {
+            const double z = 0.1 * x + 0.05 * y + survey * 0.5 * std::sin(x);
+            std::snprintf(line, sizeof line, "%.3f,%.3f,%.3f\n", site.x0 + x, site.y0 + y, z);
+            csv += line;
+        };
+        for (const double corner : {0.0, 1.0, 2.0, 3.0}) {
+            add(corner == 1.0 || corner == 2.0 ? site.side : 0.0, corner >= 2.0 ? site.side : 0.0);
+        }
+        for (int i = 0; i < 2000; ++i) {
+            add(site.side * uniform(), site.side * uniform());
+        }
+        const fs::path points = dir / ("survey" + std::to_string(survey) + ".csv");
+        dtm::test::write_file(points, csv);
+        paths.push_back((dir / ("survey" + std::to_string(survey) + ".ply")).string());
+        const auto tin = dtm::test::run_dtm(
+            {"tin", points.string(), "--crs", "EPSG:5514", "-o", paths.back(), "-q"});
+        ASSERT_EQ(tin.exit_code, 0) << tin.err;
+    }
+    char polygon[600];
+    std::snprintf(polygon, sizeof polygon,
+                  "{\"type\":\"FeatureCollection\",\"crs\":{\"type\":\"name\",\"properties\":"
+                  "{\"name\":\"EPSG:5514\"}},\"features\":[{\"type\":\"Feature\",\"properties\":{},"
+                  "\"geometry\":{\"type\":\"Polygon\",\"coordinates\":[[[%.1f,%.1f],[%.1f,%.1f],"
+                  "[%.1f,%.1f],[%.1f,%.1f],[%.1f,%.1f]]]}}]}",
+                  site.x0 + 10, site.y0 + 10, site.x0 + 30, site.y0 + 10, site.x0 + 30,
+                  site.y0 + 30, site.x0 + 10, site.y0 + 30, site.x0 + 10, site.y0 + 10);
+    dtm::test::write_file(dir / "inner.geojson", polygon);
+    const auto r = dtm::test::run_dtm({"volume", paths[1], "--base", paths[0], "--within",
+                                       (dir / "inner.geojson").string(), "--cell", "1", "-o",
+                                       (dir / "out").string(), "-q"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const std::string json = dtm::test::read_file(dir / "out" / "volume.json");
+    EXPECT_NEAR(dtm::test::json_number(json, "area", "overlap"), 400.0, 1e-9);
+    EXPECT_EQ(dtm::test::json_number(json, "area", "base_only"), 0.0);
+    EXPECT_EQ(dtm::test::json_number(json, "area", "top_only"), 0.0);
+    // The difference GeoTIFF: 20 x 20 cells of 1 m, every one inside the square and valid.
+    GDALAllRegister();
+    auto* raster = static_cast<GDALDataset*>(
+        GDALOpen((dir / "out" / "difference.tif").string().c_str(), GA_ReadOnly));
+    ASSERT_NE(raster, nullptr);
+    EXPECT_EQ(raster->GetRasterXSize(), 20);
+    EXPECT_EQ(raster->GetRasterYSize(), 20);
+    GDALClose(raster);
+    EXPECT_TRUE(fs::exists(dir / "out" / "cut_fill.gpkg"));
 }
 
 TEST(CliVolume, BadInputIsAnErrorNamingTheFile) {

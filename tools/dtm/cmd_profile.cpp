@@ -54,8 +54,11 @@ int run_profile(const ProfileArgs& args) {
     job.threads = args.tin.threads;
     const products::ProfileReport r =
         products::run_profile(job, args.out_dir, terminal_progress("profile", args.quiet));
-    std::printf("profile: %zu lines x %zu surfaces, %zu breakpoints, %zu gaps -> %s\n", r.lines,
-                r.surfaces.size(), r.breakpoints, r.gaps, args.out_dir.c_str());
+    std::printf(
+        "profile: %zu lines x %zu surfaces, %zu breakpoints, %zu gaps -> %s (reading %.2f s, "
+        "sections and products %.2f s)\n",
+        r.lines, r.surfaces.size(), r.breakpoints, r.gaps, args.out_dir.c_str(), r.read_seconds,
+        r.sections_seconds);
     for (const std::string& n : r.notes) {
         std::fprintf(stderr, "profile: note: %s\n", n.c_str());
     }

@@ -9,6 +9,7 @@
 // std::vector and TBB allocations of the rest. It is what glibc's tunable glibc.malloc.hugetlb=1
 // does for mmap'd chunks, done here because a program cannot set its own tunables. Memory is
 // freed by free() as usual; nothing else changes. See docs/adr/0007-huge-pages-for-large-blocks.md.
+#include <malloc.h>
 #include <sys/mman.h>
 
 #include <cstdint>
@@ -79,3 +80,13 @@ void operator delete[](void* p, std::align_val_t) noexcept { std::free(p); }
 void operator delete(void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
 void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
 #endif
+
+// The products' and analyses' policy (main.cpp calls it for them): freed memory stays in the
+// process (no trimming of the heap's top, which grows in steps of 256 MiB), so the next phase's
+// buffers reuse pages that are already mapped instead of faulting in fresh ones.
+void keep_freed_memory() noexcept {
+#ifdef M_TRIM_THRESHOLD
+    mallopt(M_TRIM_THRESHOLD, 1 << 30);
+    mallopt(M_TOP_PAD, 256 << 20);
+#endif
+}

@@ -103,6 +103,11 @@ void add_piece(const OverlayPiece& piece, Totals& totals) {
 
 }  // namespace
 
+double only_area(double whole, double overlap) {
+    const double rest = whole - overlap;
+    return std::fabs(rest) <= 1e-12 * std::max(whole, 1e-300) ? 0.0 : std::max(rest, 0.0);
+}
+
 VolumeResult volume(const TinOverlay& overlay,
                     const Tin& top,
                     const Tin* base,
@@ -141,17 +146,11 @@ VolumeResult volume(const TinOverlay& overlay,
     r.max_cut_at = all.max_cut_at;
     r.pieces = all.pieces;
     r.top_area = tin_area(top);
-    // Differences of compensated sums of the same pieces: exact up to a few ulps of the area,
-    // which is snapped to 0 (a surface that lies wholly inside the other has no "only" area).
-    const auto only = [&](double whole) {
-        const double rest = whole - r.overlap_area;
-        return std::fabs(rest) <= 1e-12 * std::max(whole, 1e-300) ? 0.0 : std::max(rest, 0.0);
-    };
-    r.top_only_area = only(r.top_area);
+    r.top_only_area = only_area(r.top_area, r.overlap_area);
     r.base_is_plane = base == nullptr;
     if (base != nullptr) {
         r.base_area = tin_area(*base);
-        r.base_only_area = only(r.base_area);
+        r.base_only_area = only_area(r.base_area, r.overlap_area);
     }
     return r;
 }

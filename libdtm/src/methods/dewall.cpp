@@ -180,7 +180,7 @@ private:
         } else {
             for (const Face& f : afl) insert(f);
         }
-        afl = {};
+        detail::free_storage(afl);
         const bool split = !lists[2].empty() && hi - lo > 2;
         if (!split) {
             // No face crosses the cut: finish this subset as one advancing front.
@@ -227,7 +227,7 @@ private:
                 if (it != open.end() && it->second == s) (s == 0 ? afl1 : afl2).push_back(f);
             }
         }
-        open = {};
+        detail::free_storage(open);
         std::vector<TriangleCorners> left;
         std::vector<TriangleCorners> right;
         tbb::task_group tasks;
@@ -238,7 +238,7 @@ private:
         tasks.wait();
         out.reserve(out.size() + left.size() + right.size());  // one exact growth, not two
         out.insert(out.end(), left.begin(), left.end());
-        left = {};
+        detail::free_storage(left);
         out.insert(out.end(), right.begin(), right.end());
         return out;
     }
@@ -289,11 +289,11 @@ MethodResult run_dewall(const MethodInput& input,
         peak = dw.bytes() + detail::bytes_of(pts) + detail::bytes_of(in) + detail::bytes_of(perm) +
                2 * detail::bytes_of(triangles);
     }
-    pts = {};  // the k-d ordered copy
+    detail::free_storage(pts);  // the k-d ordered copy
     for (TriangleCorners& t : triangles) {
         for (VertexIndex& v : t) v = perm[v];
     }
-    perm = {};
+    detail::free_storage(perm);
     peak = std::max(peak, detail::bytes_of(in) + detail::bytes_of(triangles) +
                               triangles.size() * sizeof(Triangle));
     result.tin = detail::tin_from_triangles(std::move(prepared.vertices), std::move(triangles));

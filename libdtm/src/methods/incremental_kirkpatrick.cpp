@@ -16,6 +16,8 @@
 // O(n log n) in total. Until 256 points are in, the walk alone is used.
 #include "incremental_kirkpatrick.hpp"
 
+#include <utility>
+
 #include "methods/detail/kirkpatrick.hpp"
 #include "methods/detail/method_support.hpp"
 #include "methods/detail/spatial_order.hpp"
@@ -49,9 +51,9 @@ MethodResult run_incremental_kirkpatrick(const MethodInput& input,
             if (k == next_rebuild && 2 * k <= order.size()) {
                 std::vector<detail::KirkpatrickHierarchy::Corners> snapshot(we.triangles().size());
                 for (TriangleIndex t = 0; t < snapshot.size(); ++t) snapshot[t] = we.corners(t);
-                hierarchy.build(snapshot, pts.size() + 3, we.super());
-                peak = std::max(peak, we.bytes() + hierarchy.bytes() + detail::bytes_of(snapshot) +
-                                          detail::bytes_of(pts) + detail::bytes_of(order));
+                hierarchy.build(std::move(snapshot), pts.size() + 3, we.super());
+                peak = std::max(peak, we.bytes() + hierarchy.bytes() + detail::bytes_of(pts) +
+                                          detail::bytes_of(order));
                 ++rebuilds;
                 next_rebuild *= 2;
             }
@@ -70,8 +72,8 @@ MethodResult run_incremental_kirkpatrick(const MethodInput& input,
         result.counters.extra["max_children"] = hierarchy.max_children();
         const std::size_t inserting =
             we.bytes() + hierarchy.bytes() + detail::bytes_of(pts) + detail::bytes_of(order);
-        hierarchy = {};
-        order = {};
+        detail::free_storage(hierarchy);
+        detail::free_storage(order);
         result.counters.flips = we.flips();
         result.tin.triangles = we.release_triangles();  // after the edges are freed: less
         peak = std::max(peak, inserting);

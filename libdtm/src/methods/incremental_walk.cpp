@@ -54,7 +54,7 @@ MethodResult run_incremental_walk(const MethodInput& input,
         // Peak: inserting (with the order); the output is built after the edges are freed
         // (WingedEdgeDelaunay::release_triangles), over the triangle list, in less.
         peak = we.bytes() + detail::bytes_of(pts) + detail::bytes_of(order);
-        order = {};
+        detail::free_storage(order);
         result.counters.flips = we.flips();
         result.tin.triangles = we.release_triangles();
     }

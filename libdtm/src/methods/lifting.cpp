@@ -276,7 +276,7 @@ MethodResult run_lifting(const MethodInput& input,
             result.counters.extra["facets_made"] = hull.created;
             const std::size_t building =
                 hull.bytes() + detail::bytes_of(p) + detail::bytes_of(order);
-            order = {};
+            detail::free_storage(order);
             result.tin.triangles = hull.lower_triangles();
             peak = std::max(building, hull.bytes() + detail::bytes_of(p) +
                                           detail::bytes_of(result.tin.triangles));

@@ -114,7 +114,7 @@ public:
             mesh_.tri[renumber[t]] = x;
         }
         mesh_.tri.resize(count);
-        slot_id_ = {};
+        detail::free_storage(slot_id_);
         return std::move(mesh_.tri);
     }
 

@@ -63,7 +63,7 @@ MethodResult run_topological_dc(const MethodInput& input,
     progress.check();
     const std::size_t working = dc.edges().bytes() + detail::bytes_of(p) +
                                 detail::bytes_of(prepared.vertices) + 2 * detail::bytes_of(perm);
-    p = {};
+    detail::free_storage(p);
     const std::vector<Point3>& v = prepared.vertices;
     // The counter-clockwise faces of three edges are the triangles (the outer face runs
     // clockwise), each taken at its smallest half-edge; there are E - n + 1 of them (Euler).
@@ -90,7 +90,7 @@ MethodResult run_topological_dc(const MethodInput& input,
     }
     const detail::MergeCounts c = dc.counts();
     dc.release();  // the quad-edges
-    perm = {};
+    detail::free_storage(perm);
     detail::link_in_place(triangles, v.size());
     MethodResult result;
     result.counters.extra["deletions"] = c.deletions;

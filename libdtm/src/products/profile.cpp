@@ -3,9 +3,17 @@
 // the products: CSV, GeoPackage, DXF and plots.
 #include "dtm/products/profile.hpp"
 
+#include <tbb/parallel_for.h>
+#include <tbb/task_group.h>
+
 #include <cctype>
+#include <charconv>
+#include <chrono>
 #include <cstdio>
 #include <fstream>
+#include <memory>
+#include <string>
+#include <type_traits>
 
 #include "dtm/core/error.hpp"
 #include "dtm/io/atomic_file.hpp"
@@ -19,23 +27,6 @@
 
 namespace dtm::products {
 namespace fs = std::filesystem;
-
-std::vector<LoadedSurface> load_surfaces(const std::vector<SurfaceSource>& sources,
-                                         std::vector<std::string>& notes,
-                                         const Progress& progress) {
-    std::vector<LoadedSurface> out;
-    const double n = static_cast<double>(sources.size());
-    for (std::size_t i = 0; i < sources.size(); ++i) {
-        const double at = static_cast<double>(i);
-        out.push_back(load_surface(sources[i], out.empty() ? std::string() : out.front().crs_wkt,
-                                   progress.sub(at / n, (at + 1.0) / n)));
-        if (!out.back().transformed_from.empty()) {
-            notes.push_back(out.back().name + " reprojected from " + out.back().transformed_from +
-                            " into " + io::crs_label(out.front().crs_wkt));
-        }
-    }
-    return out;
-}
 
 namespace {
 
@@ -55,18 +46,36 @@ void write_csv(const fs::path& path,
                ProfileReport& report) {
     std::ofstream out(path, std::ios::binary);
     out << "line,surface,run,chainage,x,y,z\n";
-    char row[256];
+    std::string row;
+    char number[64];
+    const auto add = [&](auto value, char after) {  // %zu or %.6f (std::to_chars: the same text)
+        std::to_chars_result r{};
+        if constexpr (std::is_floating_point_v<decltype(value)>) {
+            r = std::to_chars(number, number + sizeof number, value, std::chars_format::fixed, 6);
+        } else {
+            r = std::to_chars(number, number + sizeof number, value);
+        }
+        row.append(number, r.ptr);
+        row.push_back(after);
+    };
     for (std::size_t l = 0; l < lines.size(); ++l) {
         for (std::size_t s = 0; s < names.size(); ++s) {
             const Profile& p = sections[s][l];
+            row.clear();
             for (std::size_t r = 0; r < p.runs.size(); ++r) {
                 for (const ProfilePoint& q : p.runs[r].points) {
-                    std::snprintf(row, sizeof row, "%zu,%s,%zu,%.6f,%.6f,%.6f,%.6f\n", l + 1,
-                                  names[s].c_str(), r + 1, q.chainage, q.x, q.y, q.z);
-                    out << row;
+                    add(l + 1, ',');
+                    row += names[s];
+                    row.push_back(',');
+                    add(r + 1, ',');
+                    add(q.chainage, ',');
+                    add(q.x, ',');
+                    add(q.y, ',');
+                    add(q.z, '\n');
                     ++report.breakpoints;
                 }
             }
+            out << row;
             report.gaps += p.runs.empty() ? 0 : p.runs.size() - 1;
         }
     }
@@ -175,6 +184,10 @@ ProfileReport run_profile(const ProfileJob& job,
     io::check_output(out_dir, io::OutputKind::folder, "out_dir");  // before any input is read
     io::AtomicDirectory staging(out_dir);
     ProfileReport report;
+    const auto start = std::chrono::steady_clock::now();
+    const auto since = [](std::chrono::steady_clock::time_point t) {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+    };
     const std::vector<LoadedSurface> surfaces =
         load_surfaces(job.surfaces, report.notes, progress.sub(0.0, 0.5));
     const std::string crs = surfaces.front().crs_wkt;
@@ -186,11 +199,17 @@ ProfileReport run_profile(const ProfileJob& job,
             points.back().push_back(l.points.front());
         }
     }
+    report.read_seconds = since(start);
+    const auto cut_start = std::chrono::steady_clock::now();
+    // Each surface's index (a sequential pass) is built beside the others'.
+    std::vector<std::unique_ptr<TinSection>> indexes(surfaces.size());
+    tbb::parallel_for(std::size_t{0}, surfaces.size(), [&](std::size_t s) {
+        indexes[s] = std::make_unique<TinSection>(surfaces[s].tin);
+    });
     std::vector<std::vector<Profile>> sections;
     for (std::size_t s = 0; s < surfaces.size(); ++s) {
         report.surfaces.push_back(surfaces[s].name);
-        const TinSection section(surfaces[s].tin);
-        sections.push_back(section.cut_all(points, job.threads, progress.sub(0.5, 0.7)));
+        sections.push_back(indexes[s]->cut_all(points, job.threads, progress.sub(0.5, 0.7)));
     }
     for (std::size_t l = 0; l < lines.size(); ++l) {
         bool any = false;
@@ -205,10 +224,12 @@ ProfileReport run_profile(const ProfileJob& job,
         }
     }
     report.lines = lines.size();
-    write_csv(staging.staging() / "profile.csv", lines, report.surfaces, sections, report);
-    report.files.emplace_back("profile.csv");
-    write_vectors(staging.staging(), crs, report.surfaces, sections);
-    report.files.insert(report.files.end(), {"profile.gpkg", "profile.dxf"});
+    tbb::task_group writers;  // the CSV beside the GeoPackage and DXF
+    writers.run([&] {
+        write_csv(staging.staging() / "profile.csv", lines, report.surfaces, sections, report);
+    });
+    writers.run_and_wait([&] { write_vectors(staging.staging(), crs, report.surfaces, sections); });
+    report.files.insert(report.files.end(), {"profile.csv", "profile.gpkg", "profile.dxf"});
     progress.report(0.8, "drawing the profiles");
     if (!job.plot_format.empty()) {
         const std::vector<std::string> plots =
@@ -216,6 +237,7 @@ ProfileReport run_profile(const ProfileJob& job,
         report.files.insert(report.files.end(), plots.begin(), plots.end());
     }
     detail::commit_files(staging, report.files);
+    report.sections_seconds = since(cut_start);
     progress.report(1.0, "done");
     return report;
 }

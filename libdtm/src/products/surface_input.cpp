@@ -3,7 +3,10 @@
 // else triangulated), lines, areas and control points, all brought into one CRS.
 #include "dtm/products/surface_input.hpp"
 
+#include <tbb/parallel_for.h>
+
 #include <cmath>
+#include <exception>
 #include <utility>
 
 #include "dtm/core/error.hpp"
@@ -74,6 +77,41 @@ LoadedSurface load_surface(const SurfaceSource& source,
     }
     progress.report(1.0, "reading the " + source.name + " surface");
     return s;
+}
+
+std::vector<LoadedSurface> load_surfaces(const std::vector<SurfaceSource>& sources,
+                                         std::vector<std::string>& notes,
+                                         const Progress& progress) {
+    const std::size_t n = sources.size();
+    const auto part = [&](std::size_t i) {
+        return progress.sub(static_cast<double>(i) / static_cast<double>(n),
+                            static_cast<double>(i + 1) / static_cast<double>(n));
+    };
+    std::vector<LoadedSurface> out(n);
+    std::vector<std::exception_ptr> errors(n);
+    tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
+        try {
+            out[i] = load_surface(sources[i], {}, part(i));
+        } catch (...) {
+            errors[i] = std::current_exception();
+        }
+    });
+    for (const std::exception_ptr& e : errors) {
+        if (e) {
+            std::rethrow_exception(e);
+        }
+    }
+    for (std::size_t i = 1; i < n; ++i) {
+        const std::string& crs = out.front().crs_wkt;
+        if (out[i].crs_wkt.empty()) {
+            out[i].crs_wkt = crs;
+        } else if (!crs.empty() && !io::crs_equivalent(out[i].crs_wkt, crs)) {
+            out[i] = load_surface(sources[i], crs, part(i));
+            notes.push_back(out[i].name + " reprojected from " + out[i].transformed_from +
+                            " into " + io::crs_label(crs));
+        }
+    }
+    return out;
 }
 
 std::vector<Polyline> load_lines(const std::filesystem::path& path,

@@ -14,10 +14,13 @@
 #include <cmath>
 #include <fstream>
 #include <span>
+#include <string>
+#include <vector>
 
 #include "dtm/algo/cut_fill.hpp"
 #include "dtm/algo/difference_surface.hpp"
 #include "dtm/algo/rasterize.hpp"
+#include "dtm/algo/validate.hpp"
 #include "dtm/algo/volume_surfaces.hpp"
 #include "dtm/core/error.hpp"
 #include "dtm/io/formats/crs.hpp"
@@ -93,11 +96,16 @@ void write_volume_products(const Tin& top,
                            const VolumeJob& job,
                            const fs::path& folder,
                            VolumeReport& report,
-                           const Progress& progress) {
+                           const Progress& progress,
+                           std::optional<double> base_area) {
     const OverlayOptions options{.threads = job.threads};
     const TinOverlay overlay =
         base != nullptr ? TinOverlay(top, *base, options) : TinOverlay(top, job.plane_z, options);
     report.volume = volume(overlay, top, base, progress.sub(0.0, 0.3));
+    if (base != nullptr && base_area.has_value()) {
+        report.volume.base_area = *base_area;
+        report.volume.base_only_area = only_area(*base_area, report.volume.overlap_area);
+    }
     report.top_triangles = top.triangles.size();
     report.base_triangles = base != nullptr ? base->triangles.size() : 0;
     report.swell = job.swell;
@@ -143,12 +151,20 @@ VolumeReport run_volume(const VolumeJob& job, const fs::path& out_dir, const Pro
     io::check_output(out_dir, io::OutputKind::folder, "out_dir");  // before any input is read
     io::AtomicDirectory staging(out_dir);
     VolumeReport report;
-    LoadedSurface top = load_surface(job.top, {}, progress.sub(0.0, 0.15));
+    LoadedSurface top;
+    LoadedSurface base;
+    if (job.base_kind == VolumeBaseKind::surface) {  // both read at once
+        std::vector<std::string> notes;              // the reprojection note is worded below
+        std::vector<LoadedSurface> both =
+            load_surfaces({job.top, job.base}, notes, progress.sub(0.0, 0.3));
+        top = std::move(both[0]);
+        base = std::move(both[1]);
+    } else {
+        top = load_surface(job.top, {}, progress.sub(0.0, 0.15));
+    }
     report.crs_wkt = top.crs_wkt;
     report.top = top.description();
-    LoadedSurface base;
     if (job.base_kind == VolumeBaseKind::surface) {
-        base = load_surface(job.base, top.crs_wkt, progress.sub(0.15, 0.3));
         report.base = base.description();
         if (!base.transformed_from.empty()) {
             report.notes.push_back("the base was reprojected from " + base.transformed_from +
@@ -165,6 +181,7 @@ VolumeReport run_volume(const VolumeJob& job, const fs::path& out_dir, const Pro
     } else if (job.base_kind == VolumeBaseKind::plane) {
         report.base = "level plane z = " + std::to_string(job.plane_z);
     }
+    std::optional<double> base_area_within;
     if (!job.within.empty()) {
         const TerrainInput area = load_area(job.within, job.within_reader, report.crs_wkt);
         report.within = job.within.generic_string();
@@ -174,11 +191,16 @@ VolumeReport run_volume(const VolumeJob& job, const fs::path& out_dir, const Pro
                              "the polygon does not overlap the top surface (" + report.top + ")");
         }
         if (job.base_kind == VolumeBaseKind::surface) {
-            base.tin = clip_tin(base.tin, area, progress.sub(0.4, 0.5));
-            if (base.tin.triangles.empty()) {
+            // Only the top is clipped: two clipped surfaces would share a boundary of rounded
+            // crossings along the polygon, whose near-collinear chains the overlay resolves
+            // exactly but the difference surface cannot fan from rounded points. The base's
+            // own clip gives its area within the polygon (the "base only" figure).
+            const Tin base_within = clip_tin(base.tin, area, progress.sub(0.4, 0.5));
+            if (base_within.triangles.empty()) {
                 throw InputError(job.within, 0, 0,
                                  "the polygon does not overlap the base (" + report.base + ")");
             }
+            base_area_within = tin_area(base_within);
         }
     }
     if (job.base_kind == VolumeBaseKind::stockpile) {
@@ -188,7 +210,7 @@ VolumeReport run_volume(const VolumeJob& job, const fs::path& out_dir, const Pro
     }
     const Tin* base_tin = job.base_kind == VolumeBaseKind::plane ? nullptr : &base.tin;
     write_volume_products(top.tin, base_tin, job, staging.staging(), report,
-                          progress.sub(0.5, 0.99));
+                          progress.sub(0.5, 0.99), base_area_within);
     report.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     detail::commit_files(staging, report.files);

@@ -63,6 +63,10 @@ struct VolumeResult {
                                   double base_z,
                                   const VolumeOptions& options = {},
                                   const Progress& progress = {});
+/// The part of a surface's plan area @p whole outside the overlap: the difference of compensated
+/// sums of the same pieces, exact up to a few ulps, so a difference within 1e-12 of @p whole is
+/// 0 (a surface that lies wholly inside the other has no "only" area).
+[[nodiscard]] double only_area(double whole, double overlap);
 /// Volume over the pieces of a prepared overlay (both overloads above end here).
 [[nodiscard]] VolumeResult volume(const TinOverlay& overlay,
                                   const Tin& top,

@@ -30,7 +30,9 @@ struct ProfileReport {
     std::size_t lines = 0;
     std::vector<std::string> surfaces;  ///< names (file stems)
     std::size_t breakpoints = 0;
-    std::size_t gaps = 0;  ///< runs beyond the first on each (line, surface)
+    std::size_t gaps = 0;           ///< runs beyond the first on each (line, surface)
+    double read_seconds = 0.0;      ///< reading (and triangulating) the surfaces and the lines
+    double sections_seconds = 0.0;  ///< cutting every section and writing every product
     std::vector<std::string> files;
     std::vector<std::string> notes;
 };
@@ -40,10 +42,5 @@ struct ProfileReport {
 ProfileReport run_profile(const ProfileJob& job,
                           const std::filesystem::path& out_dir,
                           const Progress& progress = {});
-
-/// Loads the surfaces of @p sources (all in the first one's CRS); @p names receives their names.
-std::vector<LoadedSurface> load_surfaces(const std::vector<SurfaceSource>& sources,
-                                         std::vector<std::string>& notes,
-                                         const Progress& progress);
 
 }  // namespace dtm::products

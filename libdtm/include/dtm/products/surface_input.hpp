@@ -43,6 +43,13 @@ struct LoadedSurface {
                                          const std::string& crs_wkt = {},
                                          const Progress& progress = {});
 
+/// Loads every surface of @p sources, all in the first one's CRS, concurrently (a surface in
+/// another CRS is read again, reprojected). The first error in the order of @p sources is the
+/// one thrown. @p notes receives a line for each reprojected surface.
+[[nodiscard]] std::vector<LoadedSurface> load_surfaces(const std::vector<SurfaceSource>& sources,
+                                                       std::vector<std::string>& notes,
+                                                       const Progress& progress = {});
+
 /// Lines of a vector or text file (LineStrings, polygon rings, or HP-GL lines), each with its
 /// source ("file:feature N") for messages; heights may be NaN. Reprojected into @p crs_wkt when
 /// the file carries another CRS. @throws InputError when the file has no line.

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -62,12 +63,16 @@ VolumeReport run_volume(const VolumeJob& job,
 /// The products of an already computed pair of surfaces into @p folder (which exists):
 /// volume.json, volume.txt and, when @p job.products, difference.ply, difference.tif,
 /// cut_fill.gpkg, zero_lines.dxf. @p base is null for a plane. Fills report.files.
+/// @p base_area, when given, is the base's area within the compared region (the base is not
+/// clipped to a `--within` polygon, only the top is): it replaces the base's whole area in the
+/// "base only" figure.
 void write_volume_products(const Tin& top,
                            const Tin* base,
                            const VolumeJob& job,
                            const std::filesystem::path& folder,
                            VolumeReport& report,
-                           const Progress& progress = {});
+                           const Progress& progress = {},
+                           std::optional<double> base_area = std::nullopt);
 
 /// The text of volume.json / volume.txt.
 [[nodiscard]] std::string volume_json(const VolumeReport& report);

@@ -23,30 +23,31 @@ public:
 
     /// Builds the hierarchy of the triangulation @p triangles (counter-clockwise corners, the
     /// whole big triangle covered; vertex ids below @p vertex_count, the corners of @p st are
-    /// never removed). Predicates through @p st.
-    void build(const std::vector<Corners>& triangles, std::size_t vertex_count, SuperTriangle& st);
+    /// never removed), which it keeps as its lowest level. Predicates through @p st.
+    void build(std::vector<Corners> triangles, std::size_t vertex_count, SuperTriangle& st);
 
     /// A triangle of the lowest level (the triangulation given to build) containing @p q
     /// (closed); @p steps counts the triangles tested.
     [[nodiscard]] Corners locate(VertexIndex q, SuperTriangle& st, std::uint64_t& steps) const;
 
-    [[nodiscard]] bool empty() const noexcept { return nodes_.empty(); }
+    [[nodiscard]] bool empty() const noexcept { return corners_.empty(); }
     [[nodiscard]] std::size_t levels() const noexcept { return levels_; }
-    [[nodiscard]] std::size_t nodes() const noexcept { return nodes_.size(); }
+    [[nodiscard]] std::size_t nodes() const noexcept { return corners_.size(); }
     [[nodiscard]] std::size_t bytes() const noexcept {
-        return nodes_.capacity() * sizeof(Node) + children_.capacity() * sizeof(std::uint32_t);
+        return corners_.capacity() * sizeof(Corners) +
+               (first_child_.capacity() + children_.capacity()) * sizeof(std::uint32_t);
     }
     /// Largest number of children of a node (Kirkpatrick's H).
     [[nodiscard]] std::size_t max_children() const noexcept { return max_children_; }
 
 private:
-    struct Node {
-        Corners v;
-        std::uint32_t first_child = 0;  ///< into children_
-        std::uint32_t child_count = 0;  ///< 0: a triangle of the lowest level
-    };
-    std::vector<Node> nodes_;
+    /// Nodes are numbered leaves first (the lowest level, no children), then the inner nodes
+    /// in the order they were made. Inner node k (node leaves_ + k) has the children
+    /// children_[first_child_[k], first_child_[k + 1]): made together, they lie side by side.
+    std::vector<Corners> corners_;            ///< per node
+    std::vector<std::uint32_t> first_child_;  ///< per inner node, and one past the last
     std::vector<std::uint32_t> children_;
+    std::size_t leaves_ = 0;
     std::uint32_t root_ = 0;
     std::size_t levels_ = 0;
     std::size_t max_children_ = 0;

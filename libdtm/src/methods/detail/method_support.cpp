@@ -149,7 +149,7 @@ Tin tin_from_triangles(std::vector<Point3> vertices, std::vector<TriangleCorners
     Tin tin;
     tin.triangles.resize(triangles.size());
     for (std::size_t t = 0; t < triangles.size(); ++t) tin.triangles[t].v = triangles[t];
-    triangles = {};  // the corners are in the Tin now: free them before the links are made
+    free_storage(triangles);  // the corners are in the Tin now: free them before the links are made
     link_in_place(tin.triangles, vertices.size());
     tin.vertices = std::move(vertices);
     return tin;

@@ -16,6 +16,7 @@
 
 #include "dtm/methods/method.hpp"
 #include "methods/detail/counting_predicates.hpp"
+#include "methods/detail/free_storage.hpp"
 
 namespace dtm::methods::detail {
 

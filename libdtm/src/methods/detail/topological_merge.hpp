@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "methods/detail/edge_algebra.hpp"
+#include "methods/detail/free_storage.hpp"
 
 namespace dtm::methods::detail {
 
@@ -55,11 +56,11 @@ public:
     [[nodiscard]] const MergeCounts& counts() const noexcept { return counts_; }
     /// Frees the quad-edges and the working lists (the counts stay).
     void release() {
-        q_ = {};
-        order_ = {};
-        cross_ = {};
-        hanging_ = {};
-        scratch_ = {};
+        free_storage(q_);
+        free_storage(order_);
+        free_storage(cross_);
+        free_storage(hanging_);
+        free_storage(scratch_);
     }
 
 private:

@@ -12,6 +12,7 @@
 
 #include "dtm/core/error.hpp"
 #include "dtm/geom/constructions.hpp"
+#include "methods/detail/free_storage.hpp"
 
 namespace dtm::methods::detail {
 namespace {
@@ -333,16 +334,16 @@ VoronoiGraph IncrementalVoronoi::release() {
     g.vertex_count = static_cast<std::uint32_t>(vout_.size());
     g.he = std::move(he_);
     // The rest is the graph's own: freed before the result is made.
-    vout_ = {};
-    face_edge_ = {};
-    free_edges_ = {};
-    free_vertices_ = {};
-    label_ = {};
-    incident_ = {};
-    labelled_ = {};
-    incident_list_ = {};
-    boundary_ = {};
-    region_stamp_ = {};
+    free_storage(vout_);
+    free_storage(face_edge_);
+    free_storage(free_edges_);
+    free_storage(free_vertices_);
+    free_storage(label_);
+    free_storage(incident_);
+    free_storage(labelled_);
+    free_storage(incident_list_);
+    free_storage(boundary_);
+    free_storage(region_stamp_);
     return g;
 }
 

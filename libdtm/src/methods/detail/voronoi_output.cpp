@@ -99,7 +99,7 @@ void dual_triangles(const VoronoiDiagram& d,
             tin.triangles.push_back(t);
         }
     }
-    out = {};
+    free_storage(out);
     link_in_place(tin.triangles, real);
 }
 
@@ -186,7 +186,7 @@ void finish_voronoi(VoronoiGraph&& graph,
         if (vertex_of[r] == no_index) vertex_of[r] = nv++;
         vertex_of[v] = vertex_of[r];
     }
-    id = {};
+    free_storage(id);
     const auto finite = [&](std::uint32_t u) { return u != no_index && state[u] == 1; };
     // Positions: the circumcentre seen from the first output half-edge out of the vertex.
     std::vector<Point2> positions(nv);
@@ -201,8 +201,8 @@ void finish_voronoi(VoronoiGraph&& graph,
                                    sites.xy[he[he[h ^ 1u].next ^ 1u].face]);
         }
     }
-    sites.xy = {};
-    sites.first = {};
+    free_storage(sites.xy);
+    free_storage(sites.first);
     // next: past the auxiliary and zero-length edges (only kept half-edges are rewritten, and
     // the walks only read the others).
     for (std::uint32_t h = 0; h < nh; ++h) {
@@ -230,8 +230,8 @@ void finish_voronoi(VoronoiGraph&& graph,
     }
     const std::uint32_t no = rank.half_edges();
     he.resize(no);
-    state = {};
-    vertex_of = {};
+    free_storage(state);
+    free_storage(vertex_of);
     VoronoiDiagram& d = result.voronoi;
     d.vertices = std::move(positions);
     d.half_edges = std::move(he);
@@ -257,7 +257,7 @@ void finish_voronoi(VoronoiGraph&& graph,
         face_edge[sites.input[k]] = edge;
     }
     d.face_edge = std::move(face_edge);
-    sites.input = {};
+    free_storage(sites.input);
     auto& extra = result.counters.extra;
     extra["voronoi_vertices"] = nv;
     extra["voronoi_edges"] = no / 2;

@@ -333,12 +333,12 @@ std::vector<Triangle> WingedEdgeDelaunay::release_triangles() {
         if (st_.is_corner(c[0]) || st_.is_corner(c[1]) || st_.is_corner(c[2])) continue;
         tris_[kept++].e = c;
     }
-    edges_ = {};
-    vertex_edge_ = {};
-    pending_ = {};
+    free_storage(edges_);
+    free_storage(vertex_edge_);
+    free_storage(pending_);
     std::vector<Triangle> out(kept);
     for (std::size_t t = 0; t < kept; ++t) out[t].v = tris_[t].e;
-    tris_ = {};
+    free_storage(tris_);
     link_in_place(out, pts_.size());
     return out;
 }
