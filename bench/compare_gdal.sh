@@ -2,7 +2,10 @@
 # SPDX-License-Identifier: MIT
 # dtm grid / dtm contour against gdal_grid -a linear / gdal_contour, in one run.
 #
-#   bench/compare_gdal.sh [DTM_BINARY] [POINTS] [WORKDIR]
+#   [REPEAT=3] bench/compare_gdal.sh [DTM_BINARY] [POINTS] [WORKDIR]
+#
+# Every timed command runs REPEAT times, dtm's and GDAL's taking turns; the best time of each is
+# compared (the bench machine's run-to-run spread is large: see docs/performance.md).
 #
 # 1. Generates POINTS (default 10^6) uniform random survey points of a smooth terrain with
 #    about 150 m of relief over 2000 m x 2000 m at S-JTSK (EPSG:5514) offsets.
@@ -34,6 +37,13 @@ command -v gdal_grid >/dev/null || { echo "compare_gdal: gdal_grid not found" >&
 
 now() { date +%s.%N; }
 elapsed() { echo "$2 - $1" | bc -l | awk '{printf "%.2f", $1}'; }
+repeat="${REPEAT:-3}"
+best() {  # best PREVIOUS COMMAND...: runs COMMAND once, prints the smaller of its time and PREVIOUS
+    local previous=$1; shift
+    local t0 t1 t
+    t0=$(now); "$@" >&2; t1=$(now); t=$(elapsed "$t0" "$t1")
+    if [[ -z "$previous" ]] || (( $(echo "$t < $previous" | bc -l) )); then echo "$t"; else echo "$previous"; fi
+}
 
 "$here/cpu_info.sh"
 echo "== work directory: $work"
@@ -56,15 +66,22 @@ done
 compare="$work/compare_rasters"
 g++ -std=c++20 -O2 -I/usr/include/gdal "$here/compare_rasters.cpp" -o "$compare" -lgdal
 
-echo "== DEM ${size} x ${size}"
-t0=$(now)
-"$dtm" grid "$work/points.csv" -o "$work/dtm.tif" --cell 1 --extent "$xmin,$ymin,$xmax,$ymax" -q
-t1=$(now)
-gdal_grid --config GDAL_NUM_THREADS ALL_CPUS -q -a linear:radius=0:nodata=-9999 -ot Float32 \
-    -txe "$xmin" "$xmax" -tye "$ymax" "$ymin" -outsize "$size" "$size" \
-    -l points "$work/points.vrt" "$work/gdal.tif"
-t2=$(now)
-dtm_grid=$(elapsed "$t0" "$t1"); gdal_grid_s=$(elapsed "$t1" "$t2")
+echo "== DEM ${size} x ${size} (best of $repeat runs each, dtm and GDAL taking turns)"
+run_dtm_grid() {
+    rm -f "$work/dtm.tif"
+    "$dtm" grid "$work/points.csv" -o "$work/dtm.tif" --cell 1 --extent "$xmin,$ymin,$xmax,$ymax" -q
+}
+run_gdal_grid() {
+    rm -f "$work/gdal.tif"
+    gdal_grid --config GDAL_NUM_THREADS ALL_CPUS -q -a linear:radius=0:nodata=-9999 -ot Float32 \
+        -txe "$xmin" "$xmax" -tye "$ymax" "$ymin" -outsize "$size" "$size" \
+        -l points "$work/points.vrt" "$work/gdal.tif"
+}
+dtm_grid=""; gdal_grid_s=""
+for ((rep = 1; rep <= repeat; ++rep)); do
+    dtm_grid=$(best "$dtm_grid" run_dtm_grid)
+    gdal_grid_s=$(best "$gdal_grid_s" run_gdal_grid)
+done
 echo "dtm grid:  ${dtm_grid} s"
 echo "gdal_grid: ${gdal_grid_s} s"
 echo "speed-up:  $(echo "$gdal_grid_s / $dtm_grid" | bc -l | awk '{printf "%.1f", $1}') x"
@@ -79,15 +96,24 @@ echo -n "dtm vs gdal_grid in local coordinates: "
 
 echo "== contours at 1 m"
 "$dtm" tin "$work/points.csv" -o "$work/tin.ply" -q >/dev/null
-t0=$(now)
-"$dtm" contour "$work/tin.ply" -o "$work/dtm_contours_tin.gpkg" --interval 1 --no-labels -q
-t1=$(now)
-"$dtm" contour "$work/points.csv" -o "$work/dtm_contours.gpkg" --interval 1 --no-labels -q
-t2=$(now)
-gdal_contour -q -i 1 -a elevation -3d "$work/gdal.tif" "$work/gdal_contours.gpkg"
-t3=$(now)
-dtm_contour_tin=$(elapsed "$t0" "$t1"); dtm_contour=$(elapsed "$t1" "$t2")
-gdal_contour_s=$(elapsed "$t2" "$t3")
+run_dtm_contour_tin() {
+    rm -f "$work/dtm_contours_tin.gpkg"
+    "$dtm" contour "$work/tin.ply" -o "$work/dtm_contours_tin.gpkg" --interval 1 --no-labels -q
+}
+run_dtm_contour() {
+    rm -f "$work/dtm_contours.gpkg"
+    "$dtm" contour "$work/points.csv" -o "$work/dtm_contours.gpkg" --interval 1 --no-labels -q
+}
+run_gdal_contour() {
+    rm -f "$work/gdal_contours.gpkg"
+    gdal_contour -q -i 1 -a elevation -3d "$work/gdal.tif" "$work/gdal_contours.gpkg"
+}
+dtm_contour_tin=""; dtm_contour=""; gdal_contour_s=""
+for ((rep = 1; rep <= repeat; ++rep)); do
+    dtm_contour_tin=$(best "$dtm_contour_tin" run_dtm_contour_tin)
+    dtm_contour=$(best "$dtm_contour" run_dtm_contour)
+    gdal_contour_s=$(best "$gdal_contour_s" run_gdal_contour)
+done
 echo "dtm contour (TIN .ply -> contours):      ${dtm_contour_tin} s"
 echo "dtm contour (points -> TIN -> contours): ${dtm_contour} s"
 echo "gdal_contour (2000 x 2000 raster):       ${gdal_contour_s} s"

@@ -30,7 +30,7 @@ struct ProfileReport {
     std::size_t lines = 0;
     std::vector<std::string> surfaces;  ///< names (file stems)
     std::size_t breakpoints = 0;
-    std::size_t gaps = 0;  ///< runs beyond the first on each (line, surface)
+    std::size_t gaps = 0;           ///< runs beyond the first on each (line, surface)
     double read_seconds = 0.0;      ///< reading (and triangulating) the surfaces and the lines
     double sections_seconds = 0.0;  ///< cutting every section and writing every product
     std::vector<std::string> files;
