@@ -490,14 +490,15 @@ Tin refine_for_contours(const Tin& tin,
                         const std::vector<TriangleIndex>& selected,
                         unsigned subdivisions) {
     const Lattice lattice(subdivisions);
-    return Refiner(tin, interpolant, lattice).refine(selected);
+    return Refiner(interpolant.surface(tin), interpolant, lattice).refine(selected);
 }
 
-void contour_refined(const Tin& tin,
+void contour_refined(const Tin& given,
                      const TinInterpolant& interpolant,
                      const ContourOptions& options,
                      ContourSink& sink,
                      const Progress& progress) {
+    const Tin& tin = interpolant.surface(given);
     if (options.threads > 0) {
         tbb::task_arena arena(static_cast<int>(options.threads));
         arena.execute([&] { run(tin, interpolant, options, sink, progress); });

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <limits>
 
+#include "dtm/algo/cocircular_diagonals.hpp"
 #include "dtm/geom/predicates.hpp"
 
 namespace dtm {
@@ -43,7 +44,13 @@ TinInterpolant TinInterpolant::prepare(const Tin& tin,
     TinInterpolant out;
     out.method_ = method;
     if (method == Interpolation::cubic) {
-        out.gradients_ = estimate_gradients(tin, gradients, progress);
+        // Lattice data: the diagonals of cocircular ties by the heights (the surface TIN).
+        if (has_improvable_cocircular_edge(tin)) {
+            auto copy = std::make_shared<Tin>(tin);
+            choose_cocircular_diagonals(*copy);
+            out.surface_ = std::move(copy);
+        }
+        out.gradients_ = estimate_gradients(out.surface(tin), gradients, progress);
     } else if (method == Interpolation::natural) {
         out.barriers_ = natural_neighbour_barriers(tin);
     }
@@ -52,7 +59,9 @@ TinInterpolant TinInterpolant::prepare(const Tin& tin,
 }
 
 TinEvaluator::TinEvaluator(const Tin& tin, const TinInterpolant& interpolant)
-    : tin_(tin), interpolant_(interpolant), natural_(tin, interpolant.barriers()) {}
+    : tin_(interpolant.surface(tin)),
+      interpolant_(interpolant),
+      natural_(tin_, interpolant.barriers()) {}
 
 double TinEvaluator::value(TriangleIndex t, double x, double y) {
     const Triangle& tri = tin_.triangles[t];

@@ -494,7 +494,7 @@ void rasterize(const Tin& tin,
                          std::to_string(spec.rows) + " cells is too large");
     }
     // The interpolant is indexed by triangle, so it serves the renumbered copy as well.
-    const Tin local = detail::with_coherent_vertices(tin);
+    const Tin local = detail::with_coherent_vertices(interpolant.surface(tin));
     const Buckets buckets = make_buckets(local, spec, choose_band_rows(spec, options));
     progress.report(0.0, "rasterize");
     const auto run = [&] {

@@ -28,7 +28,8 @@ bool LinearSurface::height(double x, double y, double& z) const {
 }
 
 struct InterpolatedSurface::Impl {
-    Impl(const Tin& t, const TinInterpolant& i) : tin(t), interpolant(i), sampler(t) {}
+    Impl(const Tin& t, const TinInterpolant& i)
+        : tin(i.surface(t)), interpolant(i), sampler(i.surface(t)) {}
     const Tin& tin;
     const TinInterpolant& interpolant;
     SurfaceSampler sampler;

@@ -93,10 +93,23 @@ std::vector<Point3> run_points(const ProfileRun& run) {
     return pts;
 }
 
-void write_vectors(const fs::path& folder,
-                   const std::string& crs,
-                   const std::vector<std::string>& names,
-                   const std::vector<std::vector<Profile>>& sections) {
+/// Calls f(surface, line, run, points) for every run of every section, in file order.
+template <class F>
+void for_each_run(const std::vector<std::vector<Profile>>& sections, F&& f) {
+    for (std::size_t s = 0; s < sections.size(); ++s) {
+        for (std::size_t l = 0; l < sections[s].size(); ++l) {
+            const Profile& p = sections[s][l];
+            for (std::size_t r = 0; r < p.runs.size(); ++r) {
+                f(s, l, r, run_points(p.runs[r]));
+            }
+        }
+    }
+}
+
+void write_gpkg(const fs::path& folder,
+                const std::string& crs,
+                const std::vector<std::string>& names,
+                const std::vector<std::vector<Profile>>& sections) {
     io::VectorFile gpkg(folder / "profile.gpkg", crs);
     using T = io::VectorField::Type;
     const std::size_t layer = gpkg.add_layer("profiles", io::VectorGeometry::line_3d,
@@ -105,25 +118,28 @@ void write_vectors(const fs::path& folder,
                                               {"run", T::integer},
                                               {"chainage_from", T::real},
                                               {"chainage_to", T::real}});
+    for_each_run(
+        sections, [&](std::size_t s, std::size_t l, std::size_t r, const std::vector<Point3>& pts) {
+            const ProfileRun& run = sections[s][l].runs[r];
+            gpkg.add_line(layer, pts,
+                          {static_cast<long long>(l + 1), names[s], static_cast<long long>(r + 1),
+                           run.points.front().chainage, run.points.back().chainage});
+        });
+    gpkg.commit();
+}
+
+void write_dxf(const fs::path& folder,
+               const std::vector<std::string>& names,
+               const std::vector<std::vector<Profile>>& sections) {
     std::vector<io::DxfLayer> layers;
     for (std::size_t s = 0; s < names.size(); ++s) {
         layers.push_back({dxf_layer_name("PROFILE_" + names[s]), static_cast<int>(1 + s % 6)});
     }
     io::DxfWriter dxf(folder / "profile.dxf", layers);
-    for (std::size_t s = 0; s < names.size(); ++s) {
-        for (std::size_t l = 0; l < sections[s].size(); ++l) {
-            const Profile& p = sections[s][l];
-            for (std::size_t r = 0; r < p.runs.size(); ++r) {
-                const std::vector<Point3> pts = run_points(p.runs[r]);
-                gpkg.add_line(
-                    layer, pts,
-                    {static_cast<long long>(l + 1), names[s], static_cast<long long>(r + 1),
-                     p.runs[r].points.front().chainage, p.runs[r].points.back().chainage});
-                dxf.polyline(layers[s].name, pts, false);
-            }
-        }
-    }
-    gpkg.commit();
+    for_each_run(sections,
+                 [&](std::size_t s, std::size_t, std::size_t, const std::vector<Point3>& pts) {
+                     dxf.polyline(layers[s].name, pts, false);
+                 });
     dxf.finish();
 }
 
@@ -224,11 +240,12 @@ ProfileReport run_profile(const ProfileJob& job,
         }
     }
     report.lines = lines.size();
-    tbb::task_group writers;  // the CSV beside the GeoPackage and DXF
+    tbb::task_group writers;  // the three files at once
     writers.run([&] {
         write_csv(staging.staging() / "profile.csv", lines, report.surfaces, sections, report);
     });
-    writers.run_and_wait([&] { write_vectors(staging.staging(), crs, report.surfaces, sections); });
+    writers.run([&] { write_dxf(staging.staging(), report.surfaces, sections); });
+    writers.run_and_wait([&] { write_gpkg(staging.staging(), crs, report.surfaces, sections); });
     report.files.insert(report.files.end(), {"profile.csv", "profile.gpkg", "profile.dxf"});
     progress.report(0.8, "drawing the profiles");
     if (!job.plot_format.empty()) {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string_view>
@@ -47,15 +48,23 @@ public:
     [[nodiscard]] Interpolation method() const { return method_; }
     [[nodiscard]] const TinGradients& gradients() const { return gradients_; }
     [[nodiscard]] const std::vector<std::uint8_t>& barriers() const { return barriers_; }
+    /// The TIN the interpolant's triangles refer to, given the one it was prepared for: @p tin
+    /// itself, or for the cubic, where @p tin has cocircular vertices, a copy of @p tin with
+    /// data-dependent diagonals in the ties (choose_cocircular_diagonals: the same vertices and
+    /// constraints, still Delaunay). Surfaces, contours and samples of the cubic use this TIN.
+    [[nodiscard]] const Tin& surface(const Tin& tin) const { return surface_ ? *surface_ : tin; }
 
 private:
     Interpolation method_ = Interpolation::linear;
+    std::shared_ptr<const Tin> surface_;  ///< null: the TIN as given
     TinGradients gradients_;
     std::vector<std::uint8_t> barriers_;
 };
 
-/// Evaluates a prepared interpolant on @p tin (the TIN it was prepared for, or a copy with
-/// renumbered vertices). Keeps scratch space: use one per thread.
+/// Evaluates a prepared interpolant on interpolant.surface(@p tin), @p tin being the TIN it was
+/// prepared for or a copy with renumbered vertices: triangle indices given to value() and
+/// values() are those of that surface TIN (tin() returns it). Keeps scratch space: use one per
+/// thread.
 class TinEvaluator {
 public:
     TinEvaluator(const Tin& tin, const TinInterpolant& interpolant);

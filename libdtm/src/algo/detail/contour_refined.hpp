@@ -28,7 +28,8 @@ void contour_refined(const Tin& tin,
                      ContourSink& sink,
                      const Progress& progress);
 
-/// The refinement contour_refined() traces, of the triangles @p selected (ascending indices):
+/// The refinement contour_refined() traces, of the triangles @p selected (ascending indices of
+/// interpolant.surface(tin), the TIN the contours are traced on):
 /// each cut into 3 m^2 pieces whose corners carry the surface's heights; the TIN's vertices
 /// come first (unused ones included), neighbour links are complete inside the selection and
 /// no_triangle towards unselected triangles. Exposed for tests.
