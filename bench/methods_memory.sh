@@ -2,9 +2,9 @@
 # The memory figures of issue 11 (docs/performance.md, "Memory of the methods"): the lab's peak
 # resident-set rise per point of the eleven Delaunay and Voronoi methods at 10^5 and 10^6
 # uniform points, one thread. With a second dtm binary (e.g. main's) both are measured, and
-# the speed is compared by callgrind's instruction count of each method call on the same
-# 20 000 points (the load of the shared machine does not change it; times would). Memory does
-# not depend on the load either. Takes the bench lock.
+# the speed is compared by callgrind's instruction count of each method call, one thread, on
+# the same 20 000 points (the load of the shared machine does not change it; times would).
+# Memory does not depend on the load either. Takes the bench lock.
 # Usage: bench/methods_memory.sh [build-dir] [baseline-dtm] [output-dir]
 set -euo pipefail
 build=${1:-build}
@@ -32,7 +32,7 @@ if [[ -n "$baseline" ]]; then
             [[ $which == new ]] && bin=$build/tools/dtm
             nice -n 10 valgrind --tool=callgrind --callgrind-out-file=/dev/null \
                 --toggle-collect='dtm::methods::run_*' "$bin" methods run "$m" "$out/points.csv" \
-                -o "$out/callgrind.ply" -q 2>&1 > /dev/null |
+                -o "$out/callgrind.ply" -q --threads 1 2>&1 > /dev/null |
                 sed -n 's/.*Collected : \([0-9]*\).*/\1/p' > "$out/instructions-$which-$m"
         done
     done
