@@ -147,45 +147,6 @@ TEST(CliVolume, StockpileOnTiltedGroundIsThePyramid) {
     expect_rel(dtm::test::json_number(json, "volume", "fill"), 1600.0 * height / 3.0);
 }
 
-TEST(CliVolume, WithinAPolygonAndABaseInAnotherCrs) {
-    const dtm::test::ScratchDir dir;
-    const dtm::Tin pyramid = dtm::test::frustum_tin(site, height, 0.0, 300, 5);
-    // The base: the level z = 4 as a TIN given in UTM 33N.
-    dtm::Tin level = dtm::test::plane_tin(site, 4.0, 0.0, 0.0, 100, 6);
-    OGRSpatialReference from;
-    from.importFromEPSG(5514);
-    from.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
-    OGRSpatialReference to;
-    to.importFromEPSG(32633);
-    to.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
-    auto* transform = OGRCreateCoordinateTransformation(&from, &to);
-    for (dtm::Point3& p : level.vertices) {
-        transform->Transform(1, &p.x, &p.y);
-    }
-    OGRCoordinateTransformation::DestroyCT(transform);
-    // The inner square [10, 30]^2 as GeoJSON (in the top's CRS).
-    char polygon[600];
-    std::snprintf(polygon, sizeof polygon,
-                  "{\"type\":\"FeatureCollection\",\"crs\":{\"type\":\"name\",\"properties\":"
-                  "{\"name\":\"EPSG:5514\"}},\"features\":[{\"type\":\"Feature\",\"properties\":{},"
-                  "\"geometry\":{\"type\":\"Polygon\",\"coordinates\":[[[%.1f,%.1f],[%.1f,%.1f],"
-                  "[%.1f,%.1f],[%.1f,%.1f],[%.1f,%.1f]]]}}]}",
-                  site.x0 + 10, site.y0 + 10, site.x0 + 30, site.y0 + 10, site.x0 + 30,
-                  site.y0 + 30, site.x0 + 10, site.y0 + 30, site.x0 + 10, site.y0 + 10);
-    dtm::test::write_file(dir / "inner.geojson", polygon);
-    const auto r =
-        dtm::test::run_dtm({"volume", write_tin(dir, "pyramid.ply", pyramid).string(), "--base",
-                            write_tin(dir, "level.ply", level, 32633).string(), "--within",
-                            (dir / "inner.geojson").string(), "-o", (dir / "out").string(), "-q"});
-    ASSERT_EQ(r.exit_code, 0) << r.err;
-    EXPECT_NE(r.err.find("reprojected"), std::string::npos) << r.err;
-    const std::string json = dtm::test::read_file(dir / "out" / "volume.json");
-    // Inside [10, 30]^2 the pyramid rises from 4 on the square's edge to 8: a pyramid of 400 x 4
-    // / 3.
-    EXPECT_NEAR(dtm::test::json_number(json, "volume", "fill"), 400.0 * 4.0 / 3.0, 1e-6);
-    EXPECT_NEAR(dtm::test::json_number(json, "area", "overlap"), 400.0, 1e-6);
-}
-
 /// Two independent random surveys (2000 points and the corners each) of a plane, the second with
 /// a wave on it, as dtm TINs: their paths.
 std::vector<std::string> random_surveys(const dtm::test::ScratchDir& dir) {
@@ -235,6 +196,37 @@ fs::path square_polygon(const dtm::test::ScratchDir& dir, double lo, double hi) 
     const fs::path path = dir / "square.geojson";
     dtm::test::write_file(path, polygon);
     return path;
+}
+
+TEST(CliVolume, WithinAPolygonAndABaseInAnotherCrs) {
+    const dtm::test::ScratchDir dir;
+    const dtm::Tin pyramid = dtm::test::frustum_tin(site, height, 0.0, 300, 5);
+    // The base: the level z = 4 as a TIN given in UTM 33N.
+    dtm::Tin level = dtm::test::plane_tin(site, 4.0, 0.0, 0.0, 100, 6);
+    OGRSpatialReference from;
+    from.importFromEPSG(5514);
+    from.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+    OGRSpatialReference to;
+    to.importFromEPSG(32633);
+    to.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+    auto* transform = OGRCreateCoordinateTransformation(&from, &to);
+    for (dtm::Point3& p : level.vertices) {
+        transform->Transform(1, &p.x, &p.y);
+    }
+    OGRCoordinateTransformation::DestroyCT(transform);
+    // The inner square [10, 30]^2 as GeoJSON (in the top's CRS).
+    const fs::path inner = square_polygon(dir, 10.0, 30.0);
+    const auto r =
+        dtm::test::run_dtm({"volume", write_tin(dir, "pyramid.ply", pyramid).string(), "--base",
+                            write_tin(dir, "level.ply", level, 32633).string(), "--within",
+                            inner.string(), "-o", (dir / "out").string(), "-q"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.err.find("reprojected"), std::string::npos) << r.err;
+    const std::string json = dtm::test::read_file(dir / "out" / "volume.json");
+    // Inside [10, 30]^2 the pyramid rises from 4 on the square's edge to 8: a pyramid of 400 x 4
+    // / 3.
+    EXPECT_NEAR(dtm::test::json_number(json, "volume", "fill"), 400.0 * 4.0 / 3.0, 1e-6);
+    EXPECT_NEAR(dtm::test::json_number(json, "area", "overlap"), 400.0, 1e-6);
 }
 
 // Two independent surveys of the same ground clipped to a square: both TINs' edges cross the
