@@ -144,13 +144,17 @@ for cell in 16 8 4 2 1; do
     "$dtm" volume "$work/after.ply" --base "$work/before.ply" -o "$work/cell$cell" -q --cell "$cell"
     rasters+=("$work/cell$cell/difference.tif")
 done
-QT_QPA_PLATFORM=offscreen /usr/bin/python3 "$here/qgis_surface_volume.py" "${rasters[@]}" \
-    2>/dev/null | grep ' fill ' | while read -r path _ qfill _ qcut _ qseconds; do
-    cell=$(basename "$(dirname "$path")"); cell=${cell#cell}
-    python3 -c "
-f, c, qf, qc = $fill, $cut, $qfill, $qcut
-print(f'cell {$cell:>3} m: QGIS fill {qf:14.3f} ({(qf - f) / f:+.2e})  cut {qc:14.3f} ({(qc - c) / c:+.2e})  QGIS {$qseconds:.2f} s')"
-done
+qgis_table() {  # qgis_table FILL CUT LABEL RASTER...: QGIS's volumes against dtm's, per cell
+    local f=$1 c=$2 label=$3; shift 3
+    QT_QPA_PLATFORM=offscreen /usr/bin/python3 "$here/qgis_surface_volume.py" "$@" \
+        2>/dev/null | grep ' fill ' | while read -r path _ qfill _ qcut _ qseconds; do
+        cell=$(basename "$(dirname "$path")"); cell=${cell#cell}
+        python3 -c "
+f, c, qf, qc = $f, $c, $qfill, $qcut
+print(f'cell {$cell:>3} m$label: QGIS fill {qf:14.3f} ({(qf - f) / f:+.2e})  cut {qc:14.3f} ({(qc - c) / c:+.2e})  QGIS {$qseconds:.2f} s')"
+    done
+}
+qgis_table "$fill" "$cut" "" "${rasters[@]}"
 
 # The whole-site figures level off near 2e-4: along the site's edges each TIN has hull slivers
 # (a 2 km edge between two corner points and the interior point nearest to it) a few
@@ -179,13 +183,7 @@ for cell in 16 8 4 2 1; do
         "$work/cell$cell/inset.tif"
     insets+=("$work/cell$cell/inset.tif")
 done
-QT_QPA_PLATFORM=offscreen /usr/bin/python3 "$here/qgis_surface_volume.py" "${insets[@]}" \
-    2>/dev/null | grep ' fill ' | while read -r path _ qfill _ qcut _ qseconds; do
-    cell=$(basename "$(dirname "$path")"); cell=${cell#cell}
-    python3 -c "
-f, c, qf, qc = $ifill, $icut, $qfill, $qcut
-print(f'cell {$cell:>3} m, inner square: QGIS fill {qf:14.3f} ({(qf - f) / f:+.2e})  cut {qc:14.3f} ({(qc - c) / c:+.2e})')"
-done
+qgis_table "$ifill" "$icut" ", inner square" "${insets[@]}"
 
 echo "== QGIS native:meshexportcrosssection: the same 1000 lines on after.2dm, 1 m resolution"
 "$dtm" tin "$work/after.ply" -o "$work/after.2dm" -q
