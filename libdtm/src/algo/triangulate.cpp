@@ -7,8 +7,10 @@
 //   2. the Delaunay kernel: divide and conquer with alternating cuts on triangles with ghosts;
 //      its top levels run as parallel tiles and the merges that join them are the exact seam
 //      stitches (detail/delaunay_dc.cpp, detail/ghost_mesh.hpp);
-//   3. constraints inserted into the same triangles by cavity retriangulation, crossings split
-//      with interpolated heights (detail/constraint_batch.cpp, detail/mesh_edit.cpp,
+//   2a. (before 2) the segments split at their crossings, T-junctions and overlaps, the crossing
+//      vertices added with interpolated heights (detail/segment_split.cpp);
+//   3. constraints inserted into the same triangles by cavity retriangulation, in parallel by
+//      deterministic reservations (detail/constraint_batch.cpp, detail/mesh_edit.cpp,
 //      detail/mesh_edit_segment.cpp);
 //   4. the TIN: the triangle array itself, in place, in canonical order
 //   (detail/tin_build_triangles.cpp);
@@ -36,6 +38,7 @@
 #include "algo/detail/delaunay_dc.hpp"
 #include "algo/detail/input_merge.hpp"
 #include "algo/detail/mesh_edit.hpp"
+#include "algo/detail/segment_split.hpp"
 #include "algo/detail/tin_build.hpp"
 #include "dtm/algo/surface_sampler.hpp"
 #include "dtm/core/error.hpp"
@@ -71,11 +74,13 @@ std::size_t parallel_cutoff(std::size_t n, const TriangulateOptions& options) {
 }
 
 /// The kernel over the merged vertices (with @p with_soft, all of them; else those with known
-/// heights) with the segments among them inserted. With @p keep_heights, or when there are
-/// segments, the heights per kernel vertex are kept in Kernel::z.
+/// heights) with the segments among them inserted (@p segments_free: they touch at shared
+/// endpoints only). With @p keep_heights, or when there are segments, the heights per kernel
+/// vertex are kept in Kernel::z.
 Kernel build_kernel(const MergedInput& in,
                     bool with_soft,
                     bool keep_heights,
+                    bool segments_free,
                     const TriangulateOptions& options,
                     const Progress& progress) {
     Kernel k;
@@ -136,7 +141,8 @@ Kernel build_kernel(const MergedInput& in,
                       });
     if (!segments.empty()) {
         detail::MeshEditor editor(k.triangles, k.z, options.z_tolerance);
-        detail::insert_segments(editor, k.triangles, segments, progress.sub(0.7, 1.0));
+        detail::insert_segments(editor, k.triangles, segments, segments_free,
+                                progress.sub(0.7, 1.0));
         k.crossings = editor.crossings();
     }
     // Vertices added at crossings are numbered after the merged ones, in order.
@@ -151,9 +157,10 @@ Kernel build_kernel(const MergedInput& in,
 /// Heights of soft-breakline-only vertices, interpolated on the surface built without them (the
 /// kernel of the other vertices with their constraints, sampled as a Tin by SurfaceSampler).
 void interpolate_soft_heights(MergedInput& in,
+                              bool segments_free,
                               const TriangulateOptions& options,
                               const Progress& progress) {
-    Kernel k = build_kernel(in, false, true, options, progress);
+    Kernel k = build_kernel(in, false, true, segments_free, options, progress);
     std::vector<Point3> vertices = in.vertices;  // the soft-only ones are on no triangle
     const detail::BigArray<detail::KernelPoint>& kp = k.triangles.points;
     for (std::size_t v = k.kernel_count; v < kp.size(); ++v) {  // added at crossings, in order
@@ -196,10 +203,15 @@ TriangulateResult run(TerrainInput&& input,
     input = TerrainInput{};
     check_not_degenerate(merged);
     const double seconds_merge = seconds_since(start);
+    start = std::chrono::steady_clock::now();
+    const std::size_t distinct_count = merged.vertices.size();
+    const detail::SegmentSplit split = detail::split_segments(merged, options.z_tolerance);
+    const double seconds_split = seconds_since(start);
     bool has_soft = false;
     for (const bool known : merged.z_known) has_soft = has_soft || !known;
-    if (has_soft) interpolate_soft_heights(merged, options, progress.sub(0.0, 0.3));
-    Kernel k = build_kernel(merged, true, false, options, progress.sub(has_soft ? 0.3 : 0.0, 0.95));
+    if (has_soft) interpolate_soft_heights(merged, split.all_free, options, progress.sub(0.0, 0.3));
+    Kernel k = build_kernel(merged, true, false, split.all_free, options,
+                            progress.sub(has_soft ? 0.3 : 0.0, 0.95));
 
     start = std::chrono::steady_clock::now();
     std::vector<Point3> vertices = std::move(merged.vertices);
@@ -225,19 +237,22 @@ TriangulateResult run(TerrainInput&& input,
     result.stats.points_in = merged.points_in;
     result.stats.duplicates_merged = merged.merges.size();
     result.stats.intersections = 0;
-    for (const detail::Crossing& c : k.crossings) {
-        ++result.stats.intersections;
-        if (c.conflict) {
-            ++result.stats.conflicts;
-            result.conflicts.push_back({c.at, c.z_first, c.z_second});
+    const std::vector<detail::Crossing>* const lists[] = {&split.crossings, &k.crossings};
+    for (const auto* crossings : lists) {  // the pre-pass's, then any the insertion added
+        for (const detail::Crossing& c : *crossings) {
+            ++result.stats.intersections;
+            if (c.conflict) {
+                ++result.stats.conflicts;
+                result.conflicts.push_back({c.at, c.z_first, c.z_second});
+            }
         }
     }
     result.stats.seconds_triangulate = seconds_merge + k.seconds_triangulate;
-    result.stats.seconds_constrain = k.seconds_constrain + seconds_since(start);
+    result.stats.seconds_constrain = seconds_split + k.seconds_constrain + seconds_since(start);
     result.merges = std::move(merged.merges);
     result.input_to_vertex = std::move(merged.input_to_vertex);
     if (result.input_to_vertex.empty()) {  // nothing merged: the identity, made now that the
-        result.input_to_vertex.resize(merged_count);  // kernel's memory is released
+        result.input_to_vertex.resize(distinct_count);  // kernel's memory is released
         std::iota(result.input_to_vertex.begin(), result.input_to_vertex.end(), VertexIndex{0});
     }
     if (options.optimize != Criterion::delaunay) {

@@ -21,9 +21,9 @@
 // inserted one by one in priority order (the rounds' planning twice and reservations cost more
 // than a second thread wins there), with more threads by the rounds; the result is the same.
 // Which segments touch others is found on a uniform grid (counting sort by cell, the pairs of
-// every cell tested in parallel). Segments that cross, overlap or touch others
-// are inserted afterwards one by one in input order, which keeps the vertices added at
-// crossings numbered the same way for every tile and thread count.
+// every cell tested in parallel; segment_grid.hpp). After the pre-pass (segment_split.cpp) none
+// touch; any that still did would be inserted afterwards one by one in input order, which keeps
+// the vertices added at crossings numbered the same way for every tile and thread count.
 #include "algo/detail/constraint_batch.hpp"
 
 #include <tbb/blocked_range.h>
@@ -37,104 +37,23 @@
 #include <cmath>
 #include <memory>
 
+#include "algo/detail/segment_grid.hpp"
 #include "dtm/geom/predicates.hpp"
 
 namespace dtm::detail {
-namespace {
-
-bool between(const Point2& a, const Point2& b, const Point2& q) {
-    return std::min(a.x, b.x) <= q.x && q.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= q.y &&
-           q.y <= std::max(a.y, b.y);
-}
-
-/// Segments s and t (kernel vertex ids) meet anywhere but at one shared endpoint.
-bool touch(const GhostMesh& m, const InputSegment& s, const InputSegment& t) {
-    const VertexId shared =
-        s.a == t.a || s.a == t.b ? s.a : (s.b == t.a || s.b == t.b ? s.b : no_vertex);
-    if (shared != no_vertex) {
-        if ((s.a == t.a && s.b == t.b) || (s.a == t.b && s.b == t.a)) return true;
-        const VertexId x = s.a == shared ? s.b : s.a;
-        const VertexId y = t.a == shared ? t.b : t.a;
-        if (geom::orient2d(m.p(shared), m.p(x), m.p(y)) != 0) return false;
-        // Collinear: they overlap unless they leave the shared endpoint in opposite directions.
-        const Point2 &c = m.p(shared), &px = m.p(x), &py = m.p(y);
-        return ((px.x > c.x) == (py.x > c.x)) && ((px.x < c.x) == (py.x < c.x)) &&
-               ((px.y > c.y) == (py.y > c.y)) && ((px.y < c.y) == (py.y < c.y));
-    }
-    const Point2 &a = m.p(s.a), &b = m.p(s.b), &c = m.p(t.a), &d = m.p(t.b);
-    const int o1 = geom::orient2d(a, b, c);
-    const int o2 = geom::orient2d(a, b, d);
-    const int o3 = geom::orient2d(c, d, a);
-    const int o4 = geom::orient2d(c, d, b);
-    if (o1 * o2 < 0 && o3 * o4 < 0) return true;
-    return (o1 == 0 && between(a, b, c)) || (o2 == 0 && between(a, b, d)) ||
-           (o3 == 0 && between(c, d, a)) || (o4 == 0 && between(c, d, b));
-}
-
-}  // namespace
 
 std::vector<bool> find_free_segments(const GhostMesh& m,
                                      const std::vector<InputSegment>& segments) {
     const std::size_t count = segments.size();
     std::vector<bool> free(count, true);
     if (count < 2) return free;
-    // Uniform grid over the segments' extent, about one cell per segment; each segment is
-    // listed in every cell its bounding box covers, and pairs sharing a cell are tested.
-    // The segments' boxes first, in parallel (their endpoints are scattered over the mesh's
-    // points); everything after reads them in order.
-    std::vector<std::array<double, 4>> boxes(count);  // x min, x max, y min, y max
-    tbb::parallel_for(std::size_t{0}, count, [&](std::size_t i) {
-        const Point2 &a = m.p(segments[i].a), &b = m.p(segments[i].b);
-        boxes[i] = {std::min(a.x, b.x), std::max(a.x, b.x), std::min(a.y, b.y), std::max(a.y, b.y)};
-    });
-    Box2 box;
-    double total_length = 0.0;
-    for (const auto& [x0, x1, y0, y1] : boxes) {
-        box.add(x0, y0);
-        box.add(x1, y1);
-        total_length += (x1 - x0) + (y1 - y0);
-    }
-    const double extent = std::max(box.xmax - box.xmin, box.ymax - box.ymin);
-    // At most about one cell per segment (a segment's box meets few cells, and the counting sort
-    // below is not swamped by empty cells on large inputs).
-    const double per_segment =
-        std::sqrt((box.xmax - box.xmin) * (box.ymax - box.ymin) / static_cast<double>(count));
-    const double cell = std::max({total_length / static_cast<double>(count), per_segment,
-                                  extent / 4096.0, extent * 1e-12, 1e-300});
-    const auto cols = static_cast<std::size_t>((box.xmax - box.xmin) / cell) + 1;
-    const auto rows = static_cast<std::size_t>((box.ymax - box.ymin) / cell) + 1;
-    const auto cell_of = [&](double v, double lo, std::size_t n) {
-        return std::min(static_cast<std::size_t>((v - lo) / cell), n - 1);
-    };
-    // Bucket the segments by cell (counting sort: cell-major lists), then test the pairs of every
-    // cell in parallel; a flag only ever goes from free to not free, so the order of the writes
-    // does not matter.
-    const auto cell_range = [&](std::size_t i) {
-        const auto& [x0, x1, y0, y1] = boxes[i];
-        return std::array<std::size_t, 4>{cell_of(x0, box.xmin, cols), cell_of(x1, box.xmin, cols),
-                                          cell_of(y0, box.ymin, rows), cell_of(y1, box.ymin, rows)};
-    };
-    const std::size_t cells = cols * rows;
-    std::vector<std::uint32_t> start(cells + 1, 0);
-    for (std::size_t i = 0; i < count; ++i) {
-        const auto [c0, c1, r0, r1] = cell_range(i);
-        for (std::size_t r = r0; r <= r1; ++r) {
-            for (std::size_t c = c0; c <= c1; ++c) ++start[r * cols + c + 1];
-        }
-    }
-    for (std::size_t c = 0; c < cells; ++c) start[c + 1] += start[c];
-    std::vector<std::uint32_t> listed(start[cells]);
-    {
-        std::vector<std::uint32_t> at(start.begin(), start.end() - 1);
-        for (std::size_t i = 0; i < count; ++i) {
-            const auto [c0, c1, r0, r1] = cell_range(i);
-            for (std::size_t r = r0; r <= r1; ++r) {
-                for (std::size_t c = c0; c <= c1; ++c) {
-                    listed[at[r * cols + c]++] = static_cast<std::uint32_t>(i);
-                }
-            }
-        }
-    }
+    const auto point = [&m](VertexIndex v) { return m.p(v); };
+    const SegmentGrid grid = segment_grid(segments, point);
+    const std::size_t cells = grid.cells();
+    const std::vector<std::uint32_t>& start = grid.start;
+    const std::vector<std::uint32_t>& listed = grid.listed;
+    // The pairs of every cell are tested in parallel; a flag only ever goes from free to not
+    // free, so the order of the writes does not matter.
     std::vector<std::uint8_t> busy(count, 0);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, cells, 1024), [&](const auto& range) {
         for (std::size_t c = range.begin(); c < range.end(); ++c) {
@@ -146,7 +65,7 @@ std::vector<bool> find_free_segments(const GhostMesh& m,
                     std::atomic_ref<std::uint8_t> busy_b(busy[b]);
                     if ((busy_a.load(std::memory_order_relaxed) == 0 ||
                          busy_b.load(std::memory_order_relaxed) == 0) &&
-                        touch(m, segments[a], segments[b])) {
+                        segments_touch(point, segments[a], segments[b])) {
                         busy_a.store(1, std::memory_order_relaxed);
                         busy_b.store(1, std::memory_order_relaxed);
                     }
@@ -238,8 +157,10 @@ std::size_t mark_existing_edges(MeshEditor& editor,
 void insert_segments(MeshEditor& editor,
                      const GhostMesh& mesh,
                      const std::vector<InputSegment>& segments,
+                     bool all_free,
                      const Progress& progress) {
-    const std::vector<bool> free = find_free_segments(mesh, segments);
+    const std::vector<bool> free =
+        all_free ? std::vector<bool>(segments.size(), true) : find_free_segments(mesh, segments);
     std::vector<std::uint32_t> pending;
     std::vector<std::uint32_t> later;
     for (std::size_t i = 0; i < segments.size(); ++i) {

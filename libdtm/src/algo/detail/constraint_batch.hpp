@@ -19,11 +19,13 @@ namespace dtm::detail {
 
 /// Inserts @p segments (kernel vertex ids). Free segments go first, by deterministic
 /// reservations (rounds of plan -> reserve vertices by priority -> apply the winners in
-/// parallel), which gives exactly the result of inserting them one by one in input order; the
-/// others (crossings, overlaps) follow one by one in input order.
+/// parallel), which gives exactly the result of inserting them one by one in priority order; the
+/// others (crossings, overlaps: none after split_segments) follow one by one in input order.
+/// @p all_free: the caller knows every segment is free (split_segments found none touching).
 void insert_segments(MeshEditor& editor,
                      const GhostMesh& mesh,
                      const std::vector<InputSegment>& segments,
+                     bool all_free,
                      const Progress& progress);
 
 }  // namespace dtm::detail
