@@ -41,7 +41,8 @@ std::string first_touching_pair(const MergedInput& in) {
                 if (strictly_inside(v[s.a], v[s.b], v[e])) return name + " T-junction";
             for (const VertexIndex e : {s.a, s.b})
                 if (strictly_inside(v[t.a], v[t.b], v[e])) return name + " T-junction";
-            if (ends.size() == 4 && orient2d(v[s.a], v[s.b], v[t.a]) * orient2d(v[s.a], v[s.b], v[t.b]) < 0 &&
+            if (ends.size() == 4 &&
+                orient2d(v[s.a], v[s.b], v[t.a]) * orient2d(v[s.a], v[s.b], v[t.b]) < 0 &&
                 orient2d(v[t.a], v[t.b], v[s.a]) * orient2d(v[t.a], v[t.b], v[s.b]) < 0) {
                 return name + " crossing";
             }
@@ -107,8 +108,9 @@ TEST(SplitSegments, RandomCrossingLinesEndFreeCoveredAndCountedAtSjtskMagnitudes
             for (std::size_t j = i + 1; j < original.segments.size(); ++j) {
                 const auto &s = original.segments[i], &t = original.segments[j];
                 const auto& v = original.vertices;
-                crossing_pairs += orient2d(v[s.a], v[s.b], v[t.a]) * orient2d(v[s.a], v[s.b], v[t.b]) < 0 &&
-                                  orient2d(v[t.a], v[t.b], v[s.a]) * orient2d(v[t.a], v[t.b], v[s.b]) < 0;
+                crossing_pairs +=
+                    orient2d(v[s.a], v[s.b], v[t.a]) * orient2d(v[s.a], v[s.b], v[t.b]) < 0 &&
+                    orient2d(v[t.a], v[t.b], v[s.a]) * orient2d(v[t.a], v[t.b], v[s.b]) < 0;
             }
         }
         const SegmentSplit split = split_segments(in, 0.001);
@@ -151,17 +153,19 @@ TEST(SplitSegments, TheResultDoesNotDependOnTheThreadCount) {
 
 TEST(SplitSegments, TJunctionsAndOverlapsSplitWithoutNewVerticesAndEqualPiecesMerge) {
     // 0-1 along y = 0 from 0 to 10; 2 (at 4, 0) starts a line up; 3-4 overlaps 0-1 from 6 to 14.
-    MergedInput in = input_of({{0, 0, 0}, {10, 0, 10}, {4, 0, 4}, {4, 5, 4}, {6, 0, 6}, {14, 0, 14}},
-                              {{0, 1, constraint_breakline},
-                               {2, 3, constraint_breakline},
-                               {4, 5, constraint_boundary},
-                               {1, 0, constraint_hole}});  // equal to the first
+    MergedInput in =
+        input_of({{0, 0, 0}, {10, 0, 10}, {4, 0, 4}, {4, 5, 4}, {6, 0, 6}, {14, 0, 14}},
+                 {{0, 1, constraint_breakline},
+                  {2, 3, constraint_breakline},
+                  {4, 5, constraint_boundary},
+                  {1, 0, constraint_hole}});  // equal to the first
     const SegmentSplit split = split_segments(in, 0.001);
     EXPECT_TRUE(split.all_free);
     EXPECT_TRUE(split.crossings.empty());
     EXPECT_EQ(in.vertices.size(), 6u);
     std::map<std::pair<VertexIndex, VertexIndex>, std::uint8_t> got;
-    for (const InputSegment& s : in.segments) got[{std::min(s.a, s.b), std::max(s.a, s.b)}] = s.bits;
+    for (const InputSegment& s : in.segments)
+        got[{std::min(s.a, s.b), std::max(s.a, s.b)}] = s.bits;
     const std::uint8_t line_hole = constraint_breakline | constraint_hole;
     const std::map<std::pair<VertexIndex, VertexIndex>, std::uint8_t> want{
         {{0, 2}, line_hole},
@@ -174,8 +178,15 @@ TEST(SplitSegments, TJunctionsAndOverlapsSplitWithoutNewVerticesAndEqualPiecesMe
 
 TEST(SplitSegments, LinesThroughOnePointMeetAtOneVertexAndAnExistingPointIsUsed) {
     // Three lines through (5, 5); a survey point 6 sits where two others cross, at (2, 8).
-    MergedInput in = input_of({{0, 0, 1}, {10, 10, 1}, {0, 10, 3}, {10, 0, 3}, {5, 0, 9},
-                               {5, 10, 9}, {2, 8, 7}, {0, 8, 1}, {4, 8, 1}},
+    MergedInput in = input_of({{0, 0, 1},
+                               {10, 10, 1},
+                               {0, 10, 3},
+                               {10, 0, 3},
+                               {5, 0, 9},
+                               {5, 10, 9},
+                               {2, 8, 7},
+                               {0, 8, 1},
+                               {4, 8, 1}},
                               {{0, 1, constraint_breakline},
                                {2, 3, constraint_breakline},
                                {4, 5, constraint_breakline},
@@ -197,8 +208,14 @@ TEST(SplitSegments, LinesThroughOnePointMeetAtOneVertexAndAnExistingPointIsUsed)
 
 TEST(SplitSegments, SoftLinesTakeTheHardLinesHeightsAndTwoSoftLinesLeaveItToTheSurface) {
     // Hard 0-1 (z 0 to 10) crossed by soft 2-3; soft 4-5 crosses soft 2-3; soft vertex 6 is on 0-1.
-    MergedInput in = input_of({{0, 0, 0}, {10, 0, 10}, {2, -5, 0}, {2, 5, 0}, {0, 3, 0},
-                               {4, 3, 0}, {7, 0, 0}, {7, -4, 0}},
+    MergedInput in = input_of({{0, 0, 0},
+                               {10, 0, 10},
+                               {2, -5, 0},
+                               {2, 5, 0},
+                               {0, 3, 0},
+                               {4, 3, 0},
+                               {7, 0, 0},
+                               {7, -4, 0}},
                               {{0, 1, constraint_breakline},
                                {2, 3, constraint_soft},
                                {4, 5, constraint_soft},

@@ -56,7 +56,9 @@ bool segments_touch(const PointOf& point, const InputSegment& s, const InputSegm
 struct SegmentGrid {
     std::vector<std::uint32_t> start;
     std::vector<std::uint32_t> listed;
-    [[nodiscard]] std::size_t cells() const noexcept { return start.empty() ? 0 : start.size() - 1; }
+    [[nodiscard]] std::size_t cells() const noexcept {
+        return start.empty() ? 0 : start.size() - 1;
+    }
 };
 
 /// A uniform grid over the segments' extent, about one cell per segment; each segment is listed in
@@ -85,8 +87,8 @@ SegmentGrid segment_grid(const std::vector<InputSegment>& segments, const PointO
     const double per_segment = std::sqrt((box.xmax - box.xmin) * (box.ymax - box.ymin) /
                                          static_cast<double>(std::max<std::size_t>(count, 1)));
     const double cell =
-        std::max({total_length / static_cast<double>(std::max<std::size_t>(count, 1)),
-                  per_segment, extent / 4096.0, extent * 1e-12, 1e-300});
+        std::max({total_length / static_cast<double>(std::max<std::size_t>(count, 1)), per_segment,
+                  extent / 4096.0, extent * 1e-12, 1e-300});
     const auto cols = static_cast<std::size_t>((box.xmax - box.xmin) / cell) + 1;
     const auto rows = static_cast<std::size_t>((box.ymax - box.ymin) / cell) + 1;
     const auto cell_of = [&](double v, double lo, std::size_t n) {

@@ -73,7 +73,8 @@ struct Along {
     bool ascending_x;
     bool ascending_y;
     Along(const Point3& a, const Point3& b)
-        : by_x(std::abs(b.x - a.x) >= std::abs(b.y - a.y)), ascending_x(b.x >= a.x),
+        : by_x(std::abs(b.x - a.x) >= std::abs(b.y - a.y)),
+          ascending_x(b.x >= a.x),
           ascending_y(b.y >= a.y) {}
     [[nodiscard]] bool before(const Point3& p, const Point3& q) const {
         const auto x_less = [&] { return ascending_x ? p.x < q.x : p.x > q.x; };
@@ -99,7 +100,7 @@ struct Candidate {
 /// One round's work: the splits per segment, the crossings and the new vertices.
 struct Round {
     std::vector<std::pair<std::uint32_t, VertexIndex>> splits;  ///< (segment, vertex), in order
-    std::vector<Candidate> candidates;  ///< split vertices >= first_candidate refer to these
+    std::vector<Candidate> candidates;    ///< split vertices >= first_candidate refer to these
     std::vector<std::uint32_t> equal_to;  ///< per segment: itself, or the first segment equal to it
     VertexIndex first_candidate = 0;
 };
@@ -143,8 +144,8 @@ void add_crossing(const MergedInput& in,
 }
 
 /// The handling of one touching pair (see the file comment).
-void handle_pair(const MergedInput& in, Pair pair, double z_tolerance, Round& round,
-                 SegmentSplit& out) {
+void handle_pair(
+    const MergedInput& in, Pair pair, double z_tolerance, Round& round, SegmentSplit& out) {
     const auto [i, j] = pair;
     const InputSegment& s = in.segments[i];
     const InputSegment& t = in.segments[j];
@@ -193,25 +194,24 @@ std::vector<VertexIndex> place_candidates(MergedInput& in, const Round& round) {
     // Existing vertices at a candidate's position (vertices are distinct: one at most each).
     Box2 box;
     for (const Candidate& c : round.candidates) box.add(c.at.x, c.at.y);
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, in.vertices.size(), 1 << 14),
-                      [&](const auto& r) {
-                          for (std::size_t v = r.begin(); v < r.end(); ++v) {
-                              const Point3& p = in.vertices[v];
-                              if (p.x < box.xmin || p.x > box.xmax || p.y < box.ymin ||
-                                  p.y > box.ymax) {
-                                  continue;
-                              }
-                              const auto it = std::lower_bound(
-                                  order.begin(), order.end(), p, [&](std::uint32_t c, const Point3& q) {
-                                      const Point3& a = round.candidates[c].at;
-                                      return a.x != q.x ? a.x < q.x : a.y < q.y;
-                                  });
-                              if (it != order.end() && round.candidates[*it].at.x == p.x &&
-                                  round.candidates[*it].at.y == p.y) {
-                                  is[first_at[*it]] = static_cast<VertexIndex>(v);
-                              }
-                          }
-                      });
+    tbb::parallel_for(
+        tbb::blocked_range<std::size_t>(0, in.vertices.size(), 1 << 14), [&](const auto& r) {
+            for (std::size_t v = r.begin(); v < r.end(); ++v) {
+                const Point3& p = in.vertices[v];
+                if (p.x < box.xmin || p.x > box.xmax || p.y < box.ymin || p.y > box.ymax) {
+                    continue;
+                }
+                const auto it = std::lower_bound(order.begin(), order.end(), p,
+                                                 [&](std::uint32_t c, const Point3& q) {
+                                                     const Point3& a = round.candidates[c].at;
+                                                     return a.x != q.x ? a.x < q.x : a.y < q.y;
+                                                 });
+                if (it != order.end() && round.candidates[*it].at.x == p.x &&
+                    round.candidates[*it].at.y == p.y) {
+                    is[first_at[*it]] = static_cast<VertexIndex>(v);
+                }
+            }
+        });
     for (std::uint32_t k = 0; k < count; ++k) {  // in pair order: new vertices numbered so
         if (first_at[k] != k) continue;
         if (is[k] != none) continue;
