@@ -206,6 +206,23 @@ TEST(SplitSegments, LinesThroughOnePointMeetAtOneVertexAndAnExistingPointIsUsed)
     EXPECT_EQ(first_touching_pair(in), "");
 }
 
+TEST(SplitSegments, ACrossingAtASliverOfAnAngleGetsAFiniteVertexNextToBothLines) {
+    // The two direction vectors' cross product rounds to 0, but the exact predicates say the
+    // segments cross: the intersection formula divides by zero.
+    MergedInput in =
+        input_of({{-0.25, -0.25, 1}, {0.75, 0.7499999999999999, 1}, {0, 0, 3}, {1 + 0x1p-52, 1, 3}},
+                 {{0, 1, constraint_breakline}, {2, 3, constraint_breakline}});
+    const SegmentSplit split = split_segments(in, 0.001);
+    EXPECT_TRUE(split.all_free);
+    ASSERT_EQ(split.crossings.size(), 1u);
+    EXPECT_EQ(first_touching_pair(in), "");
+    for (const Point3& v : in.vertices) {
+        EXPECT_TRUE(std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z));
+    }
+    EXPECT_TRUE(chain_covers(in, 0, 1, 1e-12));
+    EXPECT_TRUE(chain_covers(in, 2, 3, 1e-12));
+}
+
 TEST(SplitSegments, SoftLinesTakeTheHardLinesHeightsAndTwoSoftLinesLeaveItToTheSurface) {
     // Hard 0-1 (z 0 to 10) crossed by soft 2-3; soft 4-5 crosses soft 2-3; soft vertex 6 is on 0-1.
     MergedInput in = input_of({{0, 0, 0},

@@ -119,8 +119,21 @@ void add_crossing(const MergedInput& in,
     const double px = pp.x - pu.x, py = pp.y - pu.y;
     const double rx = pr.x - pp.x, ry = pr.y - pp.y;
     const double denom = wx * ry - wy * rx;
-    const double along_t = std::clamp((px * ry - py * rx) / denom, 0.0, 1.0);
-    const double along_s = std::clamp((px * wy - py * wx) / denom, 0.0, 1.0);
+    double along_t = (px * ry - py * rx) / denom;
+    double along_s = (px * wy - py * wx) / denom;
+    if (!std::isfinite(along_t) || !std::isfinite(along_s)) {
+        // Parallel in floating point, crossing by the exact predicates (a sliver of an angle):
+        // where the side distances of each one's ends from the other's line change sign.
+        const auto side = [](const Point3& a, const Point3& b, const Point3& q) {
+            return (b.x - a.x) * (q.y - a.y) - (b.y - a.y) * (q.x - a.x);
+        };
+        const double du = side(pp, pr, pu), dw = side(pp, pr, pw);
+        const double dp = side(pu, pw, pp), dr = side(pu, pw, pr);
+        along_t = du != dw ? du / (du - dw) : 0.5;
+        along_s = dp != dr ? dp / (dp - dr) : 0.5;
+    }
+    along_t = std::clamp(along_t, 0.0, 1.0);
+    along_s = std::clamp(along_s, 0.0, 1.0);
     const Point2 at{pu.x + along_t * wx, pu.y + along_t * wy};
     const double z_later = pu.z + along_t * (pw.z - pu.z);
     const double z_earlier = pp.z + along_s * (pr.z - pp.z);
