@@ -26,6 +26,11 @@ bool in_box(const P& a, const P& b, const Q& q) {
            q.y <= std::max(a.y, b.y);
 }
 
+/// s and t join the same two vertices (in either direction).
+inline bool same_segment(const InputSegment& s, const InputSegment& t) {
+    return (s.a == t.a && s.b == t.b) || (s.a == t.b && s.b == t.a);
+}
+
 /// Segments s and t meet anywhere but at one shared endpoint: they cross, overlap, are equal, or
 /// an endpoint of one lies inside the other (a T-junction). Exact predicates only.
 template <class PointOf>
@@ -33,7 +38,7 @@ bool segments_touch(const PointOf& point, const InputSegment& s, const InputSegm
     const VertexIndex shared =
         s.a == t.a || s.a == t.b ? s.a : (s.b == t.a || s.b == t.b ? s.b : ~VertexIndex{0});
     if (shared != ~VertexIndex{0}) {
-        if ((s.a == t.a && s.b == t.b) || (s.a == t.b && s.b == t.a)) return true;
+        if (same_segment(s, t)) return true;
         const VertexIndex x = s.a == shared ? s.b : s.a;
         const VertexIndex y = t.a == shared ? t.b : t.a;
         const auto &c = point(shared), &px = point(x), &py = point(y);

@@ -86,8 +86,7 @@ struct Along {
 
 /// Height of segment a-b at a point q on (or next to) it, linear along its dominant axis.
 double height_along(const Point3& a, const Point3& b, const Point3& q) {
-    const bool by_x = std::abs(b.x - a.x) >= std::abs(b.y - a.y);
-    const double t = by_x ? (q.x - a.x) / (b.x - a.x) : (q.y - a.y) / (b.y - a.y);
+    const double t = Along(a, b).by_x ? (q.x - a.x) / (b.x - a.x) : (q.y - a.y) / (b.y - a.y);
     return a.z + std::clamp(t, 0.0, 1.0) * (b.z - a.z);
 }
 
@@ -280,15 +279,13 @@ SegmentSplit split_segments(MergedInput& in, double z_tolerance) {
     for (int r = 0; r < max_rounds; ++r) {
         const std::vector<Pair> pairs = touching_pairs(in);
         if (pairs.empty()) return out;
-        ++out.rounds;
         Round round;
         round.first_candidate = static_cast<VertexIndex>(in.vertices.size());
         round.equal_to.resize(in.segments.size());
         for (std::uint32_t i = 0; i < in.segments.size(); ++i) round.equal_to[i] = i;
         // Equal segments first: a pair with a segment equal to an earlier one is that one's.
         for (const auto& [i, j] : pairs) {
-            const InputSegment &s = in.segments[i], &t = in.segments[j];
-            if ((s.a == t.a && s.b == t.b) || (s.a == t.b && s.b == t.a)) {
+            if (same_segment(in.segments[i], in.segments[j])) {
                 round.equal_to[j] = std::min(round.equal_to[j], round.equal_to[i]);
             }
         }

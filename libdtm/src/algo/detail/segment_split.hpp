@@ -5,7 +5,6 @@
 /// one another at shared endpoints only.
 #pragma once
 
-#include <cstddef>
 #include <vector>
 
 #include "algo/detail/input_merge.hpp"
@@ -15,7 +14,6 @@ namespace dtm::detail {
 
 struct SegmentSplit {
     std::vector<Crossing> crossings;  ///< one per crossing pair, in pair order
-    std::size_t rounds = 0;           ///< rounds that found touching segments
     /// No two segments touch except at shared endpoints (false only when the rounds ran out; the
     /// insertion then handles the rest one by one).
     bool all_free = true;
