@@ -23,7 +23,7 @@ mode="${1:-all}"
 run_fuzzers() {
     local build="$build_root/build-fuzz"
     cmake -S "$repo" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-        -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DDTM_FUZZ=ON \
+        -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DDTM_FUZZ=ON -DDTM_WITH_MPI=OFF \
         -DDTM_BUILD_TESTS=OFF -DDTM_BUILD_BENCH=OFF -DDTM_BUILD_SAMPLES=OFF >/dev/null || return 1
     cmake --build "$build" --target dtm_fuzzers -j "$jobs" || return 1
     local status=0
@@ -84,7 +84,7 @@ run_sanitized_tests() {
     # step of CI) compiles much faster than with -O2 -g.
     cmake -S "$repo" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDTM_SANITIZE=ON \
         -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
-        -DDTM_BUILD_BENCH=OFF -DDTM_BUILD_SAMPLES=OFF >/dev/null || return 1
+        -DDTM_BUILD_BENCH=OFF -DDTM_BUILD_SAMPLES=OFF -DDTM_WITH_MPI=OFF >/dev/null || return 1
     cmake --build "$build" -j "$jobs" || return 1
     ASAN_OPTIONS=detect_leaks=1 LSAN_OPTIONS="suppressions=$repo/tests/support/lsan.supp:print_suppressions=0" UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
         ctest --test-dir "$build" --output-on-failure -j "$jobs" -LE "slow|crash"

@@ -13,6 +13,8 @@ packages=(
     python3-scipy strace python3-qgis clang-format
     # test-only oracles (volumes): numpy statistics, QGIS processing algorithms (headless)
     python3-numpy qgis-providers
+    # the distributed run's MPI backend (ADR 0008)
+    libopenmpi-dev openmpi-bin
 )
 
 missing=()

@@ -109,20 +109,6 @@ Representatives find_representatives(const std::vector<Point3>& pts, double snap
     return rep;
 }
 
-double rule_z(DuplicateRule rule, double current, double z, std::size_t count) {
-    switch (rule) {
-        case DuplicateRule::first:
-            return current;
-        case DuplicateRule::mean:
-            return current + (z - current) / static_cast<double>(count);
-        case DuplicateRule::min:
-            return std::min(current, z);
-        case DuplicateRule::max:
-            return std::max(current, z);
-    }
-    return current;
-}
-
 /// Fills out.vertices, z_known, input_to_vertex and merges when some points merge.
 void merge_duplicates(const Combined& c,
                       const Representatives& rep,
@@ -147,8 +133,8 @@ void merge_duplicates(const Combined& c,
         if (c.z_known[i]) {
             Point3& kept = out.vertices[v];
             ++z_count[v];
-            kept.z =
-                out.z_known[v] ? rule_z(rule, kept.z, c.points[i].z, z_count[v]) : c.points[i].z;
+            kept.z = out.z_known[v] ? duplicate_rule_z(rule, kept.z, c.points[i].z, z_count[v])
+                                    : c.points[i].z;
             out.z_known[v] = true;
         }
     }

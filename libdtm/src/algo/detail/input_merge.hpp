@@ -4,6 +4,8 @@
 /// snap merging with the z rule, every merge recorded.
 #pragma once
 
+#include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -31,6 +33,22 @@ struct MergedInput {
         return input_to_vertex.empty() ? static_cast<VertexIndex>(i) : input_to_vertex[i];
     }
 };
+
+/// The kept vertex's z after one more duplicate with height @p z, its @p count -th height (the
+/// heights fold in input order; the distributed merge folds them in the same order).
+inline double duplicate_rule_z(DuplicateRule rule, double current, double z, std::size_t count) {
+    switch (rule) {
+        case DuplicateRule::first:
+            return current;
+        case DuplicateRule::mean:
+            return current + (z - current) / static_cast<double>(count);
+        case DuplicateRule::min:
+            return std::min(current, z);
+        case DuplicateRule::max:
+            return std::max(current, z);
+    }
+    return current;
+}
 
 /// @throws InputError on non-finite coordinates or an open boundary/hole ring.
 [[nodiscard]] MergedInput merge_input(const TerrainInput& input, const TriangulateOptions& options);

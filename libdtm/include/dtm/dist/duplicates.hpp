@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: MIT
+/// @file
+/// @brief Exact duplicates merged across ranks (R-D3 of docs/distributed.md), as the serial
+/// merge does: the first occurrence in input order is kept, its z follows the DuplicateRule over
+/// the group's heights in input order, every merge is reported.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "dtm/algo/triangulate.hpp"
+#include "dtm/core/point.hpp"
+#include "dtm/dist/comm.hpp"
+
+namespace dtm::dist {
+
+/// A combined input point (survey points, then breakline vertices, as the serial merge orders
+/// them); z_known is false for vertices that only soft breaklines give.
+struct InputPoint {
+    Point3 p;
+    bool z_known = true;
+};
+
+/// A kept vertex with its global vertex number.
+struct Vertex {
+    Point3 p;
+    std::uint64_t id = 0;
+    bool z_known = true;
+};
+
+/// This rank's part of the merge: rank r holds the global input indices [first_input,
+/// first_input + local count), ranks in input order.
+struct MergedShare {
+    std::uint64_t first_input = 0;
+    std::uint64_t total_inputs = 0;
+    std::uint64_t first_vertex = 0;  ///< global number of this rank's first kept vertex
+    std::uint64_t total_vertices = 0;
+    std::vector<Vertex> vertices;  ///< the kept vertices first seen on this rank, input order
+    std::vector<std::uint64_t> vertex_of_input;  ///< per local input point, its vertex number
+    std::vector<DuplicateMerge> merges;          ///< merged local input points, input order
+};
+
+/// Collective: every point goes to the rank of a hash of its exact coordinates (-0 as 0), which
+/// groups its duplicates, keeps the smallest input index, folds the heights in input order and
+/// answers the owners of the inputs; kept vertices are numbered by an exclusive scan. Equal to
+/// the serial merge (no snapping) for every rank count.
+MergedShare merge_exact_duplicates(Comm& comm,
+                                   std::span<const InputPoint> local,
+                                   DuplicateRule rule);
+
+}  // namespace dtm::dist

@@ -1,0 +1,173 @@
+// SPDX-License-Identifier: MIT
+//
+// Exact duplicates across ranks, with the serial merge's rules (algo/detail/input_merge.cpp):
+//   1. every input point goes to rank hash(x, y) mod P with its global input index: all points
+//      of one position meet on one rank;
+//   2. there each group is ordered by input index; the first is kept, the heights fold in input
+//      order (duplicate_rule_z), and every member's owner learns its representative and the
+//      kept value;
+//   3. owners number their kept vertices (exclusive scan of the counts, input order);
+//   4. the numbers of kept vertices with duplicates go back to the group's rank, which forwards
+//      them to the owners of the other members.
+// Four alltoallv and two scans; no step depends on the rank count except where data travels.
+//
+// Reference: the hash partitioning of distributed duplicate elimination, e.g. P. Sanders et
+// al., "Sequential and Parallel Algorithms and Data Structures", Springer 2019, ch. 4.
+#include "dtm/dist/duplicates.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cstring>
+#include <unordered_map>
+
+#include "algo/detail/input_merge.hpp"
+
+namespace dtm::dist {
+namespace {
+
+struct Record {  ///< an input point on its way to its group's rank
+    double x, y, z;
+    std::uint64_t index;
+    std::uint32_t z_known;
+    std::uint32_t origin;  ///< the rank that holds the input
+};
+
+struct Answer {  ///< a group's answer to the owner of one member
+    std::uint64_t index;
+    std::uint64_t representative;  ///< input index of the kept point (index itself when kept)
+    double x, y, z;                ///< the kept vertex: the first's position, the final z
+    std::uint32_t z_known;
+    std::uint32_t has_duplicates;
+};
+
+struct Number {  ///< a kept vertex's number for a member input
+    std::uint64_t index;
+    std::uint64_t vertex;
+};
+
+std::uint64_t position_hash(double x, double y) noexcept {
+    // -0.0 and 0.0 are the same position.
+    const std::uint64_t a = std::bit_cast<std::uint64_t>(x == 0.0 ? 0.0 : x);
+    const std::uint64_t b = std::bit_cast<std::uint64_t>(y == 0.0 ? 0.0 : y);
+    std::uint64_t h = a * 0x9E3779B97F4A7C15ULL ^ (b + 0x632BE59BD9B4E019ULL + (a << 6) + (a >> 2));
+    h ^= h >> 31;
+    h *= 0xBF58476D1CE4E5B9ULL;
+    return h ^ (h >> 29);
+}
+
+template <class T>
+void push(Bytes& out, const T& value) {
+    const auto* p = reinterpret_cast<const std::byte*>(&value);
+    out.insert(out.end(), p, p + sizeof(T));
+}
+
+template <class T>
+std::vector<T> all_of(const std::vector<Bytes>& in) {
+    std::vector<T> out;
+    for (const Bytes& b : in) {
+        const auto part = from_bytes<T>(b);
+        out.insert(out.end(), part.begin(), part.end());
+    }
+    return out;
+}
+
+bool same_position(const Record& a, const Record& b) noexcept { return a.x == b.x && a.y == b.y; }
+
+}  // namespace
+
+MergedShare merge_exact_duplicates(Comm& comm,
+                                   std::span<const InputPoint> local,
+                                   DuplicateRule rule) {
+    comm.set_phase("duplicates");
+    const auto ranks = static_cast<std::size_t>(comm.size());
+    MergedShare share;
+    share.first_input =
+        static_cast<std::uint64_t>(comm.exscan_sum(static_cast<std::int64_t>(local.size())));
+    share.total_inputs = static_cast<std::uint64_t>(
+        comm.allreduce(static_cast<std::int64_t>(local.size()), Reduce::sum));
+
+    // 1. To the groups' ranks.
+    std::vector<Bytes> out(ranks);
+    for (std::size_t i = 0; i < local.size(); ++i) {
+        const Point3& p = local[i].p;
+        push(out[position_hash(p.x, p.y) % ranks],
+             Record{p.x, p.y, p.z, share.first_input + i, local[i].z_known ? 1U : 0U,
+                    static_cast<std::uint32_t>(comm.rank())});
+    }
+    std::vector<Record> records = all_of<Record>(comm.alltoallv(std::move(out)));
+
+    // 2. Groups ordered by position, then input index; the first of each is kept.
+    std::sort(records.begin(), records.end(), [](const Record& a, const Record& b) {
+        if (a.x != b.x) return a.x < b.x;
+        if (a.y != b.y) return a.y < b.y;
+        return a.index < b.index;
+    });
+    out.assign(ranks, {});
+    std::unordered_map<std::uint64_t, std::pair<std::size_t, std::size_t>> groups;  // kept -> range
+    for (std::size_t a = 0; a < records.size();) {
+        std::size_t b = a + 1;
+        while (b < records.size() && same_position(records[a], records[b])) ++b;
+        double z = records[a].z;
+        bool known = records[a].z_known != 0;
+        std::size_t count = known ? 1 : 0;
+        for (std::size_t k = a + 1; k < b; ++k) {
+            if (records[k].z_known == 0) continue;
+            ++count;
+            z = known ? detail::duplicate_rule_z(rule, z, records[k].z, count) : records[k].z;
+            known = true;
+        }
+        const std::uint32_t has_duplicates = b - a > 1 ? 1U : 0U;
+        if (has_duplicates) groups.emplace(records[a].index, std::pair{a, b});
+        for (std::size_t k = a; k < b; ++k) {
+            push(out[records[k].origin], Answer{records[k].index, records[a].index, records[a].x,
+                                                records[a].y, z, known ? 1U : 0U, has_duplicates});
+        }
+        a = b;
+    }
+    std::vector<Answer> answers = all_of<Answer>(comm.alltoallv(std::move(out)));
+    std::sort(answers.begin(), answers.end(),
+              [](const Answer& a, const Answer& b) { return a.index < b.index; });
+
+    // 3. Kept vertices numbered in input order.
+    std::uint64_t kept = 0;
+    for (const Answer& a : answers) kept += a.representative == a.index ? 1 : 0;
+    share.first_vertex =
+        static_cast<std::uint64_t>(comm.exscan_sum(static_cast<std::int64_t>(kept)));
+    share.total_vertices =
+        static_cast<std::uint64_t>(comm.allreduce(static_cast<std::int64_t>(kept), Reduce::sum));
+    share.vertex_of_input.assign(local.size(), 0);
+    out.assign(ranks, {});
+    for (std::size_t i = 0; i < local.size(); ++i) {
+        const Answer& a = answers[i];
+        if (a.representative != a.index) continue;
+        const std::uint64_t id = share.first_vertex + share.vertices.size();
+        share.vertex_of_input[i] = id;
+        share.vertices.push_back({{local[i].p.x, local[i].p.y, a.z}, id, a.z_known != 0});
+        if (a.has_duplicates) {
+            push(out[position_hash(local[i].p.x, local[i].p.y) % ranks], Number{a.index, id});
+        }
+    }
+
+    // 4. The kept numbers to the other members' owners, through the groups' ranks.
+    const std::vector<Number> kept_numbers = all_of<Number>(comm.alltoallv(std::move(out)));
+    out.assign(ranks, {});
+    for (const Number& n : kept_numbers) {
+        const auto [a, b] = groups.at(n.index);
+        for (std::size_t k = a + 1; k < b; ++k) {
+            push(out[records[k].origin], Number{records[k].index, n.vertex});
+        }
+    }
+    std::vector<Number> numbers = all_of<Number>(comm.alltoallv(std::move(out)));
+    std::sort(numbers.begin(), numbers.end(),
+              [](const Number& a, const Number& b) { return a.index < b.index; });
+    for (const Number& n : numbers) {
+        const std::size_t i = n.index - share.first_input;
+        const Answer& a = answers[i];
+        share.vertex_of_input[i] = n.vertex;
+        const Point3& given = local[i].p;
+        share.merges.push_back({a.representative, a.index, {a.x, a.y, a.z}, given});
+    }
+    return share;
+}
+
+}  // namespace dtm::dist

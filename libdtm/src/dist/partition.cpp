@@ -1,0 +1,427 @@
+// SPDX-License-Identifier: MIT
+//
+// The serial kernel's recursion tree over ranks (R-D1 of docs/distributed.md).
+//
+// Level by level, every node that still splits needs the element of rank n / 2 of its points
+// under the order of its cut (Before<axis> of kd_order.hpp: (x, y) for x cuts, (y, -x) for y
+// cuts; strips of at most strip_size points are cut by x). All nodes of a level are selected
+// together, in rounds of two collectives:
+//   1. every rank sends a regular sample of each node's candidate window (one allgatherv);
+//      every rank sorts the union and takes two pivots around the wanted rank;
+//   2. every rank splits its window three ways by the pivots and an integer allreduce of the
+//      counts tells, exactly, which part holds the wanted rank; the window shrinks to it.
+// Once a window holds at most gather_below candidates, they are gathered and ordered exactly.
+// Pivots depend on the spread of the points (and so on the rank count), the median does not.
+// Then one alltoallv sends every point to the owner of its leaf.
+//
+// References: R. W. Floyd, R. L. Rivest, "Expected time bounds for selection", CACM 18(3), 1975
+// (sample pivots around the wanted rank); P. Sanders et al., "Sequential and Parallel
+// Algorithms and Data Structures", Springer 2019, ch. 5.7 (distributed multiselection by
+// sampling and counting).
+#include "dtm/dist/partition.hpp"
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <string>
+
+#include "algo/detail/kd_order.hpp"
+#include "dtm/core/error.hpp"
+
+namespace dtm::dist {
+namespace {
+
+bool before(int axis, const Point& a, const Point& b) noexcept {
+    if (axis == 0) return a.x < b.x || (a.x == b.x && a.y < b.y);
+    return a.y < b.y || (a.y == b.y && a.x > b.x);
+}
+
+struct Node {
+    std::uint64_t lo = 0;
+    std::uint64_t hi = 0;
+    std::uint32_t depth = 0;
+    std::uint8_t cut = 0;  ///< the nominal cut (alternating); effective_cut applies the strip rule
+    std::uint8_t frame = 0;
+};
+
+std::uint8_t effective_cut(const Node& n) noexcept {
+    return n.hi - n.lo <= detail::strip_size ? 0 : n.cut;
+}
+
+bool splits(const Node& n, std::uint32_t max_depth) noexcept {
+    return n.depth < max_depth && n.hi - n.lo > 3;
+}
+
+std::array<Node, 2> children(const Node& n) noexcept {
+    const std::uint8_t c = effective_cut(n);
+    const std::uint64_t mid = n.lo + (n.hi - n.lo) / 2;
+    const auto other = static_cast<std::uint8_t>(1 - c);
+    return {Node{n.lo, mid, n.depth + 1, other, c}, Node{mid, n.hi, n.depth + 1, other, c}};
+}
+
+std::uint32_t max_depth(int ranks, unsigned extra_levels) noexcept {
+    const auto p = static_cast<std::uint32_t>(std::max(ranks, 1));
+    return static_cast<std::uint32_t>(std::bit_width(p - 1)) + extra_levels;
+}
+
+Leaf to_leaf(const Node& n, std::uint64_t total, int ranks) noexcept {
+    Leaf leaf{n.lo, n.hi, n.depth, effective_cut(n), n.frame, 0};
+    if (total > 0) {
+        // The rank whose equal share of the positions holds the leaf's middle.
+        leaf.owner =
+            static_cast<int>(((n.lo + n.hi) * static_cast<std::uint64_t>(ranks)) / (2 * total));
+        leaf.owner = std::min(leaf.owner, ranks - 1);
+    }
+    return leaf;
+}
+
+void collect_leaves(const Node& n,
+                    std::uint32_t depth_limit,
+                    std::uint64_t total,
+                    int ranks,
+                    std::vector<Leaf>& out) {
+    if (!splits(n, depth_limit)) {
+        out.push_back(to_leaf(n, total, ranks));
+        return;
+    }
+    for (const Node& c : children(n)) collect_leaves(c, depth_limit, total, ranks, out);
+}
+
+/// Cancellation agreed by all ranks: true everywhere when any rank's progress asks to stop.
+std::int64_t cancel_flag(const Progress& progress) {
+    try {
+        progress.check();
+        return 0;
+    } catch (const Cancelled&) {
+        return 1;
+    }
+}
+
+/// Progress without the throw: a stop request is seen by cancel_flag at the next agreement.
+void report_quietly(const Progress& progress, double fraction) {
+    try {
+        progress.report(fraction, "partitioning");
+    } catch (const Cancelled&) {
+    }
+}
+
+void append(Bytes& out, const void* data, std::size_t size) {
+    const auto* p = static_cast<const std::byte*>(data);
+    out.insert(out.end(), p, p + size);
+}
+
+/// Reads the payloads of every source in turn: a count, then that many points.
+class Cursor {
+public:
+    explicit Cursor(const Bytes& bytes) : bytes_(bytes) {}
+    std::uint64_t count() {
+        std::uint64_t n = 0;
+        std::memcpy(&n, bytes_.data() + at_, sizeof n);
+        at_ += sizeof n;
+        return n;
+    }
+    void points(std::uint64_t n, std::vector<Point>& out) {
+        const std::size_t first = out.size();
+        out.resize(first + n);
+        if (n > 0) std::memcpy(out.data() + first, bytes_.data() + at_, n * sizeof(Point));
+        at_ += n * sizeof(Point);
+    }
+
+private:
+    const Bytes& bytes_;
+    std::size_t at_ = 0;
+};
+
+/// The selection of one node's median: the candidate window [wa, wb) of this rank's segment,
+/// the wanted rank k among the W candidates of all ranks.
+struct Selection {
+    std::size_t node = 0;
+    int axis = 0;
+    std::size_t wa = 0;
+    std::size_t wb = 0;
+    std::uint64_t k = 0;
+    std::uint64_t candidates = 0;
+    bool done = false;
+    std::size_t split_at = 0;  ///< after done: this rank's points before the median end here
+    // The current round's pivots and this rank's counts below them.
+    bool has_low = false;
+    bool has_high = false;
+    Point low{};
+    Point high{};
+    std::size_t below_low = 0;
+    std::size_t below_high = 0;
+};
+
+class Selector {
+public:
+    Selector(Comm& comm,
+             std::vector<Point>& points,
+             const PartitionOptions& options,
+             const Progress& progress,
+             PartitionStats& stats)
+        : comm_(comm), pts_(points), options_(options), progress_(progress), stats_(stats) {}
+
+    /// Runs the rounds until every selection is done.
+    void run(std::vector<Selection>& sel) {
+        for (;;) {
+            std::vector<Selection*> open;
+            for (auto& s : sel) {
+                if (!s.done) open.push_back(&s);
+            }
+            if (open.empty()) return;
+            Bytes payload;
+            for (Selection* s : open) offer(*s, payload);
+            const std::vector<Bytes> received = comm_.allgatherv(std::move(payload));
+            std::vector<Cursor> cursors(received.begin(), received.end());
+            bool sampled = false;
+            for (Selection* s : open) {
+                std::vector<Point> items;
+                for (auto& c : cursors) c.points(c.count(), items);
+                if (gathers(*s)) {
+                    finish(*s, items);
+                } else {
+                    choose_pivots(*s, items);
+                    sampled = true;
+                }
+            }
+            // Counts of the sampled selections and the cancel flag in one reduction.
+            std::vector<std::int64_t> counts;
+            for (Selection* s : open) {
+                if (s->done) continue;
+                counts.push_back(static_cast<std::int64_t>(s->below_low - s->wa));
+                counts.push_back(static_cast<std::int64_t>(s->below_high - s->wa));
+            }
+            counts.push_back(cancel_flag(progress_));
+            comm_.allreduce(counts, Reduce::sum);
+            if (counts.back() > 0) throw Cancelled();
+            std::size_t at = 0;
+            for (Selection* s : open) {
+                if (s->done) continue;
+                narrow(*s, static_cast<std::uint64_t>(counts[at]),
+                       static_cast<std::uint64_t>(counts[at + 1]));
+                at += 2;
+            }
+            if (sampled) ++stats_.sample_rounds;
+        }
+    }
+
+private:
+    [[nodiscard]] bool gathers(const Selection& s) const noexcept {
+        return s.candidates <= options_.gather_below;
+    }
+
+    /// This rank's contribution to the round: the whole window, or a regular sample of it.
+    void offer(const Selection& s, Bytes& payload) {
+        const std::size_t step =
+            gathers(s) ? 1
+                       : static_cast<std::size_t>(std::max<std::uint64_t>(
+                             1, s.candidates / std::max<std::size_t>(options_.sample, 1)));
+        const std::uint64_t n = s.wb > s.wa ? (s.wb - s.wa + step - 1) / step : 0;
+        append(payload, &n, sizeof n);
+        for (std::size_t i = s.wa; i < s.wb; i += step) append(payload, &pts_[i], sizeof(Point));
+        if (gathers(s)) stats_.gathered += n;
+    }
+
+    /// All candidates at hand: the median is the one of rank k.
+    void finish(Selection& s, std::vector<Point>& all) {
+        const int axis = s.axis;
+        const auto less = [axis](const Point& a, const Point& b) { return before(axis, a, b); };
+        std::nth_element(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(s.k), all.end(),
+                         less);
+        const Point median = all[s.k];
+        s.split_at = static_cast<std::size_t>(
+            std::partition(pts_.begin() + static_cast<std::ptrdiff_t>(s.wa),
+                           pts_.begin() + static_cast<std::ptrdiff_t>(s.wb),
+                           [&](const Point& p) { return less(p, median); }) -
+            pts_.begin());
+        s.done = true;
+    }
+
+    /// Pivots about 2 sqrt(m) sample ranks either side of the wanted rank; the window is split
+    /// three ways by them.
+    void choose_pivots(Selection& s, std::vector<Point>& sample) {
+        const int axis = s.axis;
+        const auto less = [axis](const Point& a, const Point& b) { return before(axis, a, b); };
+        std::sort(sample.begin(), sample.end(), less);
+        const std::uint64_t m = sample.size();
+        const std::uint64_t pos = s.k * m / s.candidates;
+        const auto delta = static_cast<std::uint64_t>(2.0 * std::sqrt(static_cast<double>(m))) + 1;
+        s.has_low = pos > delta;
+        s.has_high = pos + delta < m;
+        if (s.has_low) s.low = sample[pos - delta];
+        if (s.has_high) s.high = sample[pos + delta];
+        if (!s.has_low && !s.has_high) {  // a tiny sample: one pivot in its middle
+            s.has_low = true;
+            s.low = sample[m / 2];
+        }
+        auto first = pts_.begin() + static_cast<std::ptrdiff_t>(s.wa);
+        auto last = pts_.begin() + static_cast<std::ptrdiff_t>(s.wb);
+        if (s.has_low)
+            first = std::partition(first, last, [&](const Point& p) { return less(p, s.low); });
+        s.below_low = static_cast<std::size_t>(first - pts_.begin());
+        if (s.has_high)
+            first = std::partition(first, last, [&](const Point& p) { return less(p, s.high); });
+        else
+            first = last;
+        s.below_high = static_cast<std::size_t>(first - pts_.begin());
+    }
+
+    /// Keeps the part that holds the wanted rank (global counts below each pivot).
+    static void narrow(Selection& s, std::uint64_t below_low, std::uint64_t below_high) {
+        if (s.k < below_low) {
+            s.wb = s.below_low;
+            s.candidates = below_low;
+        } else if (s.k < below_high) {
+            s.wa = s.below_low;
+            s.wb = s.below_high;
+            s.k -= below_low;
+            s.candidates = below_high - below_low;
+        } else {
+            s.wa = s.below_high;
+            s.k -= below_high;
+            s.candidates -= below_high;
+        }
+    }
+
+    Comm& comm_;
+    std::vector<Point>& pts_;
+    const PartitionOptions& options_;
+    const Progress& progress_;
+    PartitionStats& stats_;
+};
+
+/// Sends every point to its leaf's owner; returns the owned leaves' points in leaf order.
+void shuffle(Comm& comm,
+             const std::vector<Point>& pts,
+             const std::vector<std::size_t>& seg,
+             Share& share) {
+    const auto p = static_cast<std::size_t>(comm.size());
+    std::vector<Bytes> out(p);
+    for (std::size_t i = 0; i < share.leaves.size(); ++i) {
+        Bytes& o = out[static_cast<std::size_t>(share.leaves[i].owner)];
+        const std::uint64_t n = seg[i + 1] - seg[i];
+        append(o, &n, sizeof n);
+        if (n > 0) append(o, &pts[seg[i]], n * sizeof(Point));
+    }
+    const std::vector<Bytes> in = comm.alltoallv(std::move(out));
+    const auto me = comm.rank();
+    share.first_leaf = share.leaves.size();
+    share.last_leaf = share.leaves.size();
+    for (std::size_t i = 0; i < share.leaves.size(); ++i) {
+        if (share.leaves[i].owner == me && share.first_leaf == share.leaves.size()) {
+            share.first_leaf = i;
+        }
+        if (share.leaves[i].owner > me) {
+            share.last_leaf = i;
+            break;
+        }
+    }
+    share.first_leaf = std::min(share.first_leaf, share.last_leaf);
+    std::vector<std::vector<Point>> per_leaf(share.last_leaf - share.first_leaf);
+    for (const Bytes& bytes : in) {
+        Cursor cursor(bytes);
+        for (auto& leaf : per_leaf) cursor.points(cursor.count(), leaf);
+    }
+    share.offsets.assign(1, 0);
+    for (auto& leaf : per_leaf) {
+        share.points.insert(share.points.end(), leaf.begin(), leaf.end());
+        share.offsets.push_back(share.points.size());
+        std::vector<Point>().swap(leaf);
+    }
+    share.stats.received_points = share.points.size();
+}
+
+/// Sorts every owned leaf by (x, y) and fails on every rank when two points coincide.
+void sort_and_check(Comm& comm, Share& share, const Progress& progress) {
+    std::int64_t pair[2] = {INT64_MAX, INT64_MAX};
+    for (std::size_t i = 0; i + 1 < share.offsets.size(); ++i) {
+        auto first = share.points.begin() + static_cast<std::ptrdiff_t>(share.offsets[i]);
+        auto last = share.points.begin() + static_cast<std::ptrdiff_t>(share.offsets[i + 1]);
+        std::sort(first, last, [](const Point& a, const Point& b) { return before(0, a, b); });
+        for (auto it = first; it != last && it + 1 != last; ++it) {
+            if (it->x == (it + 1)->x && it->y == (it + 1)->y) {
+                const auto a = static_cast<std::int64_t>(std::min(it->id, (it + 1)->id));
+                const auto b = static_cast<std::int64_t>(std::max(it->id, (it + 1)->id));
+                if (a < pair[0] || (a == pair[0] && b < pair[1])) {
+                    pair[0] = a;
+                    pair[1] = b;
+                }
+            }
+        }
+    }
+    // The smallest pair by (a, b): the first members agreed on, then the second for that one.
+    std::int64_t first[2] = {pair[0], -cancel_flag(progress)};
+    comm.allreduce(first, Reduce::min);
+    if (first[1] < 0) throw Cancelled();
+    pair[1] = comm.allreduce(pair[0] == first[0] ? pair[1] : INT64_MAX, Reduce::min);
+    pair[0] = first[0];
+    if (pair[0] != INT64_MAX) {
+        throw InputError("points " + std::to_string(pair[0]) + " and " + std::to_string(pair[1]) +
+                         " coincide: the distributed partition needs pairwise distinct points");
+    }
+}
+
+}  // namespace
+
+std::vector<Leaf> tree_leaves(std::uint64_t total, int ranks, unsigned extra_levels) {
+    std::vector<Leaf> leaves;
+    collect_leaves(Node{0, total, 0, 0, 0}, max_depth(ranks, extra_levels), total, ranks, leaves);
+    return leaves;
+}
+
+Share partition_points(Comm& comm,
+                       std::vector<Point> local,
+                       const PartitionOptions& options,
+                       const Progress& progress) {
+    Share share;
+    comm.set_phase("partition");
+    share.total = static_cast<std::uint64_t>(
+        comm.allreduce(static_cast<std::int64_t>(local.size()), Reduce::sum));
+    const std::uint32_t depth_limit = max_depth(comm.size(), options.extra_levels);
+
+    std::vector<Node> nodes{Node{0, share.total, 0, 0, 0}};
+    std::vector<std::size_t> seg{0, local.size()};  // node i is local[seg[i], seg[i + 1])
+    Selector selector(comm, local, options, progress, share.stats);
+    for (;;) {
+        std::vector<Selection> sel;
+        for (std::size_t i = 0; i < nodes.size(); ++i) {
+            if (!splits(nodes[i], depth_limit)) continue;
+            const std::uint64_t n = nodes[i].hi - nodes[i].lo;
+            sel.push_back(Selection{i, effective_cut(nodes[i]), seg[i], seg[i + 1], n / 2, n});
+        }
+        if (sel.empty()) break;
+        selector.run(sel);
+        std::vector<Node> next;
+        std::vector<std::size_t> next_seg{0};
+        std::size_t s = 0;
+        for (std::size_t i = 0; i < nodes.size(); ++i) {
+            if (s < sel.size() && sel[s].node == i) {
+                const auto halves = children(nodes[i]);
+                next.push_back(halves[0]);
+                next_seg.push_back(sel[s].split_at);
+                next.push_back(halves[1]);
+                ++s;
+            } else {
+                next.push_back(nodes[i]);
+            }
+            next_seg.push_back(seg[i + 1]);
+        }
+        nodes = std::move(next);
+        seg = std::move(next_seg);
+        ++share.stats.levels;
+        report_quietly(progress,
+                       0.8 * share.stats.levels / std::max<std::uint32_t>(depth_limit, 1));
+    }
+    for (const Node& n : nodes) share.leaves.push_back(to_leaf(n, share.total, comm.size()));
+    comm.set_phase("shuffle");
+    shuffle(comm, local, seg, share);
+    std::vector<Point>().swap(local);
+    sort_and_check(comm, share, progress);
+    report_quietly(progress, 1.0);
+    return share;
+}
+
+}  // namespace dtm::dist
