@@ -11,7 +11,9 @@
 #include <map>
 #include <string>
 
+#include "algo/detail/delaunay_dc.hpp"
 #include "algo/detail/input_merge.hpp"
+#include "dist/kernel.hpp"
 #include "dtm/dist/duplicates.hpp"
 #include "dtm/dist/in_process.hpp"
 #include "dtm/dist/mpi_comm.hpp"
@@ -104,6 +106,49 @@ Words duplicates_job(Comm& comm, const std::vector<InputPoint>& all, DuplicateRu
     return words;
 }
 
+Words kernel_job(Comm& comm, const std::vector<Point>& points, bool strided) {
+    const Share share = partition_points(
+        comm, test::initial_share(points, comm.rank(), comm.size(), strided), {}, {});
+    const DistributedMesh d = triangulate_share(comm, share, {}, {});
+    Words words{d.mesh.tris.size()};
+    for (const GlobalTriangle& t : d.mesh.tris) {
+        words.insert(words.end(), t.v.begin(), t.v.end());
+        words.insert(words.end(), t.n.begin(), t.n.end());
+    }
+    words.insert(words.end(), d.input_ids.begin(), d.input_ids.end());
+    return words;
+}
+
+/// The ranks' slots and vertex ids, concatenated, equal the serial kernel's.
+std::string kernel_oracle(const std::vector<Words>& all, const std::vector<Point>& points) {
+    detail::BigArray<detail::KernelPoint> pts(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        pts[i] = {{points[i].x, points[i].y}, static_cast<std::uint32_t>(points[i].id)};
+    }
+    detail::GhostMesh mesh;
+    detail::delaunay_divide_and_conquer(pts, mesh, {}, {});
+    Words slots;
+    Words ids;
+    for (const Words& words : all) {
+        const std::size_t n = words[0];
+        slots.insert(slots.end(), words.begin() + 1,
+                     words.begin() + 1 + static_cast<std::ptrdiff_t>(6 * n));
+        ids.insert(ids.end(), words.begin() + 1 + static_cast<std::ptrdiff_t>(6 * n), words.end());
+    }
+    Words want_slots;
+    for (const Triangle& t : mesh.tris) {
+        const GlobalTriangle g = to_global(t, 0, 0);
+        want_slots.insert(want_slots.end(), g.v.begin(), g.v.end());
+        want_slots.insert(want_slots.end(), g.n.begin(), g.n.end());
+    }
+    if (slots != want_slots) return "triangle slots differ from the serial kernel";
+    Words want_ids;
+    if (points.size() >= 2) {
+        for (std::size_t i = 0; i < mesh.points.size(); ++i) want_ids.push_back(mesh.points[i].id);
+    }
+    return ids == want_ids ? "" : "vertex order differs from the serial kernel";
+}
+
 std::string duplicates_oracle(const std::vector<Words>& all,
                               const TerrainInput& input,
                               DuplicateRule rule) {
@@ -192,6 +237,12 @@ int main(int argc, char** argv) {
                         return partition_oracle(all, c.points, ranks);
                     });
             }
+        }
+        for (const auto& c : test::dist_cases(20000)) {
+            run(
+                "kernel " + c.name + suffix,
+                [&](Comm& comm) { return kernel_job(comm, c.points, true); },
+                [&](const std::vector<Words>& all) { return kernel_oracle(all, c.points); });
         }
         for (DuplicateRule rule : {DuplicateRule::first, DuplicateRule::mean, DuplicateRule::max}) {
             run(

@@ -28,7 +28,7 @@
 #include <cstring>
 #include <string>
 
-#include "algo/detail/kd_order.hpp"
+#include "dist/tree.hpp"
 #include "dtm/core/error.hpp"
 
 namespace dtm::dist {
@@ -39,36 +39,8 @@ bool before(int axis, const Point& a, const Point& b) noexcept {
     return a.y < b.y || (a.y == b.y && a.x > b.x);
 }
 
-struct Node {
-    std::uint64_t lo = 0;
-    std::uint64_t hi = 0;
-    std::uint32_t depth = 0;
-    std::uint8_t cut = 0;  ///< the nominal cut (alternating); effective_cut applies the strip rule
-    std::uint8_t frame = 0;
-};
-
-std::uint8_t effective_cut(const Node& n) noexcept {
-    return n.hi - n.lo <= detail::strip_size ? 0 : n.cut;
-}
-
-bool splits(const Node& n, std::uint32_t max_depth) noexcept {
-    return n.depth < max_depth && n.hi - n.lo > 3;
-}
-
-std::array<Node, 2> children(const Node& n) noexcept {
-    const std::uint8_t c = effective_cut(n);
-    const std::uint64_t mid = n.lo + (n.hi - n.lo) / 2;
-    const auto other = static_cast<std::uint8_t>(1 - c);
-    return {Node{n.lo, mid, n.depth + 1, other, c}, Node{mid, n.hi, n.depth + 1, other, c}};
-}
-
-std::uint32_t max_depth(int ranks, unsigned extra_levels) noexcept {
-    const auto p = static_cast<std::uint32_t>(std::max(ranks, 1));
-    return static_cast<std::uint32_t>(std::bit_width(p - 1)) + extra_levels;
-}
-
 Leaf to_leaf(const Node& n, std::uint64_t total, int ranks) noexcept {
-    Leaf leaf{n.lo, n.hi, n.depth, effective_cut(n), n.frame, 0};
+    Leaf leaf{n.lo, n.hi, n.depth, n.cut, n.frame, 0};
     if (total > 0) {
         // The rank whose equal share of the positions holds the leaf's middle.
         leaf.owner =
@@ -146,6 +118,7 @@ struct Selection {
     std::uint64_t candidates = 0;
     bool done = false;
     std::size_t split_at = 0;  ///< after done: this rank's points before the median end here
+    Point median{};            ///< after done: the first point of the right half
     // The current round's pivots and this rank's counts below them.
     bool has_low = false;
     bool has_high = false;
@@ -232,6 +205,7 @@ private:
         std::nth_element(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(s.k), all.end(),
                          less);
         const Point median = all[s.k];
+        s.median = median;
         s.split_at = static_cast<std::size_t>(
             std::partition(pts_.begin() + static_cast<std::ptrdiff_t>(s.wa),
                            pts_.begin() + static_cast<std::ptrdiff_t>(s.wb),
@@ -394,6 +368,11 @@ Share partition_points(Comm& comm,
         }
         if (sel.empty()) break;
         selector.run(sel);
+        for (const Selection& s : sel) {
+            const Node& n = nodes[s.node];
+            share.cuts.push_back(
+                {n.lo, n.hi, static_cast<std::uint8_t>(s.axis), s.median.x, s.median.y});
+        }
         std::vector<Node> next;
         std::vector<std::size_t> next_seg{0};
         std::size_t s = 0;

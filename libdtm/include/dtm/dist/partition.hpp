@@ -54,10 +54,21 @@ struct PartitionStats {
     std::uint64_t received_points = 0;  ///< points this rank received in the shuffle
 };
 
+/// A cut of the tree above the leaves: node [lo, hi), its axis (the strip rule applied) and its
+/// median, the first point of its right half (in the axis' order).
+struct Cut {
+    std::uint64_t lo = 0;
+    std::uint64_t hi = 0;
+    std::uint8_t axis = 0;
+    double x = 0.0;
+    double y = 0.0;
+};
+
 /// This rank's part of the tree.
 struct Share {
     std::uint64_t total = 0;     ///< points over all ranks
     std::vector<Leaf> leaves;    ///< every leaf, in tree order (about 8 P of them)
+    std::vector<Cut> cuts;       ///< every cut above the leaves, level by level
     std::size_t first_leaf = 0;  ///< this rank owns leaves [first_leaf, last_leaf)
     std::size_t last_leaf = 0;
     /// The owned leaves' points, leaf after leaf, each leaf sorted lexicographically by (x, y).

@@ -38,6 +38,7 @@
 #include <atomic>
 #include <string>
 
+#include "algo/detail/ghost_merge.hpp"
 #include "algo/detail/kd_order.hpp"
 #include "algo/detail/median_split.hpp"
 #include "dtm/core/error.hpp"
@@ -46,12 +47,37 @@
 namespace dtm::detail {
 namespace {
 
-/// Where a subtree's hull is entered by its parent's merge, in the parent's frame: the base of
-/// the ghost triangle out of the last vertex (the left half's lower tangent search starts there)
-/// and of the one into the first vertex (the right half's).
-struct Hull {
-    HalfEdge last_out;
-    HalfEdge first_in;
+using Hull = GhostHull<HalfEdge>;
+
+/// The kernel's mesh as ghost_merge.hpp reads it: the triangles and the points in kernel order.
+struct KernelAccess {
+    using Vertex = VertexId;
+    using Edge = HalfEdge;
+    static constexpr Vertex ghost_vertex = ghost;
+    static constexpr Edge half_edge(std::size_t t, unsigned i) noexcept {
+        return detail::half_edge(t, i);
+    }
+
+    GhostMesh& mesh;
+    const KernelPoint* pts;
+
+    [[nodiscard]] VertexId& org(HalfEdge h) const noexcept { return mesh.org(h); }
+    [[nodiscard]] VertexId dest(HalfEdge h) const noexcept { return mesh.dest(h); }
+    [[nodiscard]] HalfEdge& twin(HalfEdge h) const noexcept { return mesh.twin(h); }
+    void bond(HalfEdge a, HalfEdge b) const noexcept { mesh.bond(a, b); }
+    void set_triangle(std::size_t t, VertexId a, VertexId b, VertexId c) const noexcept {
+        mesh.set_triangle(t, a, b, c);
+    }
+    [[nodiscard]] int orient(VertexId a, VertexId b, VertexId c) const noexcept {
+        return geom::orient2d(pts[a].x, pts[a].y, pts[b].x, pts[b].y, pts[c].x, pts[c].y);
+    }
+    [[nodiscard]] bool incircle(VertexId a, VertexId b, VertexId c, VertexId d) const noexcept {
+        return geom::incircle(pts[a].x, pts[a].y, pts[b].x, pts[b].y, pts[c].x, pts[c].y, pts[d].x,
+                              pts[d].y) > 0;
+    }
+    [[nodiscard]] bool before(int frame, VertexId a, VertexId b) const noexcept {
+        return frame == 0 ? Before<0>{}(pts[a], pts[b]) : Before<1>{}(pts[a], pts[b]);
+    }
 };
 
 /// A built subtree: its hull and the two triangle slots of its range it did not use.
@@ -59,11 +85,6 @@ struct Part {
     Hull hull;
     std::array<std::size_t, 2> spare;
 };
-
-/// The order of @p frame (0 or 1), chosen at run time.
-inline bool before(int frame, const KernelPoint& a, const KernelPoint& b) noexcept {
-    return frame == 0 ? Before<0>{}(a, b) : Before<1>{}(a, b);
-}
 
 class Builder {
 public:
@@ -154,11 +175,14 @@ private:
         }
         // The merge takes the left half's spare slots; the right half's are passed up, whether
         // or not the halves ran in parallel.
-        const HalfEdge on_hull = merge(left.hull, right.hull, left.spare);
-        return {handles(on_hull, frame), right.spare};
+        KernelAccess mesh = access();
+        const HalfEdge on_hull = ghost_merge(mesh, left.hull, right.hull, left.spare);
+        return {hull_handles(mesh, on_hull, frame), right.spare};
     }
 
-    // The mesh's own accessors, short names for the merge.
+    [[nodiscard]] KernelAccess access() const noexcept { return {mesh_, pts_}; }
+
+    // The mesh's own accessors, short names for the base cases.
     [[nodiscard]] VertexId& org(HalfEdge h) const noexcept { return mesh_.org(h); }
     [[nodiscard]] VertexId dest(HalfEdge h) const noexcept { return mesh_.dest(h); }
     [[nodiscard]] HalfEdge& twin(HalfEdge h) const noexcept { return mesh_.twin(h); }
@@ -166,41 +190,8 @@ private:
     void set_triangle(std::size_t t, VertexId a, VertexId b, VertexId c) const noexcept {
         mesh_.set_triangle(t, a, b, c);
     }
-    /// The next ghost along the hull (outer face on the left): (a, b) -> (b, c).
-    [[nodiscard]] HalfEdge next_ghost(HalfEdge base) const noexcept {
-        return next(twin(next(base)));
-    }
-    [[nodiscard]] HalfEdge prev_ghost(HalfEdge base) const noexcept {
-        return prev(twin(prev(base)));
-    }
-
     [[nodiscard]] int orient(VertexId a, VertexId b, VertexId c) const noexcept {
-        return geom::orient2d(pts_[a].x, pts_[a].y, pts_[b].x, pts_[b].y, pts_[c].x, pts_[c].y);
-    }
-    [[nodiscard]] bool incircle(VertexId a, VertexId b, VertexId c, VertexId d) const noexcept {
-        return geom::incircle(pts_[a].x, pts_[a].y, pts_[b].x, pts_[b].y, pts_[c].x, pts_[c].y,
-                              pts_[d].x, pts_[d].y) > 0;
-    }
-
-    /// The hull handles in @p frame, found by walking the hull once from the ghost base
-    /// @p start.
-    [[nodiscard]] Hull handles(HalfEdge start, int frame) const noexcept {
-        Hull hull{start, start};
-        VertexId last = org(start);
-        VertexId first = dest(start);
-        for (HalfEdge g = next_ghost(start); g != start; g = next_ghost(g)) {
-            const VertexId a = org(g);
-            const VertexId b = dest(g);
-            if (before(frame, pts_[last], pts_[a])) {
-                last = a;
-                hull.last_out = g;
-            }
-            if (before(frame, pts_[b], pts_[first])) {
-                first = b;
-                hull.first_in = g;
-            }
-        }
-        return hull;
+        return access().orient(a, b, c);
     }
 
     /// Ghost triangles on the three edges of the real triangle @p t = (a, b, c), in the slots
@@ -239,7 +230,8 @@ private:
             bond(half_edge(t, 0), half_edge(t + 1, 0));
             bond(half_edge(t, 1), half_edge(t + 1, 2));
             bond(half_edge(t, 2), half_edge(t + 1, 1));
-            return {handles(half_edge(t, 0), frame), {t + 2, t + 3}};
+            KernelAccess mesh = access();
+            return {hull_handles(mesh, half_edge(t, 0), frame), {t + 2, t + 3}};
         }
         const int o = orient(v0, v0 + 1, v0 + 2);
         if (o == 0) {  // a chain v0 - v1 - v2: four ghosts around it
@@ -260,135 +252,8 @@ private:
             }
             close_with_ghosts(t, t + 1, t + 2, t + 3);
         }
-        return {handles(half_edge(t + 1, 0), frame), {t + 4, t + 5}};
-    }
-
-    /// Deletes the edge of @p x, a half-edge a -> b of a real triangle (a, b, y) whose twin lies
-    /// in a ghost (b, a, ghost) facing the gap, by flipping it with the ghost vertex: the real
-    /// triangle becomes the ghost (a, ghost, y) and the ghost becomes (b, y, ghost). Half-edges
-    /// x (now a -> ghost) and y -> a keep their places.
-    void delete_by_ghost_flip(HalfEdge x) const noexcept {
-        const HalfEdge x1 = next(x);   // b -> y
-        const HalfEdge g0 = twin(x);   // b -> a
-        const HalfEdge g1 = next(g0);  // a -> ghost
-        const VertexId y = org(next(x1));
-        const HalfEdge across = twin(x1);
-        const HalfEdge outer = twin(g1);
-        org(x1) = ghost;
-        org(g1) = y;
-        bond(x, outer);
-        bond(g0, across);
-        bond(x1, g1);
-    }
-
-    /// The Guibas-Stolfi merge on triangles. The left half lies before the right one in the
-    /// frame of the cut. Returns the base of a ghost on the merged hull.
-    ///
-    /// The gap between the halves is covered by their ghosts; the merge adds two triangles: the
-    /// ghost below the lower tangent (permanent) and the "upper" ghost (l, r, ghost) above the
-    /// current base edge l - r. Each zip step turns the upper ghost into the real triangle
-    /// (l, r, c) and the ghost of the half the candidate c came from into the next upper ghost.
-    /// An edge of a half that the new edge would make non-Delaunay is deleted by flipping it
-    /// with the ghost vertex: its triangle becomes a ghost facing the gap (Shewchuk's scheme).
-    /// Every decision (tangent, candidates, deletions, choice) is the same as in the quad-edge
-    /// formulation, so the triangulation is the same.
-    HalfEdge merge(Hull left, Hull right, std::array<std::size_t, 2> slots) {
-        // Lower common tangent: lg is a ghost base l -> x of the left half, rg one y -> r of
-        // the right half.
-        HalfEdge lg = left.last_out;
-        HalfEdge rg = right.first_in;
-        for (;;) {
-            const VertexId l = org(lg);
-            const VertexId r = dest(rg);
-            if (orient(r, l, dest(lg)) > 0) {
-                lg = next_ghost(lg);
-            } else if (orient(l, org(rg), r) > 0) {
-                rg = prev_ghost(rg);
-            } else {
-                break;
-            }
-        }
-        VertexId l = org(lg);
-        VertexId r = dest(rg);
-        // The ghost below the tangent (r, l, ghost) and the upper ghost (l, r, ghost).
-        const std::size_t below = slots[0];
-        const std::size_t upper = slots[1];
-        const HalfEdge ghost_above_l = twin(prev(lg));  // l -> ghost, in the ghost into l
-        const HalfEdge ghost_above_r = twin(next(rg));  // ghost -> r, in the ghost out of r
-        set_triangle(below, r, l, ghost);
-        set_triangle(upper, l, r, ghost);
-        bond(half_edge(below, 0), half_edge(upper, 0));
-        bond(half_edge(below, 1), prev(lg));
-        bond(half_edge(below, 2), next(rg));
-        bond(half_edge(upper, 1), ghost_above_r);
-        bond(half_edge(upper, 2), ghost_above_l);
-        HalfEdge up = half_edge(upper, 0);  // l -> r in the upper ghost
-
-        for (;;) {
-            const HalfEdge up1 = next(up);   // r -> ghost
-            const HalfEdge up2 = next(up1);  // ghost -> l
-            // Left candidate: l -> c, the edge of the left half next to the gap.
-            HalfEdge lcand = twin(prev(twin(up2)));
-            VertexId lc = dest(lcand);
-            bool lvalid = lc != r && orient(lc, l, r) > 0;
-            if (lvalid) {
-                bool deleted = false;
-                for (;;) {
-                    const HalfEdge a1 = next(lcand);  // c -> c2 in the triangle left of lcand
-                    const VertexId c2 = org(next(a1));
-                    if (c2 == ghost || c2 == r || !incircle(l, r, lc, c2)) break;
-                    delete_by_ghost_flip(lcand);
-                    lcand = twin(prev(lcand));  // l -> c2
-                    lc = c2;
-                    deleted = true;
-                }
-                if (deleted) lvalid = lc != r && orient(lc, l, r) > 0;
-            }
-            // Right candidate: r -> c, the base of the right half's ghost next to the gap.
-            const HalfEdge rcand = next(twin(up1));
-            VertexId rc = dest(rcand);
-            bool rvalid = rc != l && orient(rc, l, r) > 0;
-            if (rvalid) {
-                bool deleted = false;
-                for (;;) {
-                    const HalfEdge b0 = twin(rcand);  // c -> r in the triangle right of rcand
-                    const HalfEdge b1 = next(b0);     // r -> d2
-                    const VertexId d2 = dest(b1);
-                    if (d2 == ghost || d2 == l || !incircle(l, r, rc, d2)) break;
-                    delete_by_ghost_flip(b0);  // rcand is now r -> d2
-                    rc = d2;
-                    deleted = true;
-                }
-                if (deleted) rvalid = rc != l && orient(rc, l, r) > 0;
-            }
-            if (!lvalid && !rvalid) break;
-            if (!lvalid || (rvalid && incircle(lc, l, r, rc))) {
-                // (l, r, rc); the right ghost (r, rc, ghost) becomes the upper ghost (l, rc,
-                // ghost).
-                const HalfEdge below_rc = twin(rcand);  // rc -> r
-                const HalfEdge left_ghost = twin(up2);
-                org(up2) = rc;
-                org(rcand) = l;
-                bond(up1, below_rc);
-                bond(up2, rcand);
-                bond(next(next(rcand)), left_ghost);
-                up = rcand;
-                r = rc;
-            } else {
-                // (l, r, lc); the left ghost (lc, l, ghost) becomes the upper ghost (lc, r, ghost).
-                const HalfEdge g0 = twin(lcand);
-                const HalfEdge g1 = next(g0);
-                const HalfEdge right_ghost = twin(up1);
-                org(up2) = lc;
-                org(g1) = r;
-                bond(up1, g0);
-                bond(up2, lcand);
-                bond(g1, right_ghost);
-                up = g0;
-                l = lc;
-            }
-        }
-        return half_edge(below, 0);
+        KernelAccess mesh = access();
+        return {hull_handles(mesh, half_edge(t + 1, 0), frame), {t + 4, t + 5}};
     }
 
     KernelPoint* pts_;
@@ -425,6 +290,27 @@ void delaunay_divide_and_conquer(BigArray<KernelPoint>& points,
     }
     mesh.points = std::move(points);
     points = {};
+}
+
+void order_kernel_subtree(BigArray<KernelPoint>& points, std::size_t lo, std::size_t hi, int cut) {
+    GhostMesh unused;
+    const DelaunayDcOptions options;
+    const Progress progress;
+    Builder builder(points, unused, options, progress);
+    if (hi - lo >= 2) builder.split(lo, hi, cut, hi - lo + 1);
+}
+
+KernelSubtree build_kernel_subtree(BigArray<KernelPoint>& points,
+                                   GhostMesh& mesh,
+                                   std::size_t lo,
+                                   std::size_t hi,
+                                   int cut,
+                                   int frame) {
+    const DelaunayDcOptions options;
+    const Progress progress;
+    Builder builder(points, mesh, options, progress);
+    const Part part = builder.build(lo, hi, cut, frame, hi - lo + 1);
+    return {part.hull, part.spare};
 }
 
 }  // namespace dtm::detail
