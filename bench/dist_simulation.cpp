@@ -4,7 +4,9 @@
 // the bytes every phase moves (summed over ranks), the band triangles the merging ranks received,
 // widenings, and a check that the slots equal the serial kernel's. Virtual ranks share this
 // machine's cores, so the times measure overhead, not cluster speed; bytes and bands are exact.
-// Usage: dist_simulation [N...] (default 100000 1000000); ranks 1 2 4 8 16 64.
+// Usage: dist_simulation [N...] (default 100000 1000000); ranks 1 2 4 8 16 64. Under mpirun the
+// same job runs once on the MPI ranks instead (every rank also runs the serial kernel as the
+// reference and checks its own slots against it).
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -18,6 +20,7 @@
 #include "algo/detail/delaunay_dc.hpp"
 #include "dist/kernel.hpp"
 #include "dtm/dist/in_process.hpp"
+#include "dtm/dist/mpi_comm.hpp"
 #include "dtm/dist/partition.hpp"
 
 namespace {
@@ -33,19 +36,60 @@ std::vector<dist::Point> uniform(std::size_t n) {
     std::mt19937_64 rng(20261202);
     std::uniform_real_distribution<double> u(0.0, 2000.0);
     std::vector<dist::Point> pts(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        pts[i] = {-750000.0 + std::round(u(rng) * 1000.0) / 1000.0,
-                  -1050000.0 + std::round(u(rng) * 1000.0) / 1000.0, i};
-    }
+    for (std::size_t i = 0; i < n; ++i) pts[i] = {-750000.0 + u(rng), -1050000.0 + u(rng), i};
     return pts;
 }
 
 }  // namespace
 
+/// One run on the MPI ranks: the slowest rank's time against the serial kernel's.
+int run_mpi(int argc, char** argv, const std::vector<std::size_t>& sizes) {
+    dist::MpiSession session(argc, argv);
+    dist::Comm& comm = session.world();
+    const auto r = static_cast<std::size_t>(comm.rank());
+    const auto p = static_cast<std::size_t>(comm.size());
+    int failures = 0;
+    for (std::size_t n : sizes) {
+        const auto points = uniform(n);
+        detail::BigArray<detail::KernelPoint> kp(n);
+        for (std::size_t i = 0; i < n; ++i) {
+            kp[i] = {{points[i].x, points[i].y}, static_cast<std::uint32_t>(i)};
+        }
+        detail::GhostMesh serial;
+        auto t0 = Clock::now();
+        detail::delaunay_divide_and_conquer(kp, serial, {}, {});
+        const double serial_s = seconds_since(t0);
+        std::vector<dist::Point> mine(
+            points.begin() + static_cast<std::ptrdiff_t>(r * n / p),
+            points.begin() + static_cast<std::ptrdiff_t>((r + 1) * n / p));
+        comm.barrier();
+        t0 = Clock::now();
+        const dist::Share share = dist::partition_points(comm, std::move(mine), {}, {});
+        const dist::DistributedMesh d = dist::triangulate_share(comm, share, {}, {});
+        const auto micros = static_cast<std::int64_t>(seconds_since(t0) * 1e6);
+        std::int64_t bad = 0;
+        for (std::size_t k = 0; k < d.mesh.tris.size(); ++k) {
+            bad +=
+                d.mesh.tris[k] == dist::to_global(serial.tris[d.mesh.first_slot + k], 0, 0) ? 0 : 1;
+        }
+        const std::int64_t slowest = comm.allreduce(micros, dist::Reduce::max);
+        bad = comm.allreduce(bad, dist::Reduce::sum);
+        failures += bad > 0 ? 1 : 0;
+        if (comm.rank() == 0) {
+            std::printf(
+                "| %zu | %zu MPI ranks | %.3f s | %.3f s | %.2f | slots differing: %lld |\n", n, p,
+                serial_s, static_cast<double>(slowest) / 1e6,
+                static_cast<double>(slowest) / 1e6 / serial_s, static_cast<long long>(bad));
+        }
+    }
+    return failures == 0 ? 0 : 1;
+}
+
 int main(int argc, char** argv) {
     std::vector<std::size_t> sizes;
     for (int i = 1; i < argc; ++i) sizes.push_back(std::strtoull(argv[i], nullptr, 10));
     if (sizes.empty()) sizes = {100000, 1000000};
+    if (dist::launched_ranks() > 0 && dist::mpi_built()) return run_mpi(argc, argv, sizes);
     std::printf(
         "| points | ranks | serial kernel | partition + kernel | ratio | partition MB | shuffle MB "
         "| "

@@ -119,11 +119,7 @@ struct Selection {
     bool done = false;
     std::size_t split_at = 0;  ///< after done: this rank's points before the median end here
     Point median{};            ///< after done: the first point of the right half
-    // The current round's pivots and this rank's counts below them.
-    bool has_low = false;
-    bool has_high = false;
-    Point low{};
-    Point high{};
+    // This rank's window ends below the current round's pivots.
     std::size_t below_low = 0;
     std::size_t below_high = 0;
 };
@@ -139,28 +135,38 @@ public:
 
     /// Runs the rounds until every selection is done.
     void run(std::vector<Selection>& sel) {
+        const auto ranks = static_cast<std::size_t>(comm_.size());
         for (;;) {
             std::vector<Selection*> open;
             for (auto& s : sel) {
                 if (!s.done) open.push_back(&s);
             }
             if (open.empty()) return;
-            Bytes payload;
-            for (Selection* s : open) offer(*s, payload);
-            const std::vector<Bytes> received = comm_.allgatherv(std::move(payload));
+            // 1. Offers to each selection's deciding rank (open selections take turns).
+            std::vector<Bytes> offers(ranks);
+            for (std::size_t i = 0; i < open.size(); ++i) offer(*open[i], offers[i % ranks]);
+            const std::vector<Bytes> received = comm_.alltoallv(std::move(offers));
+            // 2. The deciding ranks pick the medians or the pivots and tell every rank.
             std::vector<Cursor> cursors(received.begin(), received.end());
+            Bytes decided;
             bool sampled = false;
-            for (Selection* s : open) {
+            for (std::size_t i = 0; i < open.size(); ++i) {
+                sampled = sampled || !gathers(*open[i]);
+                if (i % ranks != static_cast<std::size_t>(comm_.rank())) continue;
                 std::vector<Point> items;
                 for (auto& c : cursors) c.points(c.count(), items);
-                if (gathers(*s)) {
-                    finish(*s, items);
+                const Decision d = decide(*open[i], items, i);
+                append(decided, &d, sizeof d);
+            }
+            for (const Decision& d : received_decisions(comm_.allgatherv(std::move(decided)))) {
+                Selection& s = *open[d.index];
+                if (d.median) {
+                    apply_median(s, d.low);
                 } else {
-                    choose_pivots(*s, items);
-                    sampled = true;
+                    apply_pivots(s, d);
                 }
             }
-            // Counts of the sampled selections and the cancel flag in one reduction.
+            // 3. Counts of the sampled selections and the cancel flag in one reduction.
             std::vector<std::int64_t> counts;
             for (Selection* s : open) {
                 if (s->done) continue;
@@ -182,6 +188,26 @@ public:
     }
 
 private:
+    /// What a deciding rank tells every rank about open selection `index`: its median, or the
+    /// pivots to split the windows by.
+    struct Decision {
+        std::uint64_t index;
+        std::uint32_t median;
+        std::uint16_t has_low;
+        std::uint16_t has_high;
+        Point low;  ///< the median when `median`
+        Point high;
+    };
+
+    static std::vector<Decision> received_decisions(const std::vector<Bytes>& in) {
+        std::vector<Decision> out;
+        for (const Bytes& b : in) {
+            const auto part = from_bytes<Decision>(b);
+            out.insert(out.end(), part.begin(), part.end());
+        }
+        return out;
+    }
+
     [[nodiscard]] bool gathers(const Selection& s) const noexcept {
         return s.candidates <= options_.gather_below;
     }
@@ -198,48 +224,64 @@ private:
         if (gathers(s)) stats_.gathered += n;
     }
 
-    /// All candidates at hand: the median is the one of rank k.
-    void finish(Selection& s, std::vector<Point>& all) {
+    /// On the deciding rank: all candidates at hand give the median (the one of rank k); a
+    /// sample gives pivots about 2 sqrt(m) sample ranks either side of the wanted rank.
+    [[nodiscard]] Decision decide(const Selection& s,
+                                  std::vector<Point>& items,
+                                  std::size_t index) const {
         const int axis = s.axis;
         const auto less = [axis](const Point& a, const Point& b) { return before(axis, a, b); };
-        std::nth_element(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(s.k), all.end(),
-                         less);
-        const Point median = all[s.k];
+        Decision d{index, 0, 0, 0, {}, {}};
+        if (gathers(s)) {
+            std::nth_element(items.begin(), items.begin() + static_cast<std::ptrdiff_t>(s.k),
+                             items.end(), less);
+            d.median = 1;
+            d.low = items[s.k];
+            return d;
+        }
+        std::sort(items.begin(), items.end(), less);
+        const std::uint64_t m = items.size();
+        const std::uint64_t pos = s.k * m / s.candidates;
+        const auto delta = static_cast<std::uint64_t>(2.0 * std::sqrt(static_cast<double>(m))) + 1;
+        d.has_low = pos > delta ? 1 : 0;
+        d.has_high = pos + delta < m ? 1 : 0;
+        if (d.has_low) d.low = items[pos - delta];
+        if (d.has_high) d.high = items[pos + delta];
+        if (!d.has_low && !d.has_high) {  // a tiny sample: one pivot in its middle
+            d.has_low = 1;
+            d.low = items[m / 2];
+        }
+        return d;
+    }
+
+    /// Every rank: the points of its window before the median go first.
+    void apply_median(Selection& s, const Point& median) {
+        const int axis = s.axis;
         s.median = median;
         s.split_at = static_cast<std::size_t>(
             std::partition(pts_.begin() + static_cast<std::ptrdiff_t>(s.wa),
                            pts_.begin() + static_cast<std::ptrdiff_t>(s.wb),
-                           [&](const Point& p) { return less(p, median); }) -
+                           [&](const Point& p) { return before(axis, p, median); }) -
             pts_.begin());
         s.done = true;
     }
 
-    /// Pivots about 2 sqrt(m) sample ranks either side of the wanted rank; the window is split
-    /// three ways by them.
-    void choose_pivots(Selection& s, std::vector<Point>& sample) {
+    /// Every rank: its window split three ways by the pivots.
+    void apply_pivots(Selection& s, const Decision& d) {
         const int axis = s.axis;
-        const auto less = [axis](const Point& a, const Point& b) { return before(axis, a, b); };
-        std::sort(sample.begin(), sample.end(), less);
-        const std::uint64_t m = sample.size();
-        const std::uint64_t pos = s.k * m / s.candidates;
-        const auto delta = static_cast<std::uint64_t>(2.0 * std::sqrt(static_cast<double>(m))) + 1;
-        s.has_low = pos > delta;
-        s.has_high = pos + delta < m;
-        if (s.has_low) s.low = sample[pos - delta];
-        if (s.has_high) s.high = sample[pos + delta];
-        if (!s.has_low && !s.has_high) {  // a tiny sample: one pivot in its middle
-            s.has_low = true;
-            s.low = sample[m / 2];
-        }
         auto first = pts_.begin() + static_cast<std::ptrdiff_t>(s.wa);
         auto last = pts_.begin() + static_cast<std::ptrdiff_t>(s.wb);
-        if (s.has_low)
-            first = std::partition(first, last, [&](const Point& p) { return less(p, s.low); });
+        if (d.has_low) {
+            first =
+                std::partition(first, last, [&](const Point& p) { return before(axis, p, d.low); });
+        }
         s.below_low = static_cast<std::size_t>(first - pts_.begin());
-        if (s.has_high)
-            first = std::partition(first, last, [&](const Point& p) { return less(p, s.high); });
-        else
+        if (d.has_high) {
+            first = std::partition(first, last,
+                                   [&](const Point& p) { return before(axis, p, d.high); });
+        } else {
             first = last;
+        }
         s.below_high = static_cast<std::size_t>(first - pts_.begin());
     }
 
