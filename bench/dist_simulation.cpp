@@ -7,6 +7,8 @@
 // Usage: dist_simulation [N...] (default 100000 1000000); ranks 1 2 4 8 16 64. Under mpirun the
 // same job runs once on the MPI ranks instead (every rank also runs the serial kernel as the
 // reference and checks its own slots against it).
+#include <sys/resource.h>
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -32,12 +34,33 @@ double seconds_since(Clock::time_point t) {
     return std::chrono::duration<double>(Clock::now() - t).count();
 }
 
-std::vector<dist::Point> uniform(std::size_t n) {
-    std::mt19937_64 rng(20261202);
-    std::uniform_real_distribution<double> u(0.0, 2000.0);
-    std::vector<dist::Point> pts(n);
-    for (std::size_t i = 0; i < n; ++i) pts[i] = {-750000.0 + u(rng), -1050000.0 + u(rng), i};
+/// Point i of a uniform set over 2 km x 2 km at S-JTSK offsets, from a hash of i: any rank can
+/// make its own part.
+dist::Point uniform_point(std::uint64_t i) {
+    const auto mix = [](std::uint64_t z) {
+        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+        z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+        return z ^ (z >> 31);
+    };
+    const double a = static_cast<double>(mix(2 * i + 0x9E3779B97F4A7C15ULL) >> 11) * 0x1p-53;
+    const double b = static_cast<double>(mix(2 * i + 1 + 0x9E3779B97F4A7C15ULL) >> 11) * 0x1p-53;
+    return {-750000.0 + 2000.0 * a, -1050000.0 + 2000.0 * b, i};
+}
+
+std::vector<dist::Point> uniform(std::size_t first, std::size_t last) {
+    std::vector<dist::Point> pts;
+    pts.reserve(last - first);
+    for (std::size_t i = first; i < last; ++i) pts.push_back(uniform_point(i));
     return pts;
+}
+
+std::vector<dist::Point> uniform(std::size_t n) { return uniform(0, n); }
+
+/// Peak resident memory of this process, bytes.
+std::int64_t peak_rss() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return static_cast<std::int64_t>(usage.ru_maxrss) * 1024;
 }
 
 }  // namespace
@@ -49,37 +72,51 @@ int run_mpi(int argc, char** argv, const std::vector<std::size_t>& sizes) {
     const auto r = static_cast<std::size_t>(comm.rank());
     const auto p = static_cast<std::size_t>(comm.size());
     int failures = 0;
+    // DTM_SIM_MEMORY=1: no serial reference (it would hold every point on every rank); every
+    // rank's peak resident memory per point of its share instead.
+    const bool memory_only = std::getenv("DTM_SIM_MEMORY") != nullptr;
     for (std::size_t n : sizes) {
-        const auto points = uniform(n);
-        detail::BigArray<detail::KernelPoint> kp(n);
-        for (std::size_t i = 0; i < n; ++i) {
-            kp[i] = {{points[i].x, points[i].y}, static_cast<std::uint32_t>(i)};
-        }
+        double serial_s = 0.0;
         detail::GhostMesh serial;
-        auto t0 = Clock::now();
-        detail::delaunay_divide_and_conquer(kp, serial, {}, {});
-        const double serial_s = seconds_since(t0);
-        std::vector<dist::Point> mine(
-            points.begin() + static_cast<std::ptrdiff_t>(r * n / p),
-            points.begin() + static_cast<std::ptrdiff_t>((r + 1) * n / p));
+        if (!memory_only) {
+            detail::BigArray<detail::KernelPoint> kp(n);
+            for (std::size_t i = 0; i < n; ++i) {
+                const dist::Point q = uniform_point(i);
+                kp[i] = {{q.x, q.y}, static_cast<std::uint32_t>(i)};
+            }
+            const auto t = Clock::now();
+            detail::delaunay_divide_and_conquer(kp, serial, {}, {});
+            serial_s = seconds_since(t);
+        }
+        std::vector<dist::Point> mine = uniform(r * n / p, (r + 1) * n / p);
         comm.barrier();
-        t0 = Clock::now();
+        const auto t0 = Clock::now();
         const dist::Share share = dist::partition_points(comm, std::move(mine), {}, {});
         const dist::DistributedMesh d = dist::triangulate_share(comm, share, {}, {});
         const auto micros = static_cast<std::int64_t>(seconds_since(t0) * 1e6);
         std::int64_t bad = 0;
-        for (std::size_t k = 0; k < d.mesh.tris.size(); ++k) {
-            bad +=
-                d.mesh.tris[k] == dist::to_global(serial.tris[d.mesh.first_slot + k], 0, 0) ? 0 : 1;
+        for (std::size_t k = 0; !memory_only && k < d.mesh.tris.size(); ++k) {
+            const std::uint64_t slot = d.mesh.first_slot + k;
+            bad += d.mesh.at(slot) == dist::to_global(serial.tris[slot], 0, 0) ? 0 : 1;
         }
         const std::int64_t slowest = comm.allreduce(micros, dist::Reduce::max);
         bad = comm.allreduce(bad, dist::Reduce::sum);
+        const std::int64_t per_point =
+            peak_rss() / std::max<std::int64_t>(1, static_cast<std::int64_t>(d.input_ids.size()));
+        const std::int64_t worst = comm.allreduce(per_point, dist::Reduce::max);
         failures += bad > 0 ? 1 : 0;
         if (comm.rank() == 0) {
-            std::printf(
-                "| %zu | %zu MPI ranks | %.3f s | %.3f s | %.2f | slots differing: %lld |\n", n, p,
-                serial_s, static_cast<double>(slowest) / 1e6,
-                static_cast<double>(slowest) / 1e6 / serial_s, static_cast<long long>(bad));
+            if (memory_only) {
+                std::printf(
+                    "| %zu | %zu MPI ranks | %.3f s | peak per rank at most %lld bytes per point "
+                    "of its share |\n",
+                    n, p, static_cast<double>(slowest) / 1e6, static_cast<long long>(worst));
+            } else {
+                std::printf(
+                    "| %zu | %zu MPI ranks | %.3f s | %.3f s | %.2f | slots differing: %lld |\n", n,
+                    p, serial_s, static_cast<double>(slowest) / 1e6,
+                    static_cast<double>(slowest) / 1e6 / serial_s, static_cast<long long>(bad));
+            }
         }
     }
     return failures == 0 ? 0 : 1;
@@ -129,8 +166,9 @@ int main(int argc, char** argv) {
             bool same = true;
             std::size_t at = 0;
             for (const auto& m : meshes) {
-                for (const auto& t : m.mesh.tris)
+                for (const auto& t : m.mesh.global_triangles()) {
                     same = same && t == dist::to_global(serial.tris[at++], 0, 0);
+                }
             }
             same = same && at == serial.tris.size();
             const auto mb = [&](const char* phase) {

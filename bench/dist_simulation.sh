@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The distributed kernel (issue 18) measured on this machine: in-process ranks 1-64 (bytes per
 # phase, bands, time against the serial kernel in the same run), then mpirun -np 1 2 4 (time
-# against the serial kernel, slots checked). Usage: BUILD=build bench/dist_simulation.sh [N...]
+# against the serial kernel, slots checked), and every rank's peak memory at 8*10^6 points on
+# 1, 2 and 4 ranks. Usage: BUILD=build bench/dist_simulation.sh [N...]
 set -euo pipefail
 repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=${BUILD:-$repo/build}
@@ -17,5 +18,13 @@ if command -v mpirun >/dev/null; then
     echo "|---|---|---|---|---|---|"
     for np in 1 2 4; do
         mpirun -np "$np" "$build/bench/dist_simulation" "${sizes[@]}"
+    done
+    # Peak memory per rank (no serial reference in these runs), DIST_MEMORY_POINTS points.
+    echo
+    echo "| points | ranks | partition + kernel | memory |"
+    echo "|---|---|---|---|"
+    for np in 1 2 4; do
+        DTM_SIM_MEMORY=1 mpirun -x DTM_SIM_MEMORY -np "$np" "$build/bench/dist_simulation" \
+            "${DIST_MEMORY_POINTS:-8000000}"
     done
 fi

@@ -111,7 +111,7 @@ Words kernel_job(Comm& comm, const std::vector<Point>& points, bool strided) {
         comm, test::initial_share(points, comm.rank(), comm.size(), strided), {}, {});
     const DistributedMesh d = triangulate_share(comm, share, {}, {});
     Words words{d.mesh.tris.size()};
-    for (const GlobalTriangle& t : d.mesh.tris) {
+    for (const GlobalTriangle& t : d.mesh.global_triangles()) {
         words.insert(words.end(), t.v.begin(), t.v.end());
         words.insert(words.end(), t.n.begin(), t.n.end());
     }

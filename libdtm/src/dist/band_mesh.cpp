@@ -37,7 +37,7 @@ std::vector<std::uint64_t> band_seeds(const LocalMesh& mesh,
     const std::uint64_t lo = std::max(first, mesh.first_slot);
     const std::uint64_t hi = std::min<std::uint64_t>(last, mesh.first_slot + mesh.tris.size());
     for (std::uint64_t s = lo; s < hi; ++s) {
-        const GlobalTriangle& t = mesh.at(s);
+        const GlobalTriangle t = mesh.at(s);
         if (t.unused()) continue;
         if (t.is_ghost() || circumdisk_reaches(mesh.point(t.v[0]), mesh.point(t.v[1]),
                                                mesh.point(t.v[2]), axis, cut, left)) {

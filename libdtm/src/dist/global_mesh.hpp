@@ -36,32 +36,88 @@ struct XY {
     double y = 0.0;
 };
 
-/// One rank's part of the global mesh: slots [first_slot, first_slot + tris.size()), its own
-/// vertices [first_vertex, first_vertex + own_points.size()) and the coordinates of the other
-/// ranks' vertices its triangles name.
+/// One rank's part of the global mesh: slots [first_slot, first_slot + tris.size()) and its own
+/// vertices [first_vertex, first_vertex + own_points.size()), stored as the serial kernel stores
+/// them (32-bit Triangle, local numbers) so that the rank holds about as many bytes per point as
+/// one machine does. A vertex number v < own count is own vertex first_vertex + v; a larger one
+/// (not the ghost) is another rank's, foreign_vertices[v - own count]. A twin code below
+/// foreign_edge_tag is a local half-edge; from it up (not no_half_edge) it indexes
+/// foreign_edges. at() and set() translate to and from global numbers.
 struct LocalMesh {
+    static constexpr std::uint32_t foreign_edge_tag = 0x80000000u;
+
     std::uint64_t first_slot = 0;
-    std::vector<GlobalTriangle> tris;
+    std::vector<Triangle> tris;
     std::uint64_t first_vertex = 0;
     std::vector<XY> own_points;
-    std::unordered_map<std::uint64_t, XY> foreign_points;
+    std::vector<std::uint64_t> foreign_vertices;
+    std::vector<XY> foreign_xy;
+    std::unordered_map<std::uint64_t, std::uint32_t> foreign_index;
+    std::vector<std::uint64_t> foreign_edges;
 
     [[nodiscard]] bool owns(std::uint64_t slot) const noexcept {
         return slot >= first_slot && slot - first_slot < tris.size();
     }
-    [[nodiscard]] GlobalTriangle& at(std::uint64_t slot) { return tris[slot - first_slot]; }
-    [[nodiscard]] const GlobalTriangle& at(std::uint64_t slot) const {
-        return tris[slot - first_slot];
+    [[nodiscard]] bool own_vertex(std::uint64_t v) const noexcept {
+        return v >= first_vertex && v - first_vertex < own_points.size();
     }
-    [[nodiscard]] XY point(std::uint64_t v) const {
-        if (v >= first_vertex && v - first_vertex < own_points.size()) {
-            return own_points[v - first_vertex];
+
+    [[nodiscard]] GlobalTriangle at(std::uint64_t slot) const {
+        const Triangle& t = tris[slot - first_slot];
+        GlobalTriangle g;
+        const auto own = static_cast<std::uint32_t>(own_points.size());
+        for (unsigned i = 0; i < 3; ++i) {
+            const std::uint32_t v = t.v[i];
+            g.v[i] = v == detail::ghost ? global_ghost
+                     : v < own          ? first_vertex + v
+                                        : foreign_vertices[v - own];
+            const std::uint32_t n = t.n[i];
+            g.n[i] = n == detail::no_half_edge ? global_ghost
+                     : n < foreign_edge_tag    ? n + (first_slot << 2)
+                                               : foreign_edges[n - foreign_edge_tag];
         }
-        return foreign_points.at(v);
+        return g;
     }
+
+    /// Stores @p g at @p slot; its vertices' coordinates must be known (learn_point).
+    void set(std::uint64_t slot, const GlobalTriangle& g) {
+        Triangle& t = tris[slot - first_slot];
+        const auto own = static_cast<std::uint32_t>(own_points.size());
+        for (unsigned i = 0; i < 3; ++i) {
+            const std::uint64_t v = g.v[i];
+            t.v[i] = v == global_ghost ? detail::ghost
+                     : own_vertex(v)   ? static_cast<std::uint32_t>(v - first_vertex)
+                                       : own + foreign_index.at(v);
+            const std::uint64_t n = g.n[i];
+            if (n == global_ghost) {
+                t.n[i] = detail::no_half_edge;
+            } else if (owns(n >> 2)) {
+                t.n[i] = static_cast<std::uint32_t>(n - (first_slot << 2));
+            } else {
+                t.n[i] = foreign_edge_tag + static_cast<std::uint32_t>(foreign_edges.size());
+                foreign_edges.push_back(n);
+            }
+        }
+    }
+
+    [[nodiscard]] XY point(std::uint64_t v) const {
+        if (own_vertex(v)) return own_points[v - first_vertex];
+        return foreign_xy[foreign_index.at(v)];
+    }
+    /// Every slot in global numbers (tests, checks).
+    [[nodiscard]] std::vector<GlobalTriangle> global_triangles() const {
+        std::vector<GlobalTriangle> out;
+        out.reserve(tris.size());
+        for (std::uint64_t s = 0; s < tris.size(); ++s) out.push_back(at(first_slot + s));
+        return out;
+    }
+
     /// Keeps @p p as the coordinates of vertex @p v if it is another rank's.
     void learn_point(std::uint64_t v, XY p) {
-        if (v < first_vertex || v - first_vertex >= own_points.size()) foreign_points.emplace(v, p);
+        if (own_vertex(v) || foreign_index.contains(v)) return;
+        foreign_index.emplace(v, static_cast<std::uint32_t>(foreign_vertices.size()));
+        foreign_vertices.push_back(v);
+        foreign_xy.push_back(p);
     }
 };
 

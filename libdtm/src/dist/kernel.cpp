@@ -156,11 +156,11 @@ private:
         detail::GhostMesh local;
         local.tris.assign(2 * n, Triangle{});
         walk(root, lo, pts, local, cross);
+        // The kernel's own numbering is the local one: the triangles move as they are.
         LocalMesh& mesh = out.mesh;
         mesh.first_slot = 2 * lo;
         mesh.first_vertex = lo;
-        mesh.tris.reserve(local.tris.size());
-        for (const Triangle& t : local.tris) mesh.tris.push_back(to_global(t, lo, 2 * lo));
+        mesh.tris = std::move(local.tris);
         mesh.own_points.reserve(n);
         out.input_ids.reserve(n);
         for (std::size_t k = 0; k < n; ++k) {
@@ -296,10 +296,10 @@ private:
                 {m.node.lo, m.node.hi, m.outcome.hull.last_out, m.outcome.hull.first_in});
         }
         for (const BandEntry& e : received<BandEntry>(comm_.alltoallv(std::move(send)))) {
-            mesh.at(e.slot) = e.t;
             for (unsigned i = 0; i < 3; ++i) {
                 if (e.t.v[i] != global_ghost) mesh.learn_point(e.t.v[i], e.p[i]);
             }
+            mesh.set(e.slot, e.t);
         }
         learn_hulls(merged);
     }

@@ -336,16 +336,33 @@ void shuffle(Comm& comm,
         }
     }
     share.first_leaf = std::min(share.first_leaf, share.last_leaf);
-    std::vector<std::vector<Point>> per_leaf(share.last_leaf - share.first_leaf);
+    // Two passes over what arrived: the leaves' sizes, then the points straight into place.
+    const std::size_t owned = share.last_leaf - share.first_leaf;
+    std::vector<std::size_t> size(owned, 0);
     for (const Bytes& bytes : in) {
-        Cursor cursor(bytes);
-        for (auto& leaf : per_leaf) cursor.points(cursor.count(), leaf);
+        std::size_t at = 0;
+        for (std::size_t i = 0; i < owned; ++i) {
+            std::uint64_t n = 0;
+            std::memcpy(&n, bytes.data() + at, sizeof n);
+            size[i] += n;
+            at += sizeof n + n * sizeof(Point);
+        }
     }
-    share.offsets.assign(1, 0);
-    for (auto& leaf : per_leaf) {
-        share.points.insert(share.points.end(), leaf.begin(), leaf.end());
-        share.offsets.push_back(share.points.size());
-        std::vector<Point>().swap(leaf);
+    share.offsets.assign(owned + 1, 0);
+    for (std::size_t i = 0; i < owned; ++i) share.offsets[i + 1] = share.offsets[i] + size[i];
+    share.points.resize(share.offsets[owned]);
+    std::vector<std::size_t> fill(share.offsets.begin(), share.offsets.end() - 1);
+    for (const Bytes& bytes : in) {
+        std::size_t at = 0;
+        for (std::size_t i = 0; i < owned; ++i) {
+            std::uint64_t n = 0;
+            std::memcpy(&n, bytes.data() + at, sizeof n);
+            at += sizeof n;
+            if (n > 0)
+                std::memcpy(share.points.data() + fill[i], bytes.data() + at, n * sizeof(Point));
+            fill[i] += n;
+            at += n * sizeof(Point);
+        }
     }
     share.stats.received_points = share.points.size();
 }

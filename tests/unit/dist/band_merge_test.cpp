@@ -42,7 +42,7 @@ Halves build_halves(const std::vector<Point>& points) {
 
 LocalMesh to_local(const detail::GhostMesh& mesh, const BigArray<KernelPoint>& pts) {
     LocalMesh local;
-    for (const Triangle& t : mesh.tris) local.tris.push_back(to_global(t, 0, 0));
+    local.tris = mesh.tris;
     for (std::size_t i = 0; i < pts.size(); ++i) local.own_points.push_back({pts[i].x, pts[i].y});
     return local;
 }
@@ -50,7 +50,7 @@ LocalMesh to_local(const detail::GhostMesh& mesh, const BigArray<KernelPoint>& p
 GlobalHull global(detail::GhostHull<detail::HalfEdge> h) { return {h.last_out, h.first_in}; }
 
 void add_slot(const LocalMesh& local, std::uint64_t slot, BandMesh& band) {
-    const GlobalTriangle& t = local.at(slot);
+    const GlobalTriangle t = local.at(slot);
     band.add(slot, t);
     for (const std::uint64_t v : t.v) {
         if (v != global_ghost) band.add_point(v, local.point(v));
@@ -85,14 +85,14 @@ BandRun merge_by_band(const Halves& h, int rings) {
             const BandMergeOutcome out =
                 merge_on_band(band, global(h.left.hull), global(h.right.hull),
                               {h.left.spare[0], h.left.spare[1]}, 0);
-            for (const auto& [slot, t] : out.changed) local.at(slot) = t;
+            for (const auto& [slot, t] : out.changed) local.set(slot, t);
             break;
         } catch (const BandTooNarrow& e) {
             add_slot(local, e.slot, band);
         }
     }
     run.band_size = band.triangles().size();
-    run.tris = std::move(local.tris);
+    for (std::uint64_t s = 0; s < local.tris.size(); ++s) run.tris.push_back(local.at(s));
     return run;
 }
 

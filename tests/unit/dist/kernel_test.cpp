@@ -61,7 +61,8 @@ Distributed run(const std::vector<Point>& points,
         if (!m.mesh.tris.empty()) {
             EXPECT_EQ(m.mesh.first_slot, d.gathered.tris.size());
         }
-        d.gathered.tris.insert(d.gathered.tris.end(), m.mesh.tris.begin(), m.mesh.tris.end());
+        const auto tris = m.mesh.global_triangles();
+        d.gathered.tris.insert(d.gathered.tris.end(), tris.begin(), tris.end());
         d.gathered.ids.insert(d.gathered.ids.end(), m.input_ids.begin(), m.input_ids.end());
         d.widenings = std::max(d.widenings, m.stats.widenings);
         d.band_triangles += m.stats.band_triangles;
