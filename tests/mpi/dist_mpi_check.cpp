@@ -7,17 +7,23 @@
 #include <bit>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <functional>
+#include <iterator>
 #include <map>
 #include <string>
 
 #include "algo/detail/delaunay_dc.hpp"
 #include "algo/detail/input_merge.hpp"
 #include "dist/kernel.hpp"
+#include "dtm/algo/triangulate.hpp"
 #include "dtm/dist/duplicates.hpp"
 #include "dtm/dist/in_process.hpp"
 #include "dtm/dist/mpi_comm.hpp"
 #include "dtm/dist/partition.hpp"
+#include "dtm/io/formats/ply.hpp"
+#include "io/formats/ply/ply_dist_writer.hpp"
 #include "support/dist_cases.hpp"
 
 namespace {
@@ -198,6 +204,50 @@ std::string compare(Comm& world, const Job& job, const Oracle& oracle) {
     return oracle(results);
 }
 
+std::string file_bytes(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+/// The PLY of the distributed pipeline (duplicates, partition, kernel, MPI-IO write) against the
+/// serial triangulate() + write_tin_ply() on rank 0; "" when the bytes are equal.
+std::string ply_check(Comm& world, const TerrainInput& input) {
+    Bytes dir_bytes;
+    if (world.rank() == 0) {
+        char pattern[] = "/tmp/dtm_mpi_check_XXXXXX";
+        const std::string dir = mkdtemp(pattern) ? pattern : "";
+        const auto* p = reinterpret_cast<const std::byte*>(dir.data());
+        dir_bytes.assign(p, p + dir.size());
+    }
+    world.bcast(dir_bytes, 0);
+    const std::filesystem::path dir(
+        std::string(reinterpret_cast<const char*>(dir_bytes.data()), dir_bytes.size()));
+    const auto all = test::combined_input(input);
+    const auto r = static_cast<std::size_t>(world.rank());
+    const auto p = static_cast<std::size_t>(world.size());
+    const std::span<const InputPoint> mine(all.data() + r * all.size() / p,
+                                           (r + 1) * all.size() / p - r * all.size() / p);
+    const MergedShare merged = merge_exact_duplicates(world, mine, DuplicateRule::mean);
+    std::vector<Point> points;
+    for (const Vertex& v : merged.vertices) points.push_back({v.p.x, v.p.y, v.id});
+    const Share share = partition_points(world, std::move(points), {}, {});
+    const DistributedMesh kernel = triangulate_share(world, share, {}, {});
+    io::TinWriteOptions options;
+    options.crs_wkt = "PROJCRS[\"S-JTSK / Krovak East North\",ID[\"EPSG\",5514]]";
+    io::write_distributed_ply(world, merged, kernel, dir / "dist.ply", options);
+    std::string error;
+    if (world.rank() == 0) {
+        TriangulateOptions topts;
+        topts.duplicates = DuplicateRule::mean;
+        io::write_tin_ply(triangulate(input, topts).tin, dir / "serial.ply", options);
+        if (file_bytes(dir / "dist.ply") != file_bytes(dir / "serial.ply")) {
+            error = "the PLY differs from the serial one";
+        }
+        std::filesystem::remove_all(dir);
+    }
+    return error;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -205,10 +255,10 @@ int main(int argc, char** argv) {
     Comm& world = session.world();
     const int ranks = world.size();
     int failures = 0;
-    const auto run = [&](const std::string& what, const Job& job, const Oracle& oracle) {
+    const auto run_check = [&](const std::string& what, const std::function<std::string()>& check) {
         std::string error;
         try {
-            error = compare(world, job, oracle);
+            error = check();
         } catch (const std::exception& e) {
             error = e.what();
         }
@@ -222,6 +272,9 @@ int main(int argc, char** argv) {
                          static_cast<int>(verdict.size()),
                          reinterpret_cast<const char*>(verdict.data()));
         }
+    };
+    const auto run = [&](const std::string& what, const Job& job, const Oracle& oracle) {
+        run_check(what, [&] { return compare(world, job, oracle); });
     };
     const TerrainInput dup_input = test::duplicate_rich_input(4000, 11);
     const std::vector<InputPoint> dup_points = test::combined_input(dup_input);
@@ -253,6 +306,15 @@ int main(int argc, char** argv) {
                 });
         }
     }
+    for (const auto& c : test::dist_cases(20000)) {
+        if (c.points.size() < 3 || c.name == "collinear") continue;
+        TerrainInput input;
+        for (const auto& q : c.points) input.points.push_back({q.x, q.y, q.x * 0.01 - q.y * 0.02});
+        run_check("ply " + c.name, [&] { return ply_check(world, input); });
+    }
+    TerrainInput duplicates = test::duplicate_rich_input(4000, 11);
+    duplicates.soft_breaklines.clear();
+    run_check("ply duplicates", [&] { return ply_check(world, duplicates); });
     if (world.rank() == 0 && failures == 0) {
         std::printf("distributed steps on %d MPI ranks: equal to in-process and serial\n", ranks);
     }

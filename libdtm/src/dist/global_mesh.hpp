@@ -100,6 +100,12 @@ struct LocalMesh {
         }
     }
 
+    /// The global position of a stored (local) vertex number.
+    [[nodiscard]] std::uint64_t global_vertex(std::uint32_t v) const {
+        const auto own = static_cast<std::uint32_t>(own_points.size());
+        return v < own ? first_vertex + v : foreign_vertices[v - own];
+    }
+
     [[nodiscard]] XY point(std::uint64_t v) const {
         if (own_vertex(v)) return own_points[v - first_vertex];
         return foreign_xy[foreign_index.at(v)];

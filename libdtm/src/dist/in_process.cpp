@@ -15,6 +15,8 @@
 #include <string>
 #include <thread>
 
+#include "dist/posix_shared_file.hpp"
+
 namespace dtm::dist {
 namespace {
 
@@ -40,6 +42,9 @@ public:
 
     [[nodiscard]] int rank() const noexcept override { return rank_; }
     [[nodiscard]] int size() const noexcept override { return hub_.ranks; }
+    std::unique_ptr<SharedFile> open_shared(const std::string& path) override {
+        return open_posix_shared(*this, path);
+    }
 
 protected:
     std::vector<Bytes> do_alltoallv(std::vector<Bytes> out) override {

@@ -19,6 +19,8 @@
 
 #include <algorithm>
 #include <climits>
+#include <cstdint>
+#include <span>
 #endif
 
 namespace dtm::dist {
@@ -51,6 +53,84 @@ MPI_Op to_op(Reduce op) {
     return op == Reduce::min ? MPI_MIN : (op == Reduce::max ? MPI_MAX : MPI_SUM);
 }
 
+/// SharedFile on MPI-IO: MPI_File_open on the job's communicator, truncated, independent
+/// writes at explicit offsets; an error is kept until the collective close.
+class MpiSharedFile final : public SharedFile {
+public:
+    MpiSharedFile(Comm& comm, MPI_Comm mpi, std::string path)
+        : comm_(comm), path_(std::move(path)) {
+        const int code = MPI_File_open(mpi, path_.c_str(), MPI_MODE_CREATE | MPI_MODE_WRONLY,
+                                       MPI_INFO_NULL, &file_);
+        if (code != MPI_SUCCESS) {
+            remember(code, "cannot create the file");
+            file_ = MPI_FILE_NULL;
+        }
+        // Collective on every rank that opened it: the job fails together below otherwise.
+        if (comm_.allreduce(file_ == MPI_FILE_NULL ? 1 : 0, Reduce::max) != 0) {
+            if (file_ != MPI_FILE_NULL) MPI_File_close(&file_);
+            fail_everywhere();
+        }
+        MPI_File_set_errhandler(file_, MPI_ERRORS_RETURN);
+        const int truncated = MPI_File_set_size(file_, 0);
+        if (truncated != MPI_SUCCESS) remember(truncated, "cannot truncate the file");
+    }
+    ~MpiSharedFile() override {
+        if (file_ != MPI_FILE_NULL) MPI_File_close(&file_);
+    }
+
+    void write_at(std::uint64_t offset, std::span<const std::byte> bytes) override {
+        if (!error_.empty()) return;
+        for (std::size_t at = 0; at < bytes.size(); at += chunk_bytes) {
+            const int n = static_cast<int>(std::min(chunk_bytes, bytes.size() - at));
+            const int code = MPI_File_write_at(file_, static_cast<MPI_Offset>(offset + at),
+                                               bytes.data() + at, n, MPI_BYTE, MPI_STATUS_IGNORE);
+            if (code != MPI_SUCCESS) {
+                remember(code, "write failed");
+                return;
+            }
+        }
+    }
+
+    void close() override {
+        if (file_ != MPI_FILE_NULL) {
+            if (error_.empty()) {
+                const int synced = MPI_File_sync(file_);
+                if (synced != MPI_SUCCESS) remember(synced, "write failed");
+            }
+            const int closed = MPI_File_close(&file_);
+            if (closed != MPI_SUCCESS) remember(closed, "write failed");
+            file_ = MPI_FILE_NULL;
+        }
+        if (comm_.allreduce(error_.empty() ? 0 : 1, Reduce::max) != 0) fail_everywhere();
+    }
+
+private:
+    void remember(int code, const char* what) {
+        if (!error_.empty()) return;
+        char text[MPI_MAX_ERROR_STRING];
+        int length = 0;
+        MPI_Error_string(code, text, &length);
+        error_ = "cannot write " + path_ + ": " + what + " (" +
+                 std::string(text, static_cast<std::size_t>(length)) + ")";
+    }
+    [[noreturn]] void fail_everywhere() {
+        const std::int64_t first =
+            comm_.allreduce(error_.empty() ? INT64_MAX : comm_.rank(), Reduce::min);
+        Bytes text;
+        if (comm_.rank() == first) {
+            const auto* p = reinterpret_cast<const std::byte*>(error_.data());
+            text.assign(p, p + error_.size());
+        }
+        comm_.bcast(text, static_cast<int>(first));
+        throw Error(std::string(reinterpret_cast<const char*>(text.data()), text.size()));
+    }
+
+    Comm& comm_;
+    std::string path_;
+    MPI_File file_ = MPI_FILE_NULL;
+    std::string error_;
+};
+
 class MpiComm final : public Comm {
 public:
     explicit MpiComm(MPI_Comm world) {
@@ -62,6 +142,9 @@ public:
 
     [[nodiscard]] int rank() const noexcept override { return rank_; }
     [[nodiscard]] int size() const noexcept override { return size_; }
+    std::unique_ptr<SharedFile> open_shared(const std::string& path) override {
+        return std::make_unique<MpiSharedFile>(*this, comm_, path);
+    }
 
 protected:
     std::vector<Bytes> do_alltoallv(std::vector<Bytes> out) override {

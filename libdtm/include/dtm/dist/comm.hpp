@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <cstring>
 #include <map>
+#include <memory>
 #include <span>
 #include <string>
 #include <type_traits>
@@ -33,6 +34,20 @@ struct PhaseTraffic {
     std::uint64_t bytes = 0;     ///< payload handed to the transport for other ranks
     std::uint64_t messages = 0;  ///< non-empty payloads for other ranks
     std::uint64_t calls = 0;     ///< collective calls
+};
+
+/// A file all ranks write at once, each its own byte ranges (collective open and close).
+class SharedFile {
+public:
+    SharedFile() = default;
+    SharedFile(const SharedFile&) = delete;
+    SharedFile& operator=(const SharedFile&) = delete;
+    virtual ~SharedFile() = default;
+    /// Writes @p bytes at @p offset. @throws Error naming the file.
+    virtual void write_at(std::uint64_t offset, std::span<const std::byte> bytes) = 0;
+    /// Collective: flushes and closes; every rank learns whether any rank's write failed.
+    /// @throws Error on every rank when one failed.
+    virtual void close() = 0;
 };
 
 class Comm {
@@ -58,6 +73,9 @@ public:
     /// Root's @p data on every rank.
     void bcast(Bytes& data, int root);
     void barrier();
+
+    /// Collective: creates (or truncates) @p path for writing by all ranks (MPI-IO on MPI).
+    virtual std::unique_ptr<SharedFile> open_shared(const std::string& path) = 0;
 
     /// Names the phase the following calls are counted under.
     void set_phase(std::string name) { phase_ = std::move(name); }

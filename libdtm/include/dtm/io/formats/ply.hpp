@@ -21,6 +21,13 @@ void write_tin_ply(const Tin& tin,
                    const std::filesystem::path& path,
                    const TinWriteOptions& options);
 
+/// The header write_tin_ply() writes for a TIN of these element counts (also the distributed
+/// writer's, src/io/formats/ply/ply_dist_writer.hpp).
+[[nodiscard]] std::string ply_header(std::size_t vertices,
+                                     std::size_t faces,
+                                     std::size_t edges,
+                                     const TinWriteOptions& options);
+
 struct LoadedTin {
     Tin tin;
     std::string crs_wkt;
