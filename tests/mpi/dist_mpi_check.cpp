@@ -127,12 +127,7 @@ Words kernel_job(Comm& comm, const std::vector<Point>& points, bool strided) {
 
 /// The ranks' slots and vertex ids, concatenated, equal the serial kernel's.
 std::string kernel_oracle(const std::vector<Words>& all, const std::vector<Point>& points) {
-    detail::BigArray<detail::KernelPoint> pts(points.size());
-    for (std::size_t i = 0; i < points.size(); ++i) {
-        pts[i] = {{points[i].x, points[i].y}, static_cast<std::uint32_t>(points[i].id)};
-    }
-    detail::GhostMesh mesh;
-    detail::delaunay_divide_and_conquer(pts, mesh, {}, {});
+    const test::SerialKernel serial = test::serial_kernel(points);
     Words slots;
     Words ids;
     for (const Words& words : all) {
@@ -142,16 +137,12 @@ std::string kernel_oracle(const std::vector<Words>& all, const std::vector<Point
         ids.insert(ids.end(), words.begin() + 1 + static_cast<std::ptrdiff_t>(6 * n), words.end());
     }
     Words want_slots;
-    for (const Triangle& t : mesh.tris) {
-        const GlobalTriangle g = to_global(t, 0, 0);
+    for (const GlobalTriangle& g : serial.tris) {
         want_slots.insert(want_slots.end(), g.v.begin(), g.v.end());
         want_slots.insert(want_slots.end(), g.n.begin(), g.n.end());
     }
     if (slots != want_slots) return "triangle slots differ from the serial kernel";
-    Words want_ids;
-    if (points.size() >= 2) {
-        for (std::size_t i = 0; i < mesh.points.size(); ++i) want_ids.push_back(mesh.points[i].id);
-    }
+    const Words& want_ids = serial.ids;
     return ids == want_ids ? "" : "vertex order differs from the serial kernel";
 }
 

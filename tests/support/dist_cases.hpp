@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "algo/detail/delaunay_dc.hpp"
+#include "dist/global_mesh.hpp"
 #include "dtm/dist/duplicates.hpp"
 #include "dtm/dist/partition.hpp"
 
@@ -67,8 +68,13 @@ inline std::vector<DistCase> dist_cases(std::size_t n) {
     return cases;
 }
 
-/// The ids in the serial kernel's order: positions [lo, hi) of a subtree are its points.
-inline std::vector<std::uint64_t> serial_kernel_order(const std::vector<dist::Point>& points) {
+/// The serial kernel's result in global numbers: every slot, and the point id at every position.
+struct SerialKernel {
+    std::vector<dist::GlobalTriangle> tris;
+    std::vector<std::uint64_t> ids;
+};
+
+inline SerialKernel serial_kernel(const std::vector<dist::Point>& points) {
     using namespace dtm::detail;
     BigArray<KernelPoint> pts(points.size());
     for (std::size_t i = 0; i < points.size(); ++i) {
@@ -76,12 +82,19 @@ inline std::vector<std::uint64_t> serial_kernel_order(const std::vector<dist::Po
     }
     GhostMesh mesh;
     delaunay_divide_and_conquer(pts, mesh, DelaunayDcOptions{}, Progress{});
-    std::vector<std::uint64_t> ids;
-    if (points.size() < 2) {
-        for (const auto& p : points) ids.push_back(p.id);
-        return ids;
+    SerialKernel s;
+    for (const Triangle& t : mesh.tris) s.tris.push_back(dist::to_global(t, 0, 0));
+    if (points.size() >= 2) {
+        for (std::size_t i = 0; i < mesh.points.size(); ++i) s.ids.push_back(mesh.points[i].id);
     }
-    for (std::size_t i = 0; i < mesh.points.size(); ++i) ids.push_back(mesh.points[i].id);
+    return s;
+}
+
+/// The ids in the serial kernel's order: positions [lo, hi) of a subtree are its points.
+inline std::vector<std::uint64_t> serial_kernel_order(const std::vector<dist::Point>& points) {
+    if (points.size() >= 2) return serial_kernel(points).ids;
+    std::vector<std::uint64_t> ids;
+    for (const auto& p : points) ids.push_back(p.id);
     return ids;
 }
 

@@ -55,22 +55,6 @@ std::uint64_t position_hash(double x, double y) noexcept {
     return h ^ (h >> 29);
 }
 
-template <class T>
-void push(Bytes& out, const T& value) {
-    const auto* p = reinterpret_cast<const std::byte*>(&value);
-    out.insert(out.end(), p, p + sizeof(T));
-}
-
-template <class T>
-std::vector<T> all_of(const std::vector<Bytes>& in) {
-    std::vector<T> out;
-    for (const Bytes& b : in) {
-        const auto part = from_bytes<T>(b);
-        out.insert(out.end(), part.begin(), part.end());
-    }
-    return out;
-}
-
 bool same_position(const Record& a, const Record& b) noexcept { return a.x == b.x && a.y == b.y; }
 
 }  // namespace
@@ -90,11 +74,11 @@ MergedShare merge_exact_duplicates(Comm& comm,
     std::vector<Bytes> out(ranks);
     for (std::size_t i = 0; i < local.size(); ++i) {
         const Point3& p = local[i].p;
-        push(out[position_hash(p.x, p.y) % ranks],
-             Record{p.x, p.y, p.z, share.first_input + i, local[i].z_known ? 1U : 0U,
-                    static_cast<std::uint32_t>(comm.rank())});
+        append_value(out[position_hash(p.x, p.y) % ranks],
+                     Record{p.x, p.y, p.z, share.first_input + i, local[i].z_known ? 1U : 0U,
+                            static_cast<std::uint32_t>(comm.rank())});
     }
-    std::vector<Record> records = all_of<Record>(comm.alltoallv(std::move(out)));
+    std::vector<Record> records = concatenated<Record>(comm.alltoallv(std::move(out)));
 
     // 2. Groups ordered by position, then input index; the first of each is kept.
     std::sort(records.begin(), records.end(), [](const Record& a, const Record& b) {
@@ -119,12 +103,13 @@ MergedShare merge_exact_duplicates(Comm& comm,
         const std::uint32_t has_duplicates = b - a > 1 ? 1U : 0U;
         if (has_duplicates) groups.emplace(records[a].index, std::pair{a, b});
         for (std::size_t k = a; k < b; ++k) {
-            push(out[records[k].origin], Answer{records[k].index, records[a].index, records[a].x,
-                                                records[a].y, z, known ? 1U : 0U, has_duplicates});
+            append_value(out[records[k].origin],
+                         Answer{records[k].index, records[a].index, records[a].x, records[a].y, z,
+                                known ? 1U : 0U, has_duplicates});
         }
         a = b;
     }
-    std::vector<Answer> answers = all_of<Answer>(comm.alltoallv(std::move(out)));
+    std::vector<Answer> answers = concatenated<Answer>(comm.alltoallv(std::move(out)));
     std::sort(answers.begin(), answers.end(),
               [](const Answer& a, const Answer& b) { return a.index < b.index; });
 
@@ -144,20 +129,21 @@ MergedShare merge_exact_duplicates(Comm& comm,
         share.vertex_of_input[i] = id;
         share.vertices.push_back({{local[i].p.x, local[i].p.y, a.z}, id, a.z_known != 0});
         if (a.has_duplicates) {
-            push(out[position_hash(local[i].p.x, local[i].p.y) % ranks], Number{a.index, id});
+            append_value(out[position_hash(local[i].p.x, local[i].p.y) % ranks],
+                         Number{a.index, id});
         }
     }
 
     // 4. The kept numbers to the other members' owners, through the groups' ranks.
-    const std::vector<Number> kept_numbers = all_of<Number>(comm.alltoallv(std::move(out)));
+    const std::vector<Number> kept_numbers = concatenated<Number>(comm.alltoallv(std::move(out)));
     out.assign(ranks, {});
     for (const Number& n : kept_numbers) {
         const auto [a, b] = groups.at(n.index);
         for (std::size_t k = a + 1; k < b; ++k) {
-            push(out[records[k].origin], Number{records[k].index, n.vertex});
+            append_value(out[records[k].origin], Number{records[k].index, n.vertex});
         }
     }
-    std::vector<Number> numbers = all_of<Number>(comm.alltoallv(std::move(out)));
+    std::vector<Number> numbers = concatenated<Number>(comm.alltoallv(std::move(out)));
     std::sort(numbers.begin(), numbers.end(),
               [](const Number& a, const Number& b) { return a.index < b.index; });
     for (const Number& n : numbers) {

@@ -68,22 +68,6 @@ private:
     const std::vector<Leaf>& leaves_;
 };
 
-template <class T>
-void push(Bytes& out, const T& value) {
-    const auto* p = reinterpret_cast<const std::byte*>(&value);
-    out.insert(out.end(), p, p + sizeof(T));
-}
-
-template <class T>
-std::vector<T> received(const std::vector<Bytes>& in) {
-    std::vector<T> out;
-    for (const Bytes& b : in) {
-        const auto part = from_bytes<T>(b);
-        out.insert(out.end(), part.begin(), part.end());
-    }
-    return out;
-}
-
 BandEntry entry_of(const LocalMesh& mesh, std::uint64_t node, std::uint64_t slot) {
     BandEntry e{node, slot, mesh.at(slot), {}};
     for (unsigned i = 0; i < 3; ++i) {
@@ -198,7 +182,7 @@ private:
 
     void learn_hulls(const std::vector<HullNote>& mine) {
         const auto all =
-            received<HullNote>(comm_.allgatherv(to_bytes(std::span<const HullNote>(mine))));
+            concatenated<HullNote>(comm_.allgatherv(to_bytes(std::span<const HullNote>(mine))));
         for (const HullNote& h : all) hulls_[{h.lo, h.hi}] = {h.last_out, h.first_in};
     }
 
@@ -237,11 +221,11 @@ private:
                 const Node& side = left ? m.left : m.right;
                 for (const std::uint64_t s :
                      band_seeds(mesh, 2 * side.lo, 2 * side.hi, m.axis, m.cut, left)) {
-                    push(to, entry_of(mesh, k, s));
+                    append_value(to, entry_of(mesh, k, s));
                 }
             }
             for (const std::uint64_t s : {2 * m.left.hi - 2, 2 * m.left.hi - 1}) {
-                if (mesh.owns(s)) push(to, entry_of(mesh, k, s));
+                if (mesh.owns(s)) append_value(to, entry_of(mesh, k, s));
             }
         }
         receive_entries(comm_.alltoallv(std::move(send)), merges, out.stats);
@@ -289,13 +273,13 @@ private:
                 for (unsigned i = 0; i < 3; ++i) {
                     if (t.v[i] != global_ghost) e.p[i] = m.band.points().at(t.v[i]);
                 }
-                push(send[static_cast<std::size_t>(owners_.of_slot(slot))], e);
+                append_value(send[static_cast<std::size_t>(owners_.of_slot(slot))], e);
             }
             out.stats.changed_triangles += m.outcome.changed.size();
             merged.push_back(
                 {m.node.lo, m.node.hi, m.outcome.hull.last_out, m.outcome.hull.first_in});
         }
-        for (const BandEntry& e : received<BandEntry>(comm_.alltoallv(std::move(send)))) {
+        for (const BandEntry& e : concatenated<BandEntry>(comm_.alltoallv(std::move(send)))) {
             for (unsigned i = 0; i < 3; ++i) {
                 if (e.t.v[i] != global_ghost) mesh.learn_point(e.t.v[i], e.p[i]);
             }
@@ -307,7 +291,7 @@ private:
     void receive_entries(const std::vector<Bytes>& in,
                          std::vector<CrossMerge>& merges,
                          KernelStats& stats) {
-        for (const BandEntry& e : received<BandEntry>(in)) {
+        for (const BandEntry& e : concatenated<BandEntry>(in)) {
             add_entry(merges[e.node].band, e);
             ++stats.band_triangles;
         }
@@ -321,12 +305,12 @@ private:
         const auto ranks = static_cast<std::size_t>(comm_.size());
         std::vector<Bytes> ask(ranks);
         for (const SlotRequest& w : wanted)
-            push(ask[static_cast<std::size_t>(owners_.of_slot(w.slot))], w);
+            append_value(ask[static_cast<std::size_t>(owners_.of_slot(w.slot))], w);
         const std::vector<Bytes> asked = comm_.alltoallv(std::move(ask));
         std::vector<Bytes> answer(ranks);
         for (std::size_t s = 0; s < ranks; ++s) {
             for (const SlotRequest& w : from_bytes<SlotRequest>(asked[s])) {
-                push(answer[s], entry_of(mesh, w.node, w.slot));
+                append_value(answer[s], entry_of(mesh, w.node, w.slot));
             }
         }
         receive_entries(comm_.alltoallv(std::move(answer)), merges, stats);

@@ -96,25 +96,13 @@ BandRun merge_by_band(const Halves& h, int rings) {
     return run;
 }
 
-std::vector<GlobalTriangle> serial_kernel(const std::vector<Point>& points) {
-    BigArray<KernelPoint> pts(points.size());
-    for (std::size_t i = 0; i < points.size(); ++i) {
-        pts[i] = {{points[i].x, points[i].y}, static_cast<std::uint32_t>(i)};
-    }
-    detail::GhostMesh mesh;
-    detail::delaunay_divide_and_conquer(pts, mesh, {}, {});
-    std::vector<GlobalTriangle> out;
-    for (const Triangle& t : mesh.tris) out.push_back(to_global(t, 0, 0));
-    return out;
-}
-
 TEST(BandMerge, OneRingHoldsEverythingTheSerialMergeTouches) {
     for (const auto& c : test::dist_cases(20000)) {
         if (c.points.size() < 4) continue;
         const Halves h = build_halves(c.points);
         const BandRun run = merge_by_band(h, 1);
         EXPECT_EQ(run.attempts, 1) << c.name;
-        EXPECT_EQ(run.tris, serial_kernel(c.points)) << c.name;
+        EXPECT_EQ(run.tris, test::serial_kernel(c.points).tris) << c.name;
         if (c.points.size() >= 10000 && c.name != "collinear") {
             // A band, not the mesh (mostly collinear points make thin triangles with huge
             // circles: nearly all of them reach the cut, as they should).
@@ -130,7 +118,7 @@ TEST(BandMerge, TheGuardWidensATooNarrowBandAndChangesNothing) {
         const Halves h = build_halves(c.points);
         const BandRun run = merge_by_band(h, 0);
         widened += run.attempts > 1 ? 1 : 0;
-        EXPECT_EQ(run.tris, serial_kernel(c.points)) << c.name;
+        EXPECT_EQ(run.tris, test::serial_kernel(c.points).tris) << c.name;
     }
     EXPECT_GT(widened, 0);
 }

@@ -15,25 +15,7 @@
 namespace dtm::dist {
 namespace {
 
-struct Serial {
-    std::vector<GlobalTriangle> tris;
-    std::vector<std::uint64_t> ids;  ///< per position
-};
-
-Serial serial_kernel(const std::vector<Point>& points) {
-    detail::BigArray<detail::KernelPoint> pts(points.size());
-    for (std::size_t i = 0; i < points.size(); ++i) {
-        pts[i] = {{points[i].x, points[i].y}, static_cast<std::uint32_t>(points[i].id)};
-    }
-    detail::GhostMesh mesh;
-    detail::delaunay_divide_and_conquer(pts, mesh, {}, {});
-    Serial s;
-    for (const Triangle& t : mesh.tris) s.tris.push_back(to_global(t, 0, 0));
-    if (points.size() >= 2) {
-        for (std::size_t i = 0; i < mesh.points.size(); ++i) s.ids.push_back(mesh.points[i].id);
-    }
-    return s;
-}
+using Serial = test::SerialKernel;
 
 struct Distributed {
     Serial gathered;
@@ -72,7 +54,7 @@ Distributed run(const std::vector<Point>& points,
 
 TEST(DistributedKernel, EqualsTheSerialKernelSlotForSlot) {
     for (const auto& c : test::dist_cases(6000)) {
-        const Serial serial = serial_kernel(c.points);
+        const Serial serial = test::serial_kernel(c.points);
         for (int ranks : {1, 2, 3, 4, 7, 16, 64}) {
             for (bool strided : {false, true}) {
                 const Distributed d = run(c.points, ranks, strided, 1);
@@ -91,7 +73,7 @@ TEST(DistributedKernel, EqualsTheSerialKernelSlotForSlot) {
 TEST(DistributedKernel, BandsWithoutRingsAreWidenedToTheSameSlots) {
     std::uint32_t widened = 0;
     for (const auto& c : test::dist_cases(4000)) {
-        const Serial serial = serial_kernel(c.points);
+        const Serial serial = test::serial_kernel(c.points);
         for (int ranks : {2, 7}) {
             const Distributed d = run(c.points, ranks, false, 0);
             EXPECT_TRUE(d.gathered.tris == serial.tris) << c.name << " on " << ranks;
@@ -103,7 +85,7 @@ TEST(DistributedKernel, BandsWithoutRingsAreWidenedToTheSameSlots) {
 
 TEST(DistributedKernel, RandomDelaysChangeNoSlot) {
     const auto c = test::dist_cases(5000).front();
-    const Serial serial = serial_kernel(c.points);
+    const Serial serial = test::serial_kernel(c.points);
     for (int ranks : {3, 16}) {
         EXPECT_TRUE(run(c.points, ranks, true, 1, 300).gathered.tris == serial.tris);
     }

@@ -114,6 +114,26 @@ Bytes to_bytes(std::span<const T> values) {
     if (!values.empty()) std::memcpy(out.data(), values.data(), values.size_bytes());
     return out;
 }
+/// Appends the bytes of one trivially copyable value (the native byte order: every rank of a
+/// job runs on the same architecture).
+template <class T>
+void append_value(Bytes& out, const T& value) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    const auto* p = reinterpret_cast<const std::byte*>(&value);
+    out.insert(out.end(), p, p + sizeof(T));
+}
+template <class T>
+std::vector<T> from_bytes(const Bytes& bytes);
+/// The values every rank sent, concatenated in source order.
+template <class T>
+std::vector<T> concatenated(const std::vector<Bytes>& in) {
+    std::vector<T> out;
+    for (const Bytes& b : in) {
+        const auto part = from_bytes<T>(b);
+        out.insert(out.end(), part.begin(), part.end());
+    }
+    return out;
+}
 template <class T>
 std::vector<T> from_bytes(const Bytes& bytes) {
     static_assert(std::is_trivially_copyable_v<T>);

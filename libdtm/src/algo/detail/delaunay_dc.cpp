@@ -182,14 +182,6 @@ private:
 
     [[nodiscard]] KernelAccess access() const noexcept { return {mesh_, pts_}; }
 
-    // The mesh's own accessors, short names for the base cases.
-    [[nodiscard]] VertexId& org(HalfEdge h) const noexcept { return mesh_.org(h); }
-    [[nodiscard]] VertexId dest(HalfEdge h) const noexcept { return mesh_.dest(h); }
-    [[nodiscard]] HalfEdge& twin(HalfEdge h) const noexcept { return mesh_.twin(h); }
-    void bond(HalfEdge a, HalfEdge b) const noexcept { mesh_.bond(a, b); }
-    void set_triangle(std::size_t t, VertexId a, VertexId b, VertexId c) const noexcept {
-        mesh_.set_triangle(t, a, b, c);
-    }
     [[nodiscard]] int orient(VertexId a, VertexId b, VertexId c) const noexcept {
         return access().orient(a, b, c);
     }
@@ -203,11 +195,12 @@ private:
         const std::array<std::size_t, 3> g{g0, g1, g2};
         const auto& v = mesh_.tris[t].v;
         for (unsigned i = 0; i < 3; ++i) {
-            set_triangle(g[i], v[(i + 1) % 3], v[i], ghost);
-            bond(half_edge(t, i), half_edge(g[i], 0));
+            mesh_.set_triangle(g[i], v[(i + 1) % 3], v[i], ghost);
+            mesh_.bond(half_edge(t, i), half_edge(g[i], 0));
         }
         // Along the hull (outer face on the left) ghost i is followed by ghost i - 1.
-        for (unsigned i = 0; i < 3; ++i) bond(half_edge(g[i], 1), half_edge(g[(i + 2) % 3], 2));
+        for (unsigned i = 0; i < 3; ++i)
+            mesh_.bond(half_edge(g[i], 1), half_edge(g[(i + 2) % 3], 2));
     }
 
     /// Two or three points, sorted by x by split(); put in the order of the frame. Uses the
@@ -225,30 +218,30 @@ private:
         const auto v0 = static_cast<VertexId>(lo);
         const std::size_t t = 2 * lo;
         if (n == 2) {
-            set_triangle(t, v0, v0 + 1, ghost);
-            set_triangle(t + 1, v0 + 1, v0, ghost);
-            bond(half_edge(t, 0), half_edge(t + 1, 0));
-            bond(half_edge(t, 1), half_edge(t + 1, 2));
-            bond(half_edge(t, 2), half_edge(t + 1, 1));
+            mesh_.set_triangle(t, v0, v0 + 1, ghost);
+            mesh_.set_triangle(t + 1, v0 + 1, v0, ghost);
+            mesh_.bond(half_edge(t, 0), half_edge(t + 1, 0));
+            mesh_.bond(half_edge(t, 1), half_edge(t + 1, 2));
+            mesh_.bond(half_edge(t, 2), half_edge(t + 1, 1));
             KernelAccess mesh = access();
             return {hull_handles(mesh, half_edge(t, 0), frame), {t + 2, t + 3}};
         }
         const int o = orient(v0, v0 + 1, v0 + 2);
         if (o == 0) {  // a chain v0 - v1 - v2: four ghosts around it
-            set_triangle(t, v0, v0 + 1, ghost);
-            set_triangle(t + 1, v0 + 1, v0 + 2, ghost);
-            set_triangle(t + 2, v0 + 2, v0 + 1, ghost);
-            set_triangle(t + 3, v0 + 1, v0, ghost);
-            bond(half_edge(t, 0), half_edge(t + 3, 0));
-            bond(half_edge(t + 1, 0), half_edge(t + 2, 0));
+            mesh_.set_triangle(t, v0, v0 + 1, ghost);
+            mesh_.set_triangle(t + 1, v0 + 1, v0 + 2, ghost);
+            mesh_.set_triangle(t + 2, v0 + 2, v0 + 1, ghost);
+            mesh_.set_triangle(t + 3, v0 + 1, v0, ghost);
+            mesh_.bond(half_edge(t, 0), half_edge(t + 3, 0));
+            mesh_.bond(half_edge(t + 1, 0), half_edge(t + 2, 0));
             for (std::size_t i = 0; i < 4; ++i) {
-                bond(half_edge(t + i, 1), half_edge(t + (i + 1) % 4, 2));
+                mesh_.bond(half_edge(t + i, 1), half_edge(t + (i + 1) % 4, 2));
             }
         } else {
             if (o > 0) {
-                set_triangle(t, v0, v0 + 1, v0 + 2);
+                mesh_.set_triangle(t, v0, v0 + 1, v0 + 2);
             } else {
-                set_triangle(t, v0, v0 + 2, v0 + 1);
+                mesh_.set_triangle(t, v0, v0 + 2, v0 + 1);
             }
             close_with_ghosts(t, t + 1, t + 2, t + 3);
         }

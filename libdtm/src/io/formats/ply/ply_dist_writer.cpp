@@ -25,22 +25,8 @@
 namespace dtm::io {
 namespace {
 
-template <class T>
-void put(std::vector<std::byte>& out, T value) {
-    static_assert(std::endian::native == std::endian::little);
-    const auto* p = reinterpret_cast<const std::byte*>(&value);
-    out.insert(out.end(), p, p + sizeof(T));
-}
-
-template <class T>
-std::vector<T> gathered(const std::vector<dist::Bytes>& in) {
-    std::vector<T> out;
-    for (const auto& b : in) {
-        const auto part = dist::from_bytes<T>(b);
-        out.insert(out.end(), part.begin(), part.end());
-    }
-    return out;
-}
+static_assert(std::endian::native == std::endian::little,
+              "the binary PLY is little endian: the values are appended as they are in memory");
 
 /// The owner of each kernel position: ranks hold contiguous runs, in rank order.
 class PositionOwners {
@@ -48,7 +34,7 @@ public:
     PositionOwners(dist::Comm& comm, const dist::LocalMesh& mesh) {
         const std::uint64_t range[2] = {mesh.first_vertex,
                                         mesh.first_vertex + mesh.own_points.size()};
-        const auto all = gathered<std::uint64_t>(
+        const auto all = dist::concatenated<std::uint64_t>(
             comm.allgatherv(dist::to_bytes(std::span<const std::uint64_t>(range, 2))));
         for (std::size_t r = 0; r < all.size() / 2; ++r) {
             if (all[2 * r + 1] > all[2 * r])
@@ -79,17 +65,18 @@ std::unordered_map<std::uint64_t, std::uint64_t> vertex_numbers(dist::Comm& comm
     std::vector<std::uint64_t> foreign = mesh.foreign_vertices;
     std::sort(foreign.begin(), foreign.end());
     std::vector<dist::Bytes> ask(ranks);
-    for (const std::uint64_t v : foreign) put(ask[static_cast<std::size_t>(owners.of(v))], v);
+    for (const std::uint64_t v : foreign)
+        dist::append_value(ask[static_cast<std::size_t>(owners.of(v))], v);
     const auto asked = comm.alltoallv(std::move(ask));
     std::vector<dist::Bytes> answer(ranks);
     for (std::size_t s = 0; s < ranks; ++s) {
         for (const std::uint64_t v : dist::from_bytes<std::uint64_t>(asked[s])) {
-            put(answer[s], v);
-            put(answer[s], k.input_ids[v - mesh.first_vertex]);
+            dist::append_value(answer[s], v);
+            dist::append_value(answer[s], k.input_ids[v - mesh.first_vertex]);
         }
     }
     std::unordered_map<std::uint64_t, std::uint64_t> numbers;
-    const auto answered = gathered<std::uint64_t>(comm.alltoallv(std::move(answer)));
+    const auto answered = dist::concatenated<std::uint64_t>(comm.alltoallv(std::move(answer)));
     for (std::size_t i = 0; i + 1 < answered.size(); i += 2)
         numbers.emplace(answered[i], answered[i + 1]);
     return numbers;
@@ -112,7 +99,7 @@ void write_distributed_ply(dist::Comm& comm,
             mine.push_back(mesh.first_slot + s);
         }
     }
-    const auto ghosts = gathered<std::uint64_t>(
+    const auto ghosts = dist::concatenated<std::uint64_t>(
         comm.allgatherv(dist::to_bytes(std::span<const std::uint64_t>(mine))));
     const std::uint64_t slots = static_cast<std::uint64_t>(
         comm.allreduce(static_cast<std::int64_t>(mesh.tris.size()), dist::Reduce::sum));
@@ -152,9 +139,9 @@ void write_distributed_ply(dist::Comm& comm,
         std::vector<std::byte> block;
         block.reserve(24 * merged.vertices.size());
         for (const dist::Vertex& v : merged.vertices) {
-            put(block, v.p.x);
-            put(block, v.p.y);
-            put(block, v.p.z);
+            dist::append_value(block, v.p.x);
+            dist::append_value(block, v.p.y);
+            dist::append_value(block, v.p.z);
         }
         file->write_at(header.size() + 24 * merged.first_vertex, block);
         // Faces: runs of slots below R in place, the movers one by one into the holes.
@@ -177,7 +164,7 @@ void write_distributed_ply(dist::Comm& comm,
             std::vector<std::byte>& out = slot < real_end ? block : one;
             if (slot < real_end && block.empty()) run_start = slot;
             out.push_back(std::byte{3});
-            for (const std::uint32_t v : t.v) put(out, number(v));
+            for (const std::uint32_t v : t.v) dist::append_value(out, number(v));
             if (slot >= real_end) {
                 flush();
                 // The k-th real slot at or above R fills the k-th hole below R.
