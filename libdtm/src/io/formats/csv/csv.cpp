@@ -550,3 +550,32 @@ ReadResult parse_csv_text(std::string_view text,
 
 }  // namespace csv
 }  // namespace dtm::io
+
+namespace dtm::io::csv {
+
+ReadResult parse_points_range(std::string_view text,
+                              std::size_t line,
+                              const Layout& layout,
+                              const InputFile& file,
+                              const ReadOptions& options) {
+    const Columns columns(layout, InputRole::points);
+    if (columns.z < 0) {
+        throw InputError(file.path, layout.header_line, 0,
+                         "expected a z column for points (z, elev, elevation, height, h, alt; "
+                         "or `columns`)");
+    }
+    RowParser parser(columns, file, options);
+    parser.parse(text, 0, line, {});
+    parser.flush_line();
+    parser.shrink();
+    ReadResult& result = parser.result();
+    result.summary.path = file.path;
+    result.summary.format = "text";
+    if (columns.geographic) {
+        result.crs_wkt = "EPSG:4326";
+        result.summary.crs = "EPSG:4326";
+    }
+    return std::move(result);
+}
+
+}  // namespace dtm::io::csv

@@ -139,6 +139,15 @@ struct Layout {
                                    const std::string& columns,
                                    bool polyline);
 
+/// The survey points of the data lines of @p text (whole lines, the line before it being
+/// @p line) under @p layout: what read_csv gives for those lines (the distributed reader's byte
+/// ranges, csv_distributed.cpp). @throws InputError as read_csv.
+[[nodiscard]] ReadResult parse_points_range(std::string_view text,
+                                            std::size_t line,
+                                            const Layout& layout,
+                                            const InputFile& file,
+                                            const ReadOptions& options);
+
 /// Index of the first column with role @p f, or -1.
 [[nodiscard]] int column_of(const Layout& layout, Field f) noexcept;
 

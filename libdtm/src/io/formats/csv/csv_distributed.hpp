@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: MIT
+/// @file
+/// @brief Survey points of a text file read by all ranks at once, each its byte range (R-D2 of
+/// docs/distributed.md).
+#pragma once
+
+#include <vector>
+
+#include "dtm/dist/comm.hpp"
+#include "dtm/dist/duplicates.hpp"
+#include "dtm/io/reader.hpp"
+
+namespace dtm::io {
+
+struct DistributedPoints {
+    std::vector<dist::InputPoint> points;  ///< this rank's, in file order
+    std::uint64_t first_input = 0;         ///< global index of the first of them
+    std::uint64_t total = 0;               ///< points over all ranks
+    std::uint64_t skipped_lines = 0;       ///< over all ranks (with skip_bad_lines)
+};
+
+/// Collective. Every rank detects the layout from the file's head (the same on every rank),
+/// takes the equal share [r S / P, (r + 1) S / P) of the data bytes moved to the next line
+/// starts, numbers its lines by an exclusive scan of the ranges' line counts, and parses them as
+/// read_csv does. The points, in order over the ranks, are read_csv's. The first bad line of the
+/// file is reported on every rank with read_csv's message (the smallest line number wins an
+/// integer reduction, its rank broadcasts the text).
+/// @throws InputError on every rank; Error when the file cannot be read.
+DistributedPoints read_text_points_distributed(dist::Comm& comm,
+                                               const InputFile& file,
+                                               const ReadOptions& options);
+
+}  // namespace dtm::io
