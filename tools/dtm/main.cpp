@@ -10,10 +10,14 @@
 #include <csignal>
 #include <exception>
 #include <iostream>
+#include <memory>
+#include <string>
 #include <vector>
 
 #include "command.hpp"
+#include "distributed.hpp"
 #include "dtm/core/error.hpp"
+#include "dtm/dist/mpi_comm.hpp"
 #include "option_names.hpp"
 
 void keep_freed_memory() noexcept;  // huge_page_new.cpp
@@ -29,6 +33,20 @@ int main(int argc, char** argv) {
     // for a full disk, instead of SIGXFSZ killing the process with a core dump.
     std::signal(SIGXFSZ, SIG_IGN);
     using namespace dtm::cli;
+    // One rank of `mpirun -np P dtm ...` (P > 1): the job's communicator for the subcommand;
+    // errors are elected, so every rank exits with the same code and rank 0 alone prints.
+    std::unique_ptr<dtm::dist::MpiSession> session;
+    if (dtm::dist::launched_ranks() > 1) {
+        if (!dtm::dist::mpi_built()) {
+            std::cerr << "dtm: started by mpirun, but this dtm was built without MPI\n";
+            return 2;
+        }
+        session = std::make_unique<dtm::dist::MpiSession>(argc, argv);
+        set_distributed_comm(&session->world());
+    }
+    const auto say = [](const std::string& text) {
+        if (prints()) std::cerr << "dtm: " << text << '\n';
+    };
     CLI::App app{
         "dtm: survey points and breaklines to a constrained Delaunay TIN, DEMs, contours "
         "and 3-D surfaces"};
@@ -54,12 +72,17 @@ int main(int argc, char** argv) {
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
-        if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
-        std::cerr << "dtm: " << e.what() << "\nRun 'dtm --help' for more information.\n";
+        if (e.get_exit_code() == 0) return prints() ? app.exit(e) : 0;  // --help, --version
+        say(std::string(e.what()) + "\nRun 'dtm --help' for more information.");
         return 2;
     }
     if (!run) {
-        std::cerr << "dtm: a subcommand is required\n" << app.help();
+        say("a subcommand is required\n" + app.help());
+        return 2;
+    }
+    if (distributed_comm() != nullptr && chosen != "tin") {
+        say("only `dtm tin` runs distributed (under mpirun) yet; run `dtm " + std::string(chosen) +
+            "` on one machine");
         return 2;
     }
     // The products and analyses reuse freed memory instead of fresh pages (memory_policy.cpp);
@@ -71,19 +94,19 @@ int main(int argc, char** argv) {
     try {
         return run ? run() : 0;
     } catch (const dtm::Cancelled&) {
-        std::cerr << "dtm: cancelled\n";
+        say("cancelled");
         return 130;
     } catch (const dtm::UsageError& e) {
-        std::cerr << "dtm: " << cli_text(e.what()) << '\n';
+        say(cli_text(e.what()));
         return 2;
     } catch (const dtm::InputError& e) {
-        std::cerr << "dtm: " << cli_text(e.what()) << '\n';
+        say(cli_text(e.what()));
         return 2;
     } catch (const std::bad_alloc&) {
-        std::cerr << "dtm: out of memory\n";
+        say("out of memory");
         return 1;
     } catch (const std::exception& e) {
-        std::cerr << "dtm: " << cli_text(e.what()) << '\n';
+        say(cli_text(e.what()));
         return 1;
     }
 }

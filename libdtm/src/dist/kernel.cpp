@@ -27,6 +27,7 @@
 #include "algo/detail/delaunay_dc.hpp"
 #include "dist/band_merge.hpp"
 #include "dist/tree.hpp"
+#include "dtm/core/error.hpp"
 
 namespace dtm::dist {
 namespace {
@@ -110,7 +111,14 @@ public:
         publish_local_hulls();
         for (auto level = cross_by_depth.rbegin(); level != cross_by_depth.rend(); ++level) {
             if (level->empty()) continue;
-            progress.check();
+            // A stop request on any rank stops every rank (no rank may leave the collectives).
+            std::int64_t stop = 0;
+            try {
+                progress.check();
+            } catch (const Cancelled&) {
+                stop = 1;
+            }
+            if (comm_.allreduce(stop, Reduce::max) != 0) throw Cancelled();
             merge_level(*level, out);
             ++out.stats.levels;
         }

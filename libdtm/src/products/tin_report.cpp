@@ -84,6 +84,7 @@ std::string tin_stats_json(const Surface& surface,
     const TriangulateStats& s = result.stats;
     io::JsonWriter json;
     json.begin_object({}, Layout::inline_);
+    json.value("ranks", std::size_t{1});
     json.value("points_in", s.points_in);
     json.value("duplicates_merged", s.duplicates_merged);
     json.value("skipped_lines", skipped_lines);
@@ -113,6 +114,27 @@ std::string tin_stats_json(const Surface& surface,
     json.value("total", seconds.total);
     json.end();
     optimize_json(json, s.optimize);
+    json.end();
+    return json.str();
+}
+
+std::string distributed_tin_stats_json(const DistributedTinResult& r, double total_seconds) {
+    using Layout = io::JsonWriter::Layout;
+    io::JsonWriter json;
+    json.begin_object({}, Layout::inline_);
+    json.value("ranks", static_cast<std::size_t>(r.ranks));
+    json.value("points_in", r.points);
+    json.value("duplicates_merged", r.points - r.vertices);
+    json.value("skipped_lines", r.skipped_lines);
+    json.value("vertices", r.vertices);
+    json.value("triangles", r.triangles);
+    json.value("constrained_edges", std::size_t{0});
+    json.value("bytes_sent", r.bytes_sent);
+    json.value("band_triangles", r.band_triangles);
+    json.value("widenings", static_cast<std::size_t>(r.widenings));
+    json.begin_object("seconds", Layout::inline_);
+    json.value("total", total_seconds);
+    json.end();
     json.end();
     return json.str();
 }

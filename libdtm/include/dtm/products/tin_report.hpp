@@ -12,6 +12,7 @@
 #include "dtm/algo/optimize.hpp"
 #include "dtm/algo/triangulate.hpp"
 #include "dtm/io/json_writer.hpp"
+#include "dtm/products/distributed_tin.hpp"
 #include "dtm/products/surface.hpp"
 
 namespace dtm::products {
@@ -37,5 +38,10 @@ struct TinTimes {
 [[nodiscard]] std::string tin_stats_json(const Surface& surface,
                                          std::size_t skipped_lines,
                                          const TinTimes& seconds);
+
+/// The `--stats` line of a distributed `dtm tin` (the serial fields it has, the ranks and what
+/// they exchanged).
+[[nodiscard]] std::string distributed_tin_stats_json(const DistributedTinResult& result,
+                                                     double total_seconds);
 
 }  // namespace dtm::products

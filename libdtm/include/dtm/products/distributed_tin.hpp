@@ -1,0 +1,46 @@
+// SPDX-License-Identifier: MIT
+/// @file
+/// @brief `mpirun -np P dtm tin POINTS -o tin.ply`: the TIN of a survey point list built on all
+/// ranks, the single-machine PLY byte for byte (issue 18; docs/distributed.md says what is
+/// covered: one text point list, exact duplicates, no breaklines yet).
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+
+#include "dtm/algo/triangulate.hpp"
+#include "dtm/core/progress.hpp"
+#include "dtm/dist/comm.hpp"
+#include "dtm/io/reader.hpp"
+
+namespace dtm::products {
+
+struct DistributedTinOptions {
+    io::InputFile input;      ///< a text point list (csv, txt, xyz)
+    io::ReadOptions read;     ///< columns, skip_bad_lines
+    std::string default_crs;  ///< the CRS of the points (the file carries none)
+    DuplicateRule duplicates = DuplicateRule::first;
+    std::filesystem::path output;  ///< a .ply
+};
+
+struct DistributedTinResult {
+    int ranks = 1;
+    std::uint64_t points = 0;    ///< input points
+    std::uint64_t vertices = 0;  ///< after exact duplicates merged
+    std::uint64_t triangles = 0;
+    std::uint64_t skipped_lines = 0;
+    std::uint64_t bytes_sent = 0;  ///< by all ranks, every phase
+    std::uint64_t band_triangles = 0;
+    std::uint32_t widenings = 0;
+};
+
+/// Collective: reads the points by byte ranges, merges exact duplicates, spreads the kernel's
+/// tree over the ranks, triangulates and writes the PLY (MPI-IO), as `dtm tin` does on one
+/// machine for the same input and options.
+/// @throws InputError (the serial reader's and triangulation's messages) or Error on every rank.
+DistributedTinResult distributed_tin(dist::Comm& comm,
+                                     const DistributedTinOptions& options,
+                                     const Progress& progress);
+
+}  // namespace dtm::products

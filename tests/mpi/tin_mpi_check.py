@@ -1,0 +1,88 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+"""`mpirun -np P dtm tin POINTS.csv -o tin.ply` against `dtm tin` on one process (issue 18):
+the same PLY bytes, the serial reader's message and exit code 2 for a bad line in the last
+rank's byte range (printed once), a clear refusal of what the distributed run does not take yet,
+and `--stats` naming the ranks. Usage: tin_mpi_check.py DTM MPIEXEC NP"""
+import json
+import os
+import random
+import subprocess
+import sys
+import tempfile
+
+dtm, mpiexec, ranks = sys.argv[1], sys.argv[2], int(sys.argv[3])
+failures = []
+
+
+def check(ok, what):
+    if not ok:
+        failures.append(what)
+        print("FAIL:", what, file=sys.stderr)
+
+
+def run(args, mpi):
+    command = ([mpiexec, "-np", str(ranks)] if mpi else []) + [dtm] + args
+    return subprocess.run(command, capture_output=True, text=True, timeout=240)
+
+
+def write_points(path, n, bad_line=None):
+    rng = random.Random(20261202)
+    with open(path, "w") as out:
+        out.write("# survey in S-JTSK\nid,x,y,z\n")
+        for i in range(n):
+            x = -750000 - rng.randrange(200000) / 100.0
+            y = -1050000 - rng.randrange(200000) / 100.0
+            if i % 50 == 7:  # an exact duplicate of the previous point, another height
+                out.write(f"D{i},{last[0]},{last[1]},{300 + i % 7}\n")
+            out.write(f"P{i},{x},{y},{250 + (i % 1000) / 10.0}\n")
+            last = (x, y)
+            if i % 333 == 0:
+                out.write("\n# a comment\n")
+        if bad_line:
+            out.write("P-bad,-750000.25,no-number,251\n")
+
+
+with tempfile.TemporaryDirectory() as tmp:
+    points = os.path.join(tmp, "points.csv")
+    write_points(points, 20000)
+    for rule in ("first", "mean"):
+        serial = run([ "tin", points, "-o", os.path.join(tmp, "serial.ply"), "--crs", "EPSG:5514",
+                      "--duplicates", rule, "-q"], False)
+        dist = run(["tin", points, "-o", os.path.join(tmp, "dist.ply"), "--crs", "EPSG:5514",
+                    "--duplicates", rule, "-q"], True)
+        check(serial.returncode == 0, f"serial dtm tin: {serial.stderr}")
+        check(dist.returncode == 0, f"mpirun dtm tin ({rule}): exit {dist.returncode}: {dist.stderr}")
+        if serial.returncode == 0 and dist.returncode == 0:
+            with open(os.path.join(tmp, "serial.ply"), "rb") as a, open(os.path.join(tmp, "dist.ply"), "rb") as b:
+                check(a.read() == b.read(), f"the PLY differs from the serial one ({rule})")
+
+    stats = run(["tin", points, "-o", os.path.join(tmp, "stats.ply"), "--stats"], True)
+    check(stats.returncode == 0, f"--stats: {stats.stderr}")
+    if stats.returncode == 0:
+        lines = [l for l in stats.stdout.splitlines() if l.strip()]
+        check(len(lines) == 1, f"--stats printed once: {stats.stdout!r}")
+        report = json.loads(lines[0])
+        check(report.get("ranks") == ranks and report.get("points_in") == 20400, f"--stats: {report}")
+
+    bad = os.path.join(tmp, "bad.csv")
+    write_points(bad, 20000, bad_line=True)
+    serial = run(["tin", bad, "-o", os.path.join(tmp, "x.ply"), "-q"], False)
+    dist = run(["tin", bad, "-o", os.path.join(tmp, "y.ply"), "-q"], True)
+    check(serial.returncode == 2 and dist.returncode == 2,
+          f"bad line: exit {serial.returncode} / {dist.returncode}")
+    message = serial.stderr.strip().splitlines()[-1] if serial.stderr.strip() else ""
+    check(message.startswith("dtm: ") and dist.stderr.count(message) == 1,
+          f"bad line reported once with the serial message {message!r}: {dist.stderr!r}")
+    check(not os.path.exists(os.path.join(tmp, "y.ply")), "no output after a bad line")
+
+    if ranks > 1:  # -np 1 is the single-process run, which takes everything
+        refused = run(["tin", points, "--breaklines", points, "-o", os.path.join(tmp, "z.ply")], True)
+        check(refused.returncode == 2 and refused.stderr.count("does not take") == 1,
+              f"breaklines refused: exit {refused.returncode}: {refused.stderr!r}")
+        other = run(["info", points], True)
+        check(other.returncode == 2 and "only `dtm tin`" in other.stderr,
+              f"dtm info under mpirun: {other.stderr!r}")
+
+print("tin on", ranks, "MPI ranks:", "all checks passed" if not failures else f"{len(failures)} failed")
+sys.exit(1 if failures else 0)

@@ -1,0 +1,16 @@
+// SPDX-License-Identifier: MIT
+/// @file
+/// @brief The MPI job this process is a rank of, when started by `mpirun -np P dtm ...` (P > 1).
+#pragma once
+
+#include "dtm/dist/comm.hpp"
+
+namespace dtm::cli {
+
+/// The job's communicator, or null when dtm runs on its own.
+[[nodiscard]] dist::Comm* distributed_comm() noexcept;
+void set_distributed_comm(dist::Comm* comm) noexcept;
+/// True where messages and progress are printed: rank 0, or the only process.
+[[nodiscard]] bool prints() noexcept;
+
+}  // namespace dtm::cli
