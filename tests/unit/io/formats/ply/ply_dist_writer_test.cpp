@@ -79,8 +79,9 @@ TEST(DistributedPly, EqualsTheSerialFileByteForByte) {
 
 TEST(DistributedPly, AnUnwritableFolderFailsOnEveryRankAndLeavesNothing) {
     TerrainInput input;
-    for (const auto& p : test::dist_cases(500).front().points)
-        input.points.push_back({p.x, p.y, 1.0});
+    // The cases live as long as the loop (a range over a temporary's member would not).
+    const auto cases = test::dist_cases(500);
+    for (const auto& p : cases.front().points) input.points.push_back({p.x, p.y, 1.0});
     const test::ScratchDir dir;
     EXPECT_THROW(distributed_ply(input, 3, dir.path() / "missing" / "tin.ply", {}), Error);
     EXPECT_TRUE(std::filesystem::is_empty(dir.path()));
