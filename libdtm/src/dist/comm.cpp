@@ -4,7 +4,10 @@
 #include "dtm/dist/comm.hpp"
 
 #include <chrono>
+#include <climits>
 #include <thread>
+
+#include "dtm/core/error.hpp"
 
 namespace dtm::dist {
 
@@ -67,6 +70,17 @@ void Comm::bcast(Bytes& data, int root) {
     const bool sends = rank() == root;
     begin_call(sends ? data.size() * others : 0, sends && !data.empty() ? others : 0);
     do_bcast(data, root);
+}
+
+void throw_first_error(Comm& comm, const std::string& error) {
+    const std::int64_t first = comm.allreduce(error.empty() ? INT64_MAX : comm.rank(), Reduce::min);
+    Bytes text;
+    if (comm.rank() == first) {
+        const auto* p = reinterpret_cast<const std::byte*>(error.data());
+        text.assign(p, p + error.size());
+    }
+    comm.bcast(text, static_cast<int>(first));
+    throw Error(std::string(reinterpret_cast<const char*>(text.data()), text.size()));
 }
 
 void Comm::barrier() {

@@ -110,6 +110,13 @@ struct LocalMesh {
         if (own_vertex(v)) return own_points[v - first_vertex];
         return foreign_xy[foreign_index.at(v)];
     }
+    /// The real triangles among the slots (the others are hull ghosts or unused).
+    [[nodiscard]] std::uint64_t real_triangles() const noexcept {
+        std::uint64_t n = 0;
+        for (const Triangle& t : tris) n += detail::is_ghost_triangle(t) ? 0 : 1;
+        return n;
+    }
+
     /// Every slot in global numbers (tests, checks).
     [[nodiscard]] std::vector<GlobalTriangle> global_triangles() const {
         std::vector<GlobalTriangle> out;

@@ -68,7 +68,7 @@ public:
         // Collective on every rank that opened it: the job fails together below otherwise.
         if (comm_.allreduce(file_ == MPI_FILE_NULL ? 1 : 0, Reduce::max) != 0) {
             if (file_ != MPI_FILE_NULL) MPI_File_close(&file_);
-            fail_everywhere();
+            throw_first_error(comm_, error_);
         }
         MPI_File_set_errhandler(file_, MPI_ERRORS_RETURN);
         const int truncated = MPI_File_set_size(file_, 0);
@@ -101,7 +101,8 @@ public:
             if (closed != MPI_SUCCESS) remember(closed, "write failed");
             file_ = MPI_FILE_NULL;
         }
-        if (comm_.allreduce(error_.empty() ? 0 : 1, Reduce::max) != 0) fail_everywhere();
+        if (comm_.allreduce(error_.empty() ? 0 : 1, Reduce::max) != 0)
+            throw_first_error(comm_, error_);
     }
 
 private:
@@ -112,17 +113,6 @@ private:
         MPI_Error_string(code, text, &length);
         error_ = "cannot write " + path_ + ": " + what + " (" +
                  std::string(text, static_cast<std::size_t>(length)) + ")";
-    }
-    [[noreturn]] void fail_everywhere() {
-        const std::int64_t first =
-            comm_.allreduce(error_.empty() ? INT64_MAX : comm_.rank(), Reduce::min);
-        Bytes text;
-        if (comm_.rank() == first) {
-            const auto* p = reinterpret_cast<const std::byte*>(error_.data());
-            text.assign(p, p + error_.size());
-        }
-        comm_.bcast(text, static_cast<int>(first));
-        throw Error(std::string(reinterpret_cast<const char*>(text.data()), text.size()));
     }
 
     Comm& comm_;

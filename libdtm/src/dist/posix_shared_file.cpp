@@ -18,13 +18,13 @@ namespace {
 class PosixSharedFile final : public SharedFile {
 public:
     PosixSharedFile(Comm& comm, std::string path) : comm_(comm), path_(std::move(path)) {
-        std::int64_t failed = 0;
         if (comm_.rank() == 0) {
             fd_ = ::open(path_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
             if (fd_ < 0) remember("cannot create the file");
         }
-        failed = comm_.allreduce(fd_ < 0 && comm_.rank() == 0 ? 1 : 0, Reduce::max);
-        if (failed != 0) fail_everywhere();
+        if (comm_.allreduce(error_.empty() ? 0 : 1, Reduce::max) != 0) {
+            throw_first_error(comm_, error_);
+        }
         if (comm_.rank() != 0) {
             fd_ = ::open(path_.c_str(), O_WRONLY | O_CLOEXEC);
             if (fd_ < 0) remember("cannot open the file");
@@ -55,24 +55,14 @@ public:
             if (::close(fd_) != 0 && error_.empty()) remember("write failed");
             fd_ = -1;
         }
-        if (comm_.allreduce(error_.empty() ? 0 : 1, Reduce::max) != 0) fail_everywhere();
+        if (comm_.allreduce(error_.empty() ? 0 : 1, Reduce::max) != 0)
+            throw_first_error(comm_, error_);
     }
 
 private:
     void remember(const char* what) {
         if (error_.empty())
             error_ = "cannot write " + path_ + ": " + what + " (" + std::strerror(errno) + ")";
-    }
-    /// The message of the lowest failing rank, on every rank.
-    [[noreturn]] void fail_everywhere() {
-        const std::int64_t first =
-            comm_.allreduce(error_.empty() ? INT64_MAX : comm_.rank(), Reduce::min);
-        Bytes text;
-        if (comm_.rank() == first)
-            text.assign(reinterpret_cast<const std::byte*>(error_.data()),
-                        reinterpret_cast<const std::byte*>(error_.data()) + error_.size());
-        comm_.bcast(text, static_cast<int>(first));
-        throw Error(std::string(reinterpret_cast<const char*>(text.data()), text.size()));
     }
 
     Comm& comm_;

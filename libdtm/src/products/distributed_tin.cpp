@@ -21,22 +21,21 @@ namespace dtm::products {
 namespace {
 
 /// triangulate()'s refusals of degenerate input, with its messages, decided on every rank.
-void check_not_degenerate(dist::Comm& comm,
-                          std::uint64_t vertices,
-                          const dist::DistributedMesh& k) {
+/// @return the triangles of the TIN over all ranks.
+std::uint64_t check_not_degenerate(dist::Comm& comm,
+                                   std::uint64_t vertices,
+                                   const dist::DistributedMesh& k) {
     if (vertices < 3) {
         throw InputError("triangulation needs at least 3 distinct points; the input has " +
                          std::to_string(vertices));
     }
-    std::int64_t real = 0;
-    for (const Triangle& t : k.mesh.tris) {
-        real +=
-            t.v[0] != detail::ghost && t.v[1] != detail::ghost && t.v[2] != detail::ghost ? 1 : 0;
-    }
-    if (comm.allreduce(real, dist::Reduce::sum) == 0) {
+    const auto triangles = static_cast<std::uint64_t>(
+        comm.allreduce(static_cast<std::int64_t>(k.mesh.real_triangles()), dist::Reduce::sum));
+    if (triangles == 0) {
         throw InputError("all " + std::to_string(vertices) +
                          " distinct points are collinear: there is no surface to triangulate");
     }
+    return triangles;
 }
 
 /// Progress on the ranks that show it; a stop request is agreed on by the steps' reductions.
@@ -70,10 +69,7 @@ DistributedTinResult distributed_tin(dist::Comm& comm,
                 "geographic points yet)");
         }
         if (io::crs_is_sjtsk(crs_wkt)) {
-            TerrainInput t;
-            for (const dist::InputPoint& p : read.points) t.points.push_back(p.p);
-            io::sjtsk_to_east_north(t);
-            for (std::size_t i = 0; i < t.points.size(); ++i) read.points[i].p = t.points[i];
+            for (dist::InputPoint& p : read.points) io::sjtsk_to_east_north(p.p.x, p.p.y);
         }
     }
     result.points = read.total;
@@ -90,19 +86,13 @@ DistributedTinResult distributed_tin(dist::Comm& comm,
         dist::partition_points(comm, std::move(points), {}, progress.sub(0.2, 0.4));
     const dist::DistributedMesh kernel =
         dist::triangulate_share(comm, share, {}, progress.sub(0.4, 0.8));
-    check_not_degenerate(comm, merged.total_vertices, kernel);
+    result.triangles = check_not_degenerate(comm, merged.total_vertices, kernel);
     result.vertices = merged.total_vertices;
 
     report(progress, 0.8, "writing");
     io::TinWriteOptions write;
     write.crs_wkt = crs_wkt;
     io::write_distributed_ply(comm, merged, kernel, options.output, write);
-    std::int64_t real = 0;
-    for (const Triangle& t : kernel.mesh.tris) {
-        real +=
-            t.v[0] != detail::ghost && t.v[1] != detail::ghost && t.v[2] != detail::ghost ? 1 : 0;
-    }
-    result.triangles = static_cast<std::uint64_t>(comm.allreduce(real, dist::Reduce::sum));
     std::int64_t bytes = 0;
     for (const auto& [phase, t] : comm.traffic()) bytes += static_cast<std::int64_t>(t.bytes);
     result.bytes_sent = static_cast<std::uint64_t>(comm.allreduce(bytes, dist::Reduce::sum));

@@ -50,6 +50,12 @@ public:
     virtual void close() = 0;
 };
 
+class Comm;
+
+/// Collective, for a failure some ranks met: throws Error on every rank with the message of the
+/// lowest rank whose @p error is not empty (the others pass an empty one).
+[[noreturn]] void throw_first_error(Comm& comm, const std::string& error);
+
 class Comm {
 public:
     Comm() = default;

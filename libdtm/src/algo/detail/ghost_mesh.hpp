@@ -70,6 +70,11 @@ constexpr std::size_t tri_of(HalfEdge h) noexcept { return h >> 2; }
 constexpr HalfEdge next(HalfEdge h) noexcept { return (h & 3u) == 2 ? h - 2 : h + 1; }
 constexpr HalfEdge prev(HalfEdge h) noexcept { return (h & 3u) == 0 ? h + 2 : h - 1; }
 
+/// A slot holds a ghost triangle (or is unused) when any corner is the ghost vertex.
+[[nodiscard]] inline bool is_ghost_triangle(const Triangle& t) noexcept {
+    return std::max({t.v[0], t.v[1], t.v[2]}) == ghost;  // the ghost vertex is the largest id
+}
+
 /// The kernel's output: triangles with ghosts, over the points in kernel order; with
 /// constraints, their ConstraintBits per half-edge (both halves of an edge carry the same).
 struct GhostMesh {
@@ -105,11 +110,7 @@ struct GhostMesh {
     }
     /// The triangle of @p h is real (no corner is the ghost vertex).
     [[nodiscard]] bool is_real(HalfEdge h) const noexcept { return !is_ghost(h >> 2); }
-    /// A slot holds a ghost triangle (or is unused) when any corner is the ghost vertex.
-    [[nodiscard]] bool is_ghost(std::size_t t) const noexcept {
-        const auto& v = tris[t].v;
-        return std::max({v[0], v[1], v[2]}) == ghost;  // the ghost vertex is the largest id
-    }
+    [[nodiscard]] bool is_ghost(std::size_t t) const noexcept { return is_ghost_triangle(tris[t]); }
 };
 
 }  // namespace dtm::detail

@@ -111,16 +111,19 @@ bool crs_equivalent(const std::string& a, const std::string& b) {
     return sa.IsSame(&sb) != 0;
 }
 
+bool sjtsk_to_east_north(double& x, double& y) noexcept {
+    if (x <= 0.0 || y <= 0.0) return false;
+    const double y_west = std::min(x, y);
+    const double x_south = std::max(x, y);
+    x = -y_west;
+    y = -x_south;
+    return true;
+}
+
 std::size_t sjtsk_to_east_north(TerrainInput& terrain) {
     std::size_t count = 0;
-    for_each_vertex(terrain, [&count](double& x, double& y) {
-        if (x <= 0.0 || y <= 0.0) return;
-        const double y_west = std::min(x, y);
-        const double x_south = std::max(x, y);
-        x = -y_west;
-        y = -x_south;
-        ++count;
-    });
+    for_each_vertex(terrain,
+                    [&count](double& x, double& y) { count += sjtsk_to_east_north(x, y) ? 1 : 0; });
     return count;
 }
 

@@ -46,9 +46,11 @@ inline constexpr int crs_match_confidence = 90;
 [[nodiscard]] bool crs_is_sjtsk(const std::string& wkt);
 [[nodiscard]] bool crs_equivalent(const std::string& a, const std::string& b);
 
-/// Rewrites every vertex with positive x and y, taken as the traditional S-JTSK (Y, X) in either
+/// Rewrites a position with positive x and y, taken as the traditional S-JTSK (Y, X) in either
 /// column order (Y < X over the whole Czech Republic), as Krovak East-North: E = -Y, N = -X.
-/// @returns how many vertices were rewritten.
+/// @returns whether it was rewritten.
+bool sjtsk_to_east_north(double& x, double& y) noexcept;
+/// The same for every vertex of @p terrain. @returns how many were rewritten.
 std::size_t sjtsk_to_east_north(TerrainInput& terrain);
 
 struct UtmZone {

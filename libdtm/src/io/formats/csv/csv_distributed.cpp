@@ -8,16 +8,13 @@
 // serial reader reports (the first bad line in file order).
 #include "io/formats/csv/csv_distributed.hpp"
 
-#include <fcntl.h>
-#include <unistd.h>
-
 #include <algorithm>
-#include <cerrno>
-#include <cstring>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "dtm/core/error.hpp"
+#include "io/detail/file_bytes.hpp"
 #include "io/formats/csv/csv_detail.hpp"
 
 namespace dtm::io {
@@ -25,64 +22,20 @@ namespace {
 
 constexpr std::size_t head_bytes = std::size_t{1} << 16;
 
-class ReadOnlyFile {
-public:
-    explicit ReadOnlyFile(const std::filesystem::path& path) : path_(path) {
-        fd_ = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-        if (fd_ < 0) fail("cannot open the file");
-        const off_t end = ::lseek(fd_, 0, SEEK_END);
-        if (end < 0) fail("cannot read the file");
-        size_ = static_cast<std::size_t>(end);
-    }
-    ReadOnlyFile(const ReadOnlyFile&) = delete;
-    ReadOnlyFile& operator=(const ReadOnlyFile&) = delete;
-    ~ReadOnlyFile() { ::close(fd_); }
-
-    [[nodiscard]] std::size_t size() const noexcept { return size_; }
-    /// Bytes [from, to) of the file.
-    [[nodiscard]] std::string read(std::size_t from, std::size_t to) const {
-        std::string out(to - from, '\0');
-        std::size_t done = 0;
-        while (done < out.size()) {
-            const ssize_t n =
-                ::pread(fd_, out.data() + done, out.size() - done, static_cast<off_t>(from + done));
-            if (n < 0 && errno == EINTR) continue;
-            if (n <= 0) fail("cannot read the file");
-            done += static_cast<std::size_t>(n);
-        }
-        return out;
-    }
-    /// The first line start at or after @p at, not before @p floor (the data's start).
-    [[nodiscard]] std::size_t line_start(std::size_t at, std::size_t floor) const {
-        if (at <= floor) return floor;
-        constexpr std::size_t step = 4096;
-        for (std::size_t from = at - 1; from < size_; from += step) {
-            const std::string bytes = read(from, std::min(size_, from + step));
-            const std::size_t newline = bytes.find('\n');
-            if (newline != std::string::npos) return from + newline + 1;
-        }
-        return size_;
-    }
-
-private:
-    [[noreturn]] void fail(const char* what) const {
-        throw Error("cannot read " + path_.string() + ": " + what + " (" + std::strerror(errno) +
-                    ")");
-    }
-
-    std::filesystem::path path_;
-    int fd_ = -1;
-    std::size_t size_ = 0;
-};
+/// The first line start at or after @p at in @p bytes, not before @p floor (the data's start).
+std::size_t line_start(std::string_view bytes, std::size_t at, std::size_t floor) {
+    if (at <= floor) return floor;
+    const std::size_t newline = bytes.find('\n', at - 1);
+    return newline == std::string_view::npos ? bytes.size() : newline + 1;
+}
 
 /// The first InputError of the file over all ranks, rethrown on every rank (none: returns).
 void elect_error(dist::Comm& comm, const InputFile& file, const InputError* mine) {
     const std::int64_t line = mine != nullptr ? static_cast<std::int64_t>(mine->line()) : INT64_MAX;
-    const std::int64_t key[2] = {line, mine != nullptr ? comm.rank() : INT64_MAX};
-    std::int64_t first[2] = {key[0], INT64_MAX};
-    comm.allreduce(std::span<std::int64_t>(first, 1), dist::Reduce::min);
+    // The smallest line, then the lowest rank that has it.
+    std::int64_t first[2] = {comm.allreduce(line, dist::Reduce::min), INT64_MAX};
     if (first[0] == INT64_MAX) return;
-    first[1] = comm.allreduce(key[0] == first[0] ? key[1] : INT64_MAX, dist::Reduce::min);
+    first[1] = comm.allreduce(line == first[0] ? comm.rank() : INT64_MAX, dist::Reduce::min);
     dist::Bytes text;
     std::int64_t column = 0;
     if (comm.rank() == first[1]) {
@@ -107,17 +60,19 @@ DistributedPoints read_text_points_distributed(dist::Comm& comm,
                                                const InputFile& file,
                                                const ReadOptions& options) {
     comm.set_phase("read");
-    const ReadOnlyFile in(file.path);
-    const std::string head = in.read(0, std::min(in.size(), head_bytes));
+    // Mapped, not read: a rank's pages are only those of its range (and the head).
+    const detail::FileBytes in(file.path, detail::Access::sequential);
+    const std::string_view bytes = in.view();
+    const std::string_view head = bytes.substr(0, std::min(bytes.size(), head_bytes));
     const csv::Layout layout = csv::detect_layout(head, file.path.string(), options.columns, false);
     const std::size_t begin = layout.data_offset;
-    const std::size_t data = in.size() - std::min(in.size(), begin);
+    const std::size_t data = bytes.size() - std::min(bytes.size(), begin);
     const auto r = static_cast<std::size_t>(comm.rank());
     const auto p = static_cast<std::size_t>(comm.size());
-    const std::size_t from = in.line_start(begin + r * data / p, begin);
+    const std::size_t from = line_start(bytes, begin + r * data / p, begin);
     const std::size_t to =
-        r + 1 == p ? in.size() : in.line_start(begin + (r + 1) * data / p, begin);
-    const std::string text = in.read(from, std::max(from, to));
+        r + 1 == p ? bytes.size() : line_start(bytes, begin + (r + 1) * data / p, begin);
+    const std::string_view text = bytes.substr(from, std::max(from, to) - from);
     const auto newlines = static_cast<std::int64_t>(std::count(text.begin(), text.end(), '\n'));
     const auto before = static_cast<std::size_t>(comm.exscan_sum(newlines));
 

@@ -25,7 +25,8 @@ struct DistributedPoints {
 /// read_csv does. The points, in order over the ranks, are read_csv's. The first bad line of the
 /// file is reported on every rank with read_csv's message (the smallest line number wins an
 /// integer reduction, its rank broadcasts the text).
-/// @throws InputError on every rank; Error when the file cannot be read.
+/// @throws InputError on every rank; InputError naming the file, on the ranks that meet it,
+/// when the file cannot be opened or read.
 DistributedPoints read_text_points_distributed(dist::Comm& comm,
                                                const InputFile& file,
                                                const ReadOptions& options);

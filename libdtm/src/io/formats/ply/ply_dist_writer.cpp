@@ -94,8 +94,7 @@ void write_distributed_ply(dist::Comm& comm,
     // The ghost slots of all ranks, in slot order (ranks hold ascending slot runs).
     std::vector<std::uint64_t> mine;
     for (std::uint64_t s = 0; s < mesh.tris.size(); ++s) {
-        const auto& v = mesh.tris[s].v;
-        if (v[0] == detail::ghost || v[1] == detail::ghost || v[2] == detail::ghost) {
+        if (detail::is_ghost_triangle(mesh.tris[s])) {
             mine.push_back(mesh.first_slot + s);
         }
     }
@@ -157,7 +156,7 @@ void write_distributed_ply(dist::Comm& comm,
         for (std::uint64_t s = 0; s < mesh.tris.size(); ++s) {
             const Triangle& t = mesh.tris[s];
             const std::uint64_t slot = mesh.first_slot + s;
-            if (t.v[0] == detail::ghost || t.v[1] == detail::ghost || t.v[2] == detail::ghost) {
+            if (detail::is_ghost_triangle(t)) {
                 flush();
                 continue;
             }
