@@ -24,9 +24,10 @@
 // top-left rule of rasterisers (an edge a->b of a counter-clockwise triangle owns its points if
 // it goes downwards, or is horizontal going west); an edge on the border of the TIN (hull,
 // boundary, hole: no neighbour) always owns its points, so the domain is closed. Values on an
-// edge are interpolated along the edge from its lower-numbered vertex (linear: the segment;
-// cubic: the edge's cubic), so either triangle would give the same bits; a centre on a vertex
-// gets the vertex height exactly.
+// edge are interpolated along the edge from its lexicographically smaller end (x, then y;
+// linear: the segment; cubic: the edge's cubic), so either triangle would give the same bits
+// whatever the vertex numbers (a distributed DEM numbers them differently on every rank); a
+// centre on a vertex gets the vertex height exactly.
 //
 // References: J. Pineda, "A parallel algorithm for polygon rasterization", SIGGRAPH 1988 (edge
 // functions, top-left rule); J. R. Shewchuk, "Adaptive precision floating-point arithmetic and
@@ -89,18 +90,29 @@ RowRange triangle_rows(const Tin& tin, const Triangle& t, const GridSpec& spec) 
     return rows_touching(spec, std::min({a.y, b.y, c.y}), std::max({a.y, b.y, c.y}));
 }
 
-Buckets make_buckets(const Tin& tin, const GridSpec& spec, std::size_t band_rows) {
+/// Rows [first, first + count) of the spec: the part of the raster computed.
+struct RowWindow {
+    std::size_t first = 0;
+    std::size_t count = 0;
+};
+
+Buckets make_buckets(const Tin& tin,
+                     const GridSpec& spec,
+                     RowWindow window,
+                     std::size_t band_rows) {
     Buckets buckets;
     buckets.band_rows = band_rows;
-    buckets.band_count = (spec.rows + band_rows - 1) / band_rows;
+    buckets.band_count = (window.count + band_rows - 1) / band_rows;
     buckets.offsets.assign(buckets.band_count + 1, 0);
     buckets.rows.resize(tin.triangles.size());
+    const auto w0 = static_cast<std::ptrdiff_t>(window.first);
+    const auto w1 = static_cast<std::ptrdiff_t>(window.first + window.count) - 1;
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tin.triangles.size(), 1 << 14),
                       [&](const tbb::blocked_range<std::size_t>& range) {
                           for (std::size_t i = range.begin(); i != range.end(); ++i) {
                               const RowRange r = triangle_rows(tin, tin.triangles[i], spec);
-                              buckets.rows[i] = {static_cast<std::int32_t>(r.first),
-                                                 static_cast<std::int32_t>(r.last)};
+                              buckets.rows[i] = {static_cast<std::int32_t>(std::max(r.first, w0)),
+                                                 static_cast<std::int32_t>(std::min(r.last, w1))};
                           }
                       });
     const auto each_band = [&](std::size_t i, auto&& fn) {
@@ -108,8 +120,8 @@ Buckets make_buckets(const Tin& tin, const GridSpec& spec, std::size_t band_rows
         if (first > last) {
             return;
         }
-        for (std::size_t b = static_cast<std::size_t>(first) / band_rows;
-             b <= static_cast<std::size_t>(last) / band_rows; ++b) {
+        for (std::size_t b = (static_cast<std::size_t>(first) - window.first) / band_rows;
+             b <= (static_cast<std::size_t>(last) - window.first) / band_rows; ++b) {
             fn(b);
         }
     };
@@ -226,12 +238,12 @@ public:
         return -1;
     }
 
-    /// Edge @p e (opposite vertex e) as corners (from, to), from its lower-numbered vertex, and
-    /// the parameter of (x, y) along it.
+    /// Edge @p e (opposite vertex e) as corners (from, to), from its lexicographically smaller
+    /// end, and the parameter of (x, y) along it.
     void edge_parameter(int e, double x, double y, int& from, int& to, double& t) const {
         from = (e + 1) % 3;
         to = (e + 2) % 3;
-        if (tri_.v[static_cast<std::size_t>(to)] < tri_.v[static_cast<std::size_t>(from)]) {
+        if (p_[to]->x < p_[from]->x || (p_[to]->x == p_[from]->x && p_[to]->y < p_[from]->y)) {
             std::swap(from, to);
         }
         const Point3& p = *p_[from];
@@ -240,7 +252,7 @@ public:
         t = ((x - p.x) * dx + (y - p.y) * dy) / (dx * dx + dy * dy);
     }
 
-    /// Linear interpolation along edge @p e (opposite vertex e), from its lower-numbered vertex.
+    /// Linear interpolation along edge @p e (opposite vertex e), from its smaller end.
     [[nodiscard]] double along_edge(int e, double x, double y) const {
         int from = 0, to = 0;
         double t = 0.0;
@@ -395,19 +407,22 @@ void scan_triangle(const Tin& tin,
     }
 }
 
-std::size_t choose_band_rows(const GridSpec& spec, const RasterizeOptions& options) {
+std::size_t choose_band_rows(const GridSpec& spec,
+                             RowWindow window,
+                             const RasterizeOptions& options) {
     if (options.band_rows > 0) {
         return options.band_rows;
     }
     constexpr std::size_t target_cells = std::size_t{1} << 18;
     return std::clamp<std::size_t>(target_cells / std::max<std::size_t>(spec.cols, 1), 1,
-                                   std::max<std::size_t>(spec.rows, 1));
+                                   std::max<std::size_t>(window.count, 1));
 }
 
 void run_pipeline(const Tin& tin,
                   const TinInterpolant& interpolant,
                   const GridSpec& spec,
                   const RasterizeOptions& options,
+                  RowWindow window,
                   const Buckets& buckets,
                   GridSink& sink,
                   const Progress& progress) {
@@ -434,8 +449,9 @@ void run_pipeline(const Tin& tin,
     std::vector<std::vector<float>> bands(buckets.band_count);
     auto compute = [&](std::size_t b) -> std::size_t {
         progress.check();
-        const std::size_t row0 = b * buckets.band_rows;
-        const std::size_t row_count = std::min(buckets.band_rows, spec.rows - row0);
+        const std::size_t row0 = window.first + b * buckets.band_rows;
+        const std::size_t row_count =
+            std::min(buckets.band_rows, window.first + window.count - row0);
         std::vector<float> values(row_count * spec.cols, options.nodata);
         if (interpolant.method() == Interpolation::cubic) {
             CubicShader shader(tin, interpolant.gradients());
@@ -451,7 +467,7 @@ void run_pipeline(const Tin& tin,
         return b;
     };
     auto emit = [&](std::size_t b) {
-        const std::size_t row0 = b * buckets.band_rows;
+        const std::size_t row0 = window.first + b * buckets.band_rows;
         sink.write_rows(row0, bands[b].size() / spec.cols, bands[b]);
         std::vector<float>().swap(bands[b]);
         progress.report(static_cast<double>(b + 1) / static_cast<double>(buckets.band_count),
@@ -494,11 +510,22 @@ void rasterize(const Tin& tin,
                          std::to_string(spec.rows) + " cells is too large");
     }
     // The interpolant is indexed by triangle, so it serves the renumbered copy as well.
+    if (options.first_row > spec.rows) {
+        throw UsageError("rasterize: first row " + std::to_string(options.first_row) +
+                         " is beyond the " + std::to_string(spec.rows) + " rows");
+    }
+    const std::size_t rest = spec.rows - options.first_row;
+    const RowWindow window{options.first_row,
+                           options.row_count == 0 ? rest : std::min(options.row_count, rest)};
+    if (window.count == 0) {
+        return;
+    }
     const Tin local = detail::with_coherent_vertices(interpolant.surface(tin));
-    const Buckets buckets = make_buckets(local, spec, choose_band_rows(spec, options));
+    const Buckets buckets =
+        make_buckets(local, spec, window, choose_band_rows(spec, window, options));
     progress.report(0.0, "rasterize");
     const auto run = [&] {
-        run_pipeline(local, interpolant, spec, options, buckets, sink, progress);
+        run_pipeline(local, interpolant, spec, options, window, buckets, sink, progress);
     };
     if (options.threads > 0) {
         tbb::task_arena arena(static_cast<int>(options.threads));
@@ -537,6 +564,14 @@ Grid rasterize(const Tin& tin,
     return grid;
 }
 
+bool rows_touching(
+    const GridSpec& spec, double ylo, double yhi, std::size_t& first, std::size_t& last) {
+    const RowRange r = rows_touching(spec, ylo, yhi);
+    first = static_cast<std::size_t>(std::max<std::ptrdiff_t>(r.first, 0));
+    last = static_cast<std::size_t>(std::max<std::ptrdiff_t>(r.last, 0));
+    return r.first <= r.last;
+}
+
 Box2 tin_bounds(const Tin& tin) {
     Box2 box;
     for (const Triangle& t : tin.triangles) {
@@ -545,49 +580,6 @@ Box2 tin_bounds(const Tin& tin) {
         }
     }
     return box;
-}
-
-GridSpec snapped_grid_spec(const Box2& box, double cell) {
-    GridSpec spec;
-    spec.cell = cell;
-    // Multiples of the cell size, moved out by one more cell if rounding put them inside the box.
-    spec.xmin = std::floor(box.xmin / cell) * cell;
-    spec.ymax = std::ceil(box.ymax / cell) * cell;
-    if (spec.xmin > box.xmin) {
-        spec.xmin -= cell;
-    }
-    if (spec.ymax < box.ymax) {
-        spec.ymax += cell;
-    }
-    const auto count = [cell](double from, double to) {  // whole cells covering [from, to]
-        auto n = std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil((to - from) / cell)));
-        while (from + static_cast<double>(n) * cell < to) {
-            ++n;
-        }
-        return n;
-    };
-    spec.cols = count(spec.xmin, box.xmax);
-    spec.rows = count(box.ymin, spec.ymax);
-    while (spec.ymin() > box.ymin) {
-        ++spec.rows;
-    }
-    return spec;
-}
-
-GridSpec extent_grid_spec(const Box2& extent, double cell) {
-    GridSpec spec;
-    spec.cell = cell;
-    spec.xmin = extent.xmin;
-    spec.ymax = extent.ymax;
-    const auto whole = [cell](double length) {
-        const double n = length / cell;
-        const double r = std::round(n);
-        return static_cast<std::size_t>(
-            std::max(1.0, std::abs(n - r) < 1e-9 * std::max(1.0, n) ? r : std::ceil(n)));
-    };
-    spec.cols = whole(extent.xmax - extent.xmin);
-    spec.rows = whole(extent.ymax - extent.ymin);
-    return spec;
 }
 
 }  // namespace dtm

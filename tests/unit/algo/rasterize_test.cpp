@@ -5,8 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
+#include <numeric>
 #include <random>
 
 #include "dtm/core/error.hpp"
@@ -166,6 +168,46 @@ TEST(Rasterize, ThreadCountAndBandHeightDoNotChangeTheResult) {
     const dtm::Grid c = dtm::rasterize(tin, spec, {.band_rows = 7, .threads = 2});
     EXPECT_EQ(a.values, b.values);
     EXPECT_EQ(a.values, c.values);
+}
+
+TEST(Rasterize, RowWindowsStitchedTogetherEqualTheWholeRaster) {
+    const Tin tin = grid_tin(-750'000.0, -1'050'000.0, 25, 2.0, 0.0, 9, {10, 10, 20, 30});
+    const dtm::GridSpec spec = dtm::snapped_grid_spec(dtm::tin_bounds(tin), 0.5);
+    const dtm::Grid whole = dtm::rasterize(tin, spec, {.nodata = -1.0F});
+    for (const std::size_t parts : {2U, 3U, 7U, 200U}) {
+        dtm::Grid stitched = whole;
+        std::fill(stitched.values.begin(), stitched.values.end(), 5.0F);
+        for (std::size_t k = 0; k < parts; ++k) {
+            const std::size_t first = k * spec.rows / parts, end = (k + 1) * spec.rows / parts;
+            if (first == end) continue;
+            const dtm::Grid part = dtm::rasterize(
+                tin, spec,
+                {.nodata = -1.0F, .band_rows = 3, .first_row = first, .row_count = end - first});
+            std::copy(part.values.begin() + static_cast<std::ptrdiff_t>(first * spec.cols),
+                      part.values.begin() + static_cast<std::ptrdiff_t>(end * spec.cols),
+                      stitched.values.begin() + static_cast<std::ptrdiff_t>(first * spec.cols));
+        }
+        EXPECT_EQ(stitched.values, whole.values) << parts << " windows";
+    }
+}
+
+TEST(Rasterize, VertexNumbersAndTriangleOrderDoNotChangeABit) {
+    // Vertices on cell centres and a 1:1 lattice: many centres on edges, where the value is
+    // interpolated from one end; the end is chosen by position, so renumbering changes nothing.
+    const Tin tin = grid_tin(0.5, 0.5, 13, 2.0, 0.0, 1);
+    Tin permuted = tin;
+    std::vector<std::uint32_t> to(tin.vertices.size());
+    std::iota(to.begin(), to.end(), 0U);
+    std::mt19937 rng(11);
+    std::shuffle(to.begin(), to.end(), rng);
+    for (std::size_t v = 0; v < to.size(); ++v) permuted.vertices[to[v]] = tin.vertices[v];
+    for (Triangle& t : permuted.triangles) {
+        for (auto& v : t.v) v = to[v];
+    }
+    std::reverse(permuted.triangles.begin(), permuted.triangles.end());
+    dtm::link_neighbours(permuted);
+    const dtm::GridSpec spec{.xmin = 0.375, .ymax = 24.625, .cell = 0.25, .cols = 96, .rows = 96};
+    EXPECT_EQ(dtm::rasterize(tin, spec).values, dtm::rasterize(permuted, spec).values);
 }
 
 class RecordingSink final : public dtm::GridSink {

@@ -24,7 +24,17 @@ struct RasterizeOptions {
     /// prepared TinInterpolant.
     Interpolation interpolation = Interpolation::linear;
     GradientOptions gradients{};  ///< for Interpolation::cubic
+    /// The rows computed: [first_row, first_row + row_count) of the spec (row_count 0: to the
+    /// last row). The sink gets only these, with their row numbers in the spec, and each cell
+    /// has the value the whole raster gives it (one rank's part of a tiled DEM).
+    std::size_t first_row = 0;
+    std::size_t row_count = 0;
 };
+
+/// The rows of @p spec whose centre line may meet the y-interval [ylo, yhi] (conservative: a
+/// superset), as [first, last]; false if there are none. Which triangles a row band needs.
+[[nodiscard]] bool rows_touching(
+    const GridSpec& spec, double ylo, double yhi, std::size_t& first, std::size_t& last);
 
 /// Receives the raster in consecutive bands of whole rows, north to south, from one thread at a
 /// time. Implemented by raster writers (GDAL), by tests, and by the in-memory collector.
@@ -44,8 +54,8 @@ public:
 /// plane of the triangle's vertices); a centre outside every triangle (outside the hull, the
 /// boundary, in a hole) gets options.nodata. Inside tests are exact (orient2d); a centre on an
 /// edge shared by two triangles is assigned to exactly one of them and gets the same value from
-/// either (linear and cubic: the edge's own curve, evaluated from its lower-numbered vertex); a
-/// centre on a vertex gets the vertex height.
+/// either (linear and cubic: the edge's own curve, evaluated from its lexicographically smaller
+/// end, so vertex numbers never matter); a centre on a vertex gets the vertex height.
 /// Bands are computed in parallel and handed to the sink in order. Memory: the bands in flight
 /// plus a copy of the TIN with its vertices renumbered in first-use order (cache-friendly reads).
 /// @throws Cancelled
