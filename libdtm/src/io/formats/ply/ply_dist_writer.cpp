@@ -17,72 +17,15 @@
 #include <cstring>
 #include <limits>
 #include <string>
-#include <unordered_map>
 
+#include "dist/mesh_vertices.hpp"
 #include "dtm/core/error.hpp"
 #include "dtm/io/formats/ply.hpp"
 
 namespace dtm::io {
-namespace {
 
 static_assert(std::endian::native == std::endian::little,
               "the binary PLY is little endian: the values are appended as they are in memory");
-
-/// The owner of each kernel position: ranks hold contiguous runs, in rank order.
-class PositionOwners {
-public:
-    PositionOwners(dist::Comm& comm, const dist::LocalMesh& mesh) {
-        const std::uint64_t range[2] = {mesh.first_vertex,
-                                        mesh.first_vertex + mesh.own_points.size()};
-        const auto all = dist::concatenated<std::uint64_t>(
-            comm.allgatherv(dist::to_bytes(std::span<const std::uint64_t>(range, 2))));
-        for (std::size_t r = 0; r < all.size() / 2; ++r) {
-            if (all[2 * r + 1] > all[2 * r])
-                runs_.push_back({all[2 * r], all[2 * r + 1], static_cast<int>(r)});
-        }
-    }
-    [[nodiscard]] int of(std::uint64_t position) const {
-        const auto it = std::upper_bound(runs_.begin(), runs_.end(), position,
-                                         [](std::uint64_t p, const Run& r) { return p < r.lo; });
-        return std::prev(it)->rank;
-    }
-
-private:
-    struct Run {
-        std::uint64_t lo, hi;
-        int rank;
-    };
-    std::vector<Run> runs_;
-};
-
-/// Vertex numbers of the positions this rank's triangles name (own ones from the kernel's
-/// input_ids, the others asked of their owners).
-std::unordered_map<std::uint64_t, std::uint64_t> vertex_numbers(dist::Comm& comm,
-                                                                const dist::DistributedMesh& k) {
-    const dist::LocalMesh& mesh = k.mesh;
-    const auto ranks = static_cast<std::size_t>(comm.size());
-    const PositionOwners owners(comm, mesh);
-    std::vector<std::uint64_t> foreign = mesh.foreign_vertices;
-    std::sort(foreign.begin(), foreign.end());
-    std::vector<dist::Bytes> ask(ranks);
-    for (const std::uint64_t v : foreign)
-        dist::append_value(ask[static_cast<std::size_t>(owners.of(v))], v);
-    const auto asked = comm.alltoallv(std::move(ask));
-    std::vector<dist::Bytes> answer(ranks);
-    for (std::size_t s = 0; s < ranks; ++s) {
-        for (const std::uint64_t v : dist::from_bytes<std::uint64_t>(asked[s])) {
-            dist::append_value(answer[s], v);
-            dist::append_value(answer[s], k.input_ids[v - mesh.first_vertex]);
-        }
-    }
-    std::unordered_map<std::uint64_t, std::uint64_t> numbers;
-    const auto answered = dist::concatenated<std::uint64_t>(comm.alltoallv(std::move(answer)));
-    for (std::size_t i = 0; i + 1 < answered.size(); i += 2)
-        numbers.emplace(answered[i], answered[i + 1]);
-    return numbers;
-}
-
-}  // namespace
 
 void write_distributed_ply(dist::Comm& comm,
                            const dist::MergedShare& merged,
@@ -91,15 +34,7 @@ void write_distributed_ply(dist::Comm& comm,
                            const TinWriteOptions& options) {
     comm.set_phase("write tin");
     const dist::LocalMesh& mesh = kernel.mesh;
-    // The ghost slots of all ranks, in slot order (ranks hold ascending slot runs).
-    std::vector<std::uint64_t> mine;
-    for (std::uint64_t s = 0; s < mesh.tris.size(); ++s) {
-        if (detail::is_ghost_triangle(mesh.tris[s])) {
-            mine.push_back(mesh.first_slot + s);
-        }
-    }
-    const auto ghosts = dist::concatenated<std::uint64_t>(
-        comm.allgatherv(dist::to_bytes(std::span<const std::uint64_t>(mine))));
+    const auto ghosts = dist::all_ghost_slots(comm, mesh);
     const std::uint64_t slots = static_cast<std::uint64_t>(
         comm.allreduce(static_cast<std::int64_t>(mesh.tris.size()), dist::Reduce::sum));
     const std::uint64_t faces = slots - ghosts.size();
@@ -109,7 +44,7 @@ void write_distributed_ply(dist::Comm& comm,
         throw Error("cannot write " + path.string() +
                     ": more than 2^31 - 1 elements (a tiled TIN is not written yet)");
     }
-    const auto numbers = vertex_numbers(comm, kernel);
+    const auto numbers = dist::foreign_vertex_numbers(comm, kernel);
     const auto number = [&](std::uint32_t local) -> std::int32_t {
         const std::uint64_t position = mesh.global_vertex(local);
         const std::uint64_t v = mesh.own_vertex(position)

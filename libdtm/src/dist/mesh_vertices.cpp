@@ -1,0 +1,133 @@
+// SPDX-License-Identifier: MIT
+//
+// Lookups over the distributed mesh (mesh_vertices.hpp). Each is a question to the rank that
+// holds the answer: a sorted, duplicate-free list of numbers per owner in one alltoallv, the
+// answers in the same order in a second one.
+#include "dist/mesh_vertices.hpp"
+
+#include <algorithm>
+#include <span>
+
+namespace dtm::dist {
+
+RunOwners::RunOwners(Comm& comm, std::uint64_t lo, std::uint64_t hi) {
+    const std::uint64_t range[2] = {lo, hi};
+    const auto all = concatenated<std::uint64_t>(
+        comm.allgatherv(to_bytes(std::span<const std::uint64_t>(range, 2))));
+    for (std::size_t r = 0; r < all.size() / 2; ++r) {
+        if (all[2 * r + 1] > all[2 * r])
+            runs_.push_back({all[2 * r], all[2 * r + 1], static_cast<int>(r)});
+    }
+}
+
+int RunOwners::of(std::uint64_t number) const {
+    const auto it = std::upper_bound(runs_.begin(), runs_.end(), number,
+                                     [](std::uint64_t n, const Run& r) { return n < r.lo; });
+    return std::prev(it)->rank;
+}
+
+namespace {
+
+/// Sends each owner the numbers it holds of @p wanted (sorted, unique) and returns, per
+/// source rank, the numbers it asked for.
+std::vector<Bytes> ask_owners(Comm& comm,
+                              const RunOwners& owners,
+                              const std::vector<std::uint64_t>& wanted) {
+    std::vector<Bytes> ask(static_cast<std::size_t>(comm.size()));
+    for (const std::uint64_t v : wanted)
+        append_value(ask[static_cast<std::size_t>(owners.of(v))], v);
+    return comm.alltoallv(std::move(ask));
+}
+
+std::vector<std::uint64_t> sorted_unique(std::vector<std::uint64_t> v) {
+    std::sort(v.begin(), v.end());
+    v.erase(std::unique(v.begin(), v.end()), v.end());
+    return v;
+}
+
+}  // namespace
+
+std::unordered_map<std::uint64_t, std::uint64_t> foreign_vertex_numbers(Comm& comm,
+                                                                        const DistributedMesh& k) {
+    const LocalMesh& mesh = k.mesh;
+    const RunOwners owners(comm, mesh.first_vertex, mesh.first_vertex + mesh.own_points.size());
+    const auto asked = ask_owners(comm, owners, sorted_unique(mesh.foreign_vertices));
+    std::vector<Bytes> answer(asked.size());
+    for (std::size_t s = 0; s < asked.size(); ++s) {
+        for (const std::uint64_t v : from_bytes<std::uint64_t>(asked[s])) {
+            append_value(answer[s], v);
+            append_value(answer[s], k.input_ids[v - mesh.first_vertex]);
+        }
+    }
+    std::unordered_map<std::uint64_t, std::uint64_t> numbers;
+    const auto answered = concatenated<std::uint64_t>(comm.alltoallv(std::move(answer)));
+    for (std::size_t i = 0; i + 1 < answered.size(); i += 2)
+        numbers.emplace(answered[i], answered[i + 1]);
+    return numbers;
+}
+
+std::vector<std::uint64_t> all_ghost_slots(Comm& comm, const LocalMesh& mesh) {
+    std::vector<std::uint64_t> mine;
+    for (std::uint64_t s = 0; s < mesh.tris.size(); ++s) {
+        if (detail::is_ghost_triangle(mesh.tris[s])) mine.push_back(mesh.first_slot + s);
+    }
+    return concatenated<std::uint64_t>(
+        comm.allgatherv(to_bytes(std::span<const std::uint64_t>(mine))));
+}
+
+std::vector<SurfaceTriangle> surface_triangles(Comm& comm,
+                                               const MergedShare& merged,
+                                               const DistributedMesh& k) {
+    const LocalMesh& mesh = k.mesh;
+    const auto foreign = foreign_vertex_numbers(comm, k);
+    const auto ghosts = all_ghost_slots(comm, mesh);
+    const auto number = [&](std::uint32_t local) {
+        const std::uint64_t position = mesh.global_vertex(local);
+        return mesh.own_vertex(position) ? k.input_ids[position - mesh.first_vertex]
+                                         : foreign.at(position);
+    };
+    const auto is_ghost_slot = [&](std::uint64_t slot) {
+        return std::binary_search(ghosts.begin(), ghosts.end(), slot);
+    };
+    std::vector<SurfaceTriangle> out;
+    out.reserve(mesh.tris.size());
+    std::vector<std::uint64_t> ids;
+    for (std::uint64_t s = 0; s < mesh.tris.size(); ++s) {
+        const Triangle& t = mesh.tris[s];
+        if (detail::is_ghost_triangle(t)) continue;
+        const GlobalTriangle g = mesh.at(mesh.first_slot + s);
+        SurfaceTriangle st;
+        for (unsigned i = 0; i < 3; ++i) {
+            st.id[i] = number(t.v[i]);
+            ids.push_back(st.id[i]);
+            // Kernel half-edge i runs v[i] -> v[i + 1], opposite corner i + 2
+            // (tin_build_triangles).
+            if (g.n[i] == global_ghost || is_ghost_slot(g.n[i] >> 2))
+                st.border |= 1U << ((i + 2) % 3);
+        }
+        out.push_back(st);
+    }
+    // The vertices' coordinates and heights from their owners in the merge.
+    const RunOwners owners(comm, merged.first_vertex, merged.first_vertex + merged.vertices.size());
+    const auto wanted = sorted_unique(std::move(ids));
+    const auto asked = ask_owners(comm, owners, wanted);
+    std::vector<Bytes> answer(asked.size());
+    for (std::size_t r = 0; r < asked.size(); ++r) {
+        for (const std::uint64_t v : from_bytes<std::uint64_t>(asked[r])) {
+            append_value(answer[r], merged.vertices[v - merged.first_vertex].p);
+        }
+    }
+    // Answers come back in source-rank order, each in the asked (ascending) order: that is
+    // `wanted`'s order, since owners hold ascending runs.
+    const auto points = concatenated<Point3>(comm.alltoallv(std::move(answer)));
+    for (SurfaceTriangle& st : out) {
+        for (unsigned i = 0; i < 3; ++i) {
+            const auto at =
+                std::lower_bound(wanted.begin(), wanted.end(), st.id[i]) - wanted.begin();
+            st.p[i] = points[static_cast<std::size_t>(at)];
+        }
+    }
+    return out;
+}
+
+}  // namespace dtm::dist
