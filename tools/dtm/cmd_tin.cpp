@@ -43,37 +43,23 @@ double since(std::chrono::steady_clock::time_point t) {
 
 /// `dtm tin` on the ranks of an MPI job: what the distributed run covers, or a clear refusal.
 int run_tin_distributed(const TinArgs& a, dist::Comm& comm) {
+    const InputArgs& in = a.input;
+    check_distributed_input("tin", in, a.triangulate);
     const auto refuse = [](const std::string& what) {
         throw UsageError("tin: a distributed run (mpirun) does not take " + what + " yet");
     };
-    const InputArgs& in = a.input;
-    if (in.inputs.size() != 1) refuse("more than one input file");
-    if (!in.breaklines.empty() || !in.soft_breaklines.empty() || !in.boundaries.empty() ||
-        !in.holes.empty() || !in.flat_areas.empty()) {
-        refuse("breaklines, boundaries or holes");
-    }
-    const std::string extension = io::lower_extension(in.inputs[0]);
-    if (extension != "csv" && extension != "txt" && extension != "xyz") {
-        refuse("a ." + extension + " input (text point lists: .csv, .txt, .xyz)");
-    }
     if (io::lower_extension(a.output) != "ply" || a.ascii)
         refuse("an output other than a binary .ply");
     if (a.check || !a.report.empty()) refuse("`check` or `report`");
-    if (!in.crs.target_crs.empty()) refuse("`target_crs`");
-    if (in.dem.clip_radius > 0.0 || in.dem.max_error > 0.0) refuse("DEM thinning");
-    if (a.triangulate.snap_distance > 0.0 || a.triangulate.max_edge > 0.0 ||
-        a.triangulate.optimize != Criterion::delaunay) {
-        refuse("`snap`, `max_edge` or `optimize`");
-    }
     io::check_output(a.output, io::OutputKind::tin, "output");
     const auto start = std::chrono::steady_clock::now();
     const bool shows = prints() && !a.quiet && !a.stats;
     const products::DistributedTinResult r =
         products::distributed_tin(comm,
-                                  {{in.inputs[0], io::InputRole::points},
-                                   in.read,
-                                   in.crs.default_crs,
-                                   a.triangulate.duplicates,
+                                  {{{in.inputs[0], io::InputRole::points},
+                                    in.read,
+                                    in.crs.default_crs,
+                                    a.triangulate.duplicates},
                                    a.output},
                                   shows ? terminal_progress(false) : Progress{});
     if (a.stats && prints()) {

@@ -1,6 +1,11 @@
 // SPDX-License-Identifier: MIT
 #include "distributed.hpp"
 
+#include <string>
+
+#include "dtm/core/error.hpp"
+#include "dtm/io/extension.hpp"
+
 namespace dtm::cli {
 namespace {
 dist::Comm* job = nullptr;
@@ -9,5 +14,29 @@ dist::Comm* job = nullptr;
 dist::Comm* distributed_comm() noexcept { return job; }
 void set_distributed_comm(dist::Comm* comm) noexcept { job = comm; }
 bool prints() noexcept { return job == nullptr || job->rank() == 0; }
+
+void check_distributed_input(const char* command,
+                             const InputArgs& in,
+                             const TriangulateOptions& triangulate) {
+    const auto refuse = [command](const std::string& what) {
+        throw UsageError(std::string(command) + ": a distributed run (mpirun) does not take " +
+                         what + " yet");
+    };
+    if (in.inputs.size() != 1) refuse("more than one input file");
+    if (!in.breaklines.empty() || !in.soft_breaklines.empty() || !in.boundaries.empty() ||
+        !in.holes.empty() || !in.flat_areas.empty()) {
+        refuse("breaklines, boundaries or holes");
+    }
+    const std::string extension = io::lower_extension(in.inputs[0]);
+    if (extension != "csv" && extension != "txt" && extension != "xyz") {
+        refuse("a ." + extension + " input (text point lists: .csv, .txt, .xyz)");
+    }
+    if (!in.crs.target_crs.empty()) refuse("`target_crs`");
+    if (in.dem.clip_radius > 0.0 || in.dem.max_error > 0.0) refuse("DEM thinning");
+    if (triangulate.snap_distance > 0.0 || triangulate.max_edge > 0.0 ||
+        triangulate.optimize != Criterion::delaunay) {
+        refuse("`snap`, `max_edge` or `optimize`");
+    }
+}
 
 }  // namespace dtm::cli

@@ -3,7 +3,9 @@
 /// @brief The MPI job this process is a rank of, when started by `mpirun -np P dtm ...` (P > 1).
 #pragma once
 
+#include "dtm/algo/triangulate.hpp"
 #include "dtm/dist/comm.hpp"
+#include "input_args.hpp"
 
 namespace dtm::cli {
 
@@ -12,5 +14,11 @@ namespace dtm::cli {
 void set_distributed_comm(dist::Comm* comm) noexcept;
 /// True where messages and progress are printed: rank 0, or the only process.
 [[nodiscard]] bool prints() noexcept;
+
+/// What a distributed run covers of the inputs and TIN options (one text point list, the plain
+/// Delaunay TIN). @throws UsageError "COMMAND: a distributed run (mpirun) does not take ... yet"
+void check_distributed_input(const char* command,
+                             const InputArgs& in,
+                             const TriangulateOptions& triangulate);
 
 }  // namespace dtm::cli

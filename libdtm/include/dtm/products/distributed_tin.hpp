@@ -16,11 +16,16 @@
 
 namespace dtm::products {
 
-struct DistributedTinOptions {
+/// The input of a distributed run: one survey point list and how to read and merge it.
+struct DistributedSource {
     io::InputFile input;      ///< a text point list (csv, txt, xyz)
     io::ReadOptions read;     ///< columns, skip_bad_lines
     std::string default_crs;  ///< the CRS of the points (the file carries none)
     DuplicateRule duplicates = DuplicateRule::first;
+};
+
+struct DistributedTinOptions {
+    DistributedSource source;
     std::filesystem::path output;  ///< a .ply
 };
 

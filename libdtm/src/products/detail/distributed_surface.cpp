@@ -1,0 +1,88 @@
+// SPDX-License-Identifier: MIT
+//
+// The steps of the serial flow up to the TIN (load_inputs -> triangulate), each over ranks:
+//   read (io/formats/csv/csv_distributed) -> CRS as load_inputs gives it to a text file (the
+//   default CRS; S-JTSK positive coordinates to Krovak East-North, point by point) -> exact
+//   duplicates (dist/duplicates) -> the tree over ranks (dist/partition) -> the kernel over
+//   ranks (dist/kernel) -> the serial degeneracy checks.
+#include "products/detail/distributed_surface.hpp"
+
+#include "dtm/core/error.hpp"
+#include "dtm/dist/partition.hpp"
+#include "dtm/io/formats/crs.hpp"
+#include "io/formats/csv/csv_distributed.hpp"
+
+namespace dtm::products::detail {
+namespace {
+
+/// triangulate()'s refusals of degenerate input, with its messages, decided on every rank.
+/// @return the triangles of the TIN over all ranks.
+std::uint64_t check_not_degenerate(dist::Comm& comm,
+                                   std::uint64_t vertices,
+                                   const dist::DistributedMesh& k) {
+    if (vertices < 3) {
+        throw InputError("triangulation needs at least 3 distinct points; the input has " +
+                         std::to_string(vertices));
+    }
+    const auto triangles = static_cast<std::uint64_t>(
+        comm.allreduce(static_cast<std::int64_t>(k.mesh.real_triangles()), dist::Reduce::sum));
+    if (triangles == 0) {
+        throw InputError("all " + std::to_string(vertices) +
+                         " distinct points are collinear: there is no surface to triangulate");
+    }
+    return triangles;
+}
+
+}  // namespace
+
+void report_progress(const Progress& progress, double fraction, const char* what) {
+    try {
+        progress.report(fraction, what);
+    } catch (const Cancelled&) {
+    }
+}
+
+std::uint64_t bytes_sent(dist::Comm& comm) {
+    std::int64_t bytes = 0;
+    for (const auto& [phase, t] : comm.traffic()) bytes += static_cast<std::int64_t>(t.bytes);
+    return static_cast<std::uint64_t>(comm.allreduce(bytes, dist::Reduce::sum));
+}
+
+DistributedSurface distributed_surface(dist::Comm& comm,
+                                       const DistributedSource& source,
+                                       const Progress& progress) {
+    DistributedSurface out;
+    report_progress(progress, 0.0, "reading");
+    io::DistributedPoints read = io::read_text_points_distributed(comm, source.input, source.read);
+    if (!source.default_crs.empty()) {
+        try {
+            out.crs_wkt = io::crs_to_wkt(source.default_crs);
+        } catch (const UsageError& e) {
+            throw OptionError("default_crs", "`default_crs`: " + std::string(e.what()));
+        }
+        if (io::crs_is_geographic(out.crs_wkt)) {
+            throw UsageError(
+                "a distributed run takes projected coordinates only (no UTM projection of "
+                "geographic points yet)");
+        }
+        if (io::crs_is_sjtsk(out.crs_wkt)) {
+            for (dist::InputPoint& p : read.points) io::sjtsk_to_east_north(p.p.x, p.p.y);
+        }
+    }
+    out.points = read.total;
+    out.skipped_lines = read.skipped_lines;
+
+    report_progress(progress, 0.25, "triangulating");
+    out.merged = dist::merge_exact_duplicates(comm, read.points, source.duplicates);
+    std::vector<dist::InputPoint>().swap(read.points);
+    std::vector<dist::Point> points;
+    points.reserve(out.merged.vertices.size());
+    for (const dist::Vertex& v : out.merged.vertices) points.push_back({v.p.x, v.p.y, v.id});
+    const dist::Share share =
+        dist::partition_points(comm, std::move(points), {}, progress.sub(0.25, 0.5));
+    out.kernel = dist::triangulate_share(comm, share, {}, progress.sub(0.5, 1.0));
+    out.triangles = check_not_degenerate(comm, out.merged.total_vertices, out.kernel);
+    return out;
+}
+
+}  // namespace dtm::products::detail

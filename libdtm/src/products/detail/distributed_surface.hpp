@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: MIT
+/// @file
+/// @brief Internal: the TIN of a distributed run, the steps every distributed product starts
+/// with (read by byte ranges, CRS, exact duplicates, the tree and the kernel over ranks, the
+/// serial degeneracy checks).
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "dist/kernel.hpp"
+#include "dtm/core/progress.hpp"
+#include "dtm/dist/duplicates.hpp"
+#include "dtm/products/distributed_tin.hpp"
+
+namespace dtm::products::detail {
+
+struct DistributedSurface {
+    dist::MergedShare merged;
+    dist::DistributedMesh kernel;
+    std::string crs_wkt;
+    std::uint64_t points = 0;  ///< input points
+    std::uint64_t skipped_lines = 0;
+    std::uint64_t triangles = 0;  ///< real triangles over all ranks
+};
+
+/// Collective. @throws InputError (the serial reader's and triangulation's messages) or Error on
+/// every rank.
+DistributedSurface distributed_surface(dist::Comm& comm,
+                                       const DistributedSource& source,
+                                       const Progress& progress);
+
+/// Progress on the ranks that show it; a stop request is agreed on by the steps' reductions.
+void report_progress(const Progress& progress, double fraction, const char* what);
+
+/// Bytes all ranks sent in every phase so far.
+[[nodiscard]] std::uint64_t bytes_sent(dist::Comm& comm);
+
+}  // namespace dtm::products::detail
