@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: MIT
 // dtm grid INPUTS... -o DEM --cell C [--extent xmin,ymin,xmax,ymax] [--nodata V] [--cog]
 //          [--interpolation linear|cubic|natural] [--hillshade FILE] [--slope FILE] [--aspect FILE]
-// The TIN surface sampled at cell centres (parse -> options -> library -> report).
+// The TIN surface sampled at cell centres (parse -> options -> library -> report). A .vrt
+// output, and any run under mpirun, is the tiled DEM: one GeoTIFF per rank and a VRT.
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -11,12 +13,15 @@
 
 #include "command.hpp"
 #include "contour_flats_args.hpp"
+#include "distributed.hpp"
 #include "dtm/algo/rasterize.hpp"
 #include "dtm/core/error.hpp"
+#include "dtm/dist/in_process.hpp"
 #include "dtm/io/extension.hpp"
 #include "dtm/io/grid_writer.hpp"
 #include "dtm/io/inputs.hpp"
 #include "dtm/io/output_check.hpp"
+#include "dtm/products/distributed_dem.hpp"
 #include "dtm/products/surface.hpp"
 #include "input_args.hpp"
 #include "interpolation_args.hpp"
@@ -97,7 +102,67 @@ void check_grid_args(const GridArgs& args) {
     if (!args.extent.empty()) (void)parse_extent(args.extent);
 }
 
+void print_summary(const GridSpec& spec, std::uint64_t filled, const std::string& output) {
+    std::ostringstream extent;
+    extent.precision(15);
+    extent << spec.xmin << "," << spec.ymin() << "," << spec.xmax() << "," << spec.ymax;
+    std::cout << "grid: " << spec.cols << " x " << spec.rows << " cells of " << spec.cell
+              << " sampled at cell centres, extent " << extent.str() << ", " << filled
+              << " cells with data -> " << output << '\n';
+    if (filled == 0) {
+        std::cerr << "dtm grid: warning: no cell centre lies on the TIN (check --extent)\n";
+    }
+}
+
+/// A DEM as a VRT over one GeoTIFF per rank, on the ranks of an MPI job or on this process
+/// alone: what the distributed run covers, or a clear refusal.
+int run_grid_tiled(const GridArgs& args, dist::Comm& comm) {
+    check_distributed_input("grid", args.input, args.tin);
+    const auto refuse = [](const std::string& what) {
+        throw UsageError("grid: a tiled DEM (.vrt output, or mpirun) does not take " + what +
+                         " yet");
+    };
+    if (io::lower_extension(args.output) != "vrt") {
+        throw UsageError(
+            "grid: a distributed DEM is one GeoTIFF per rank and a VRT over them: "
+            "give -o NAME.vrt, not " +
+            args.output);
+    }
+    if (args.interpolation != Interpolation::linear) refuse("`interpolation` other than linear");
+    if (args.cog) refuse("`cog`");
+    if (!args.hillshade.empty() || !args.slope.empty() || !args.aspect.empty()) {
+        refuse("`hillshade`, `slope` or `aspect`");
+    }
+    io::check_output(args.output, io::OutputKind::raster, "output");
+    std::optional<Box2> extent;
+    if (!args.extent.empty()) extent = parse_extent(args.extent);
+    const InputArgs& in = args.input;
+    const products::DistributedDemResult r =
+        products::distributed_dem(comm,
+                                  {.source = {{in.inputs[0], io::InputRole::points},
+                                              in.read,
+                                              in.crs.default_crs,
+                                              args.tin.duplicates},
+                                   .cell = args.cell,
+                                   .extent = extent,
+                                   .nodata = args.nodata,
+                                   .output = args.output},
+                                  prints() ? terminal_progress("grid", args.quiet) : Progress{});
+    if (prints()) {
+        print_summary(r.spec, r.filled,
+                      args.output + " (" + std::to_string(r.tiles.size()) + " GeoTIFF tile" +
+                          (r.tiles.size() == 1 ? "" : "s") + " beside it)");
+    }
+    return 0;
+}
+
 int run_grid(const GridArgs& args) {
+    if (dist::Comm* comm = distributed_comm()) return run_grid_tiled(args, *comm);
+    if (io::lower_extension(args.output) == "vrt") {
+        int status = 0;
+        dist::run_in_process(1, [&](dist::Comm& comm) { status = run_grid_tiled(args, comm); });
+        return status;
+    }
     check_grid_args(args);
     const Progress progress = terminal_progress("grid", args.quiet);
     io::LoadedInputs inputs = io::load_inputs(to_load_options(args.input), progress.sub(0.0, 0.2));
@@ -138,15 +203,7 @@ int run_grid(const GridArgs& args) {
         }
     }
     progress.report(1.0, "done");
-    std::ostringstream extent;
-    extent.precision(15);
-    extent << spec.xmin << "," << spec.ymin() << "," << spec.xmax() << "," << spec.ymax;
-    std::cout << "grid: " << spec.cols << " x " << spec.rows << " cells of " << spec.cell
-              << " sampled at cell centres, extent " << extent.str() << ", " << counter.filled
-              << " cells with data -> " << args.output << '\n';
-    if (counter.filled == 0) {
-        std::cerr << "dtm grid: warning: no cell centre lies on the TIN (check --extent)\n";
-    }
+    print_summary(spec, counter.filled, args.output);
     return 0;
 }
 
@@ -162,7 +219,8 @@ Command grid_command() {
                 add_dem_options(app, args->input.dem);
                 app.add_option("-o,--output", args->output,
                                "DEM file; the extension picks the GDAL driver (default .tif: "
-                               "tiled DEFLATE Float32 GeoTIFF; .asc, .img, ...)")
+                               "tiled DEFLATE Float32 GeoTIFF; .asc, .img, ...; .vrt: a VRT "
+                               "over one GeoTIFF per rank, NAME-R-of-P.tif, as mpirun writes)")
                     ->required();
                 app.add_option("--cell", args->cell, "Cell size in CRS units")
                     ->required()

@@ -80,9 +80,9 @@ int main(int argc, char** argv) {
         say("a subcommand is required\n" + app.help());
         return 2;
     }
-    if (distributed_comm() != nullptr && chosen != "tin") {
-        say("only `dtm tin` runs distributed (under mpirun) yet; run `dtm " + std::string(chosen) +
-            "` on one machine");
+    if (distributed_comm() != nullptr && chosen != "tin" && chosen != "grid") {
+        say("only `dtm tin` and `dtm grid` run distributed (under mpirun) yet; run `dtm " +
+            std::string(chosen) + "` on one machine");
         return 2;
     }
     // The products and analyses reuse freed memory instead of fresh pages (memory_policy.cpp);

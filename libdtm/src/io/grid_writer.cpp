@@ -14,6 +14,7 @@
 #include <cpl_string.h>
 #include <gdal.h>
 #include <gdal_utils.h>
+#include <gdal_vrt.h>
 
 #include <algorithm>
 #include <cctype>
@@ -313,6 +314,51 @@ std::vector<std::string> grid_extensions() {
         }
     }
     return out;
+}
+
+void write_dem_vrt(const fs::path& target,
+                   const GridSpec& spec,
+                   const std::vector<DemTile>& tiles,
+                   const GridWriteOptions& options) {
+    register_gdal();
+    AtomicOutput out(target);
+    GDALDatasetH vrt =
+        GDALCreate(GDALGetDriverByName("VRT"), out.temp_path().c_str(), static_cast<int>(spec.cols),
+                   static_cast<int>(spec.rows), 0, GDT_Float32, nullptr);
+    if (vrt == nullptr) {
+        throw_gdal("cannot create " + target.string());
+    }
+    std::vector<GDALDatasetH> sources;
+    const auto close_all = [&] {
+        GDALClose(vrt);  // writes the VRT, then lets go of the sources
+        for (GDALDatasetH ds : sources) GDALClose(ds);
+    };
+    try {
+        double transform[6] = {spec.xmin, spec.cell, 0.0, spec.ymax, 0.0, -spec.cell};
+        GDALSetGeoTransform(vrt, transform);
+        if (!options.crs_wkt.empty()) GDALSetProjection(vrt, options.crs_wkt.c_str());
+        GDALAddBand(vrt, GDT_Float32, nullptr);
+        GDALRasterBandH band = GDALGetRasterBand(vrt, 1);
+        GDALSetRasterNoDataValue(band, static_cast<double>(options.nodata));
+        for (const DemTile& tile : tiles) {
+            // Opened by the path the VRT will name, relative to it when beside it.
+            GDALDatasetH ds = GDALOpen(tile.file.c_str(), GA_ReadOnly);
+            if (ds == nullptr) throw_gdal("cannot open the DEM tile " + tile.file.string());
+            sources.push_back(ds);
+            const int cols = static_cast<int>(spec.cols), rows = static_cast<int>(tile.rows);
+            if (VRTAddSimpleSource(static_cast<VRTSourcedRasterBandH>(band),
+                                   GDALGetRasterBand(ds, 1), 0, 0, cols, rows, 0,
+                                   static_cast<int>(tile.first_row), cols, rows, "near",
+                                   VRT_NODATA_UNSET) != CE_None) {
+                throw_gdal("cannot add " + tile.file.string() + " to " + target.string());
+            }
+        }
+    } catch (...) {
+        close_all();
+        throw;
+    }
+    close_all();
+    out.commit();
 }
 
 }  // namespace dtm::io

@@ -122,6 +122,32 @@ TEST(GridWriter, AscExtensionPicksTheArcInfoAsciiDriver) {
     EXPECT_FALSE(std::filesystem::exists(dir / "dem.stage.tif"));
 }
 
+TEST(GridWriter, VrtMosaicsRowTilesIntoTheWholeRaster) {
+    const dtm::test::ScratchDir dir;
+    const dtm::Grid grid = sample_grid();
+    const std::size_t cols = grid.spec.cols;
+    const std::vector<std::size_t> starts = {0, 1, 100, 200, grid.spec.rows};  // uneven blocks
+    std::vector<dtm::io::DemTile> tiles;
+    for (std::size_t i = 0; i + 1 < starts.size(); ++i) {
+        dtm::GridSpec spec = grid.spec;
+        spec.rows = starts[i + 1] - starts[i];
+        spec.ymax = grid.spec.ymax - static_cast<double>(starts[i]) * grid.spec.cell;
+        const auto file = dir / ("dem-" + std::to_string(i) + ".tif");
+        dtm::io::GridWriter writer(file, spec, {.crs_wkt = epsg_wkt(5514)});
+        writer.write_rows(0, spec.rows,
+                          std::span(grid.values).subspan(starts[i] * cols, spec.rows * cols));
+        writer.commit();
+        tiles.push_back({file, starts[i], spec.rows});
+    }
+    dtm::io::write_dem_vrt(dir / "dem.vrt", grid.spec, tiles, {.crs_wkt = epsg_wkt(5514)});
+    expect_same_raster(dir / "dem.vrt", grid, true);
+    const std::string vrt = dtm::test::read_file(dir / "dem.vrt");
+    EXPECT_EQ(vrt.find(dir.path().string()), std::string::npos) << "tile paths are relative";
+    tiles.push_back({dir / "missing.tif", 0, 1});
+    EXPECT_THROW(dtm::io::write_dem_vrt(dir / "bad.vrt", grid.spec, tiles, {}), dtm::Error);
+    EXPECT_FALSE(std::filesystem::exists(dir / "bad.vrt"));
+}
+
 TEST(GridWriter, UnknownExtensionIsAUsageErrorAndUncommittedOutputLeavesNothing) {
     const dtm::test::ScratchDir dir;
     const dtm::Grid grid = sample_grid();

@@ -55,6 +55,23 @@ void write_grid(const Grid& grid,
                 const std::filesystem::path& target,
                 const GridWriteOptions& options);
 
+/// One GeoTIFF of a tiled DEM: rows [first_row, first_row + rows) of the whole raster, all its
+/// columns.
+struct DemTile {
+    std::filesystem::path file;
+    std::size_t first_row = 0;
+    std::size_t rows = 0;
+};
+
+/// Writes @p target, a GDAL VRT of the raster @p spec (CRS and NoData from @p options) mosaicking
+/// @p tiles at their rows (integer pixel offsets: no resampling), atomically. Tile paths are
+/// written relative to the VRT when they lie beside it. @throws Error if GDAL fails or a tile
+/// cannot be opened.
+void write_dem_vrt(const std::filesystem::path& target,
+                   const GridSpec& spec,
+                   const std::vector<DemTile>& tiles,
+                   const GridWriteOptions& options);
+
 /// The surface derivatives GDAL computes from a DEM (gdaldem).
 enum class DemDerivative { hillshade, slope, aspect };
 

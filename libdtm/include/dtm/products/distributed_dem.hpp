@@ -1,0 +1,53 @@
+// SPDX-License-Identifier: MIT
+/// @file
+/// @brief `mpirun -np P dtm grid POINTS -o dem.vrt --cell C`: the DEM of a survey point list
+/// built on all ranks (R-P3 of docs/distributed.md), one GeoTIFF per rank beside a GDAL VRT
+/// that mosaics them; every cell is computed by exactly one rank and equals the single-machine
+/// DEM's bit for bit.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <vector>
+
+#include "dtm/core/grid.hpp"
+#include "dtm/products/distributed_tin.hpp"
+
+namespace dtm::products {
+
+struct DistributedDemOptions {
+    DistributedSource source;
+    double cell = 0.0;           ///< cell size in CRS units (> 0)
+    std::optional<Box2> extent;  ///< outer edges (default: the TIN's box snapped to the cell)
+    float nodata = -9999.0F;
+    std::filesystem::path output;  ///< the .vrt
+};
+
+struct DistributedDemResult {
+    int ranks = 1;
+    GridSpec spec;
+    std::uint64_t filled = 0;  ///< cells with data, all tiles
+    std::uint64_t points = 0;
+    std::uint64_t vertices = 0;
+    std::uint64_t triangles = 0;
+    std::uint64_t skipped_lines = 0;
+    std::uint64_t bytes_sent = 0;
+    std::vector<std::filesystem::path> tiles;  ///< in row order
+};
+
+/// The tile of rank @p rank of @p ranks beside @p vrt: "<stem>-<rank>-of-<ranks>.tif".
+[[nodiscard]] std::filesystem::path dem_tile_path(const std::filesystem::path& vrt,
+                                                  int rank,
+                                                  int ranks);
+
+/// Collective: the distributed TIN (as distributed_tin builds it), its linear surface sampled at
+/// the cell centres of the grid `dtm grid` chooses for the same options. Rank r computes and
+/// writes the rows [r R / P, (r + 1) R / P) of the R rows, from the triangles whose y-extent
+/// reaches them (sent by their owners); rank 0 writes the VRT once every tile is in place. Each
+/// file is written atomically. @throws InputError, UsageError or Error on every rank.
+DistributedDemResult distributed_dem(dist::Comm& comm,
+                                     const DistributedDemOptions& options,
+                                     const Progress& progress);
+
+}  // namespace dtm::products

@@ -1,0 +1,217 @@
+// SPDX-License-Identifier: MIT
+//
+// The distributed DEM (distributed_dem.hpp). After the distributed surface:
+//   1. every rank lists its real triangles with their corners' coordinates and heights and
+//      which edges lie on the hull (dist/mesh_vertices: the tie rule of rasterize needs it);
+//   2. the grid: the serial rule (snapped_grid_spec of the TIN's box, or the extent), the box
+//      being the exact minimum and maximum of the ranks' boxes (one allgather);
+//   3. each triangle goes to every rank whose row block its rows may reach (rows_touching, the
+//      rasteriser's own conservative test), in one alltoallv;
+//   4. each rank builds a Tin of what it received and rasterises its rows only (the row window
+//      of rasterize): a cell's value depends only on the triangle that owns its centre, never on
+//      the vertex numbers or triangle order, so it is the serial DEM's value;
+//   5. tiles are written (GridWriter, atomic), then rank 0 writes the VRT (write_dem_vrt).
+#include "dtm/products/distributed_dem.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include "dist/mesh_vertices.hpp"
+#include "dtm/algo/rasterize.hpp"
+#include "dtm/core/error.hpp"
+#include "dtm/io/grid_writer.hpp"
+#include "products/detail/distributed_surface.hpp"
+
+namespace dtm::products {
+namespace {
+
+/// The first row of rank r's block: rows are split as evenly as integers allow (rows are at
+/// most 2^36 and ranks far below 2^27: the product fits).
+std::size_t block_start(const GridSpec& spec, int r, int ranks) {
+    return spec.rows * static_cast<std::size_t>(r) / static_cast<std::size_t>(ranks);
+}
+
+/// The grid `dtm grid` chooses: the extent, or the TIN's box (exact min and max over ranks).
+GridSpec grid_of(dist::Comm& comm,
+                 const std::vector<dist::SurfaceTriangle>& tris,
+                 const DistributedDemOptions& options) {
+    if (options.extent) return extent_grid_spec(*options.extent, options.cell);
+    Box2 box;
+    for (const dist::SurfaceTriangle& t : tris) {
+        for (const Point3& p : t.p) box.add(p);
+    }
+    std::vector<double> mine;
+    if (!tris.empty()) mine = {box.xmin, box.ymin, box.xmax, box.ymax};
+    const auto all =
+        dist::concatenated<double>(comm.allgatherv(dist::to_bytes(std::span<const double>(mine))));
+    Box2 whole;
+    for (std::size_t i = 0; i + 3 < all.size(); i += 4) {
+        whole.add(Point3{all[i], all[i + 1], 0.0});
+        whole.add(Point3{all[i + 2], all[i + 3], 0.0});
+    }
+    return snapped_grid_spec(whole, options.cell);
+}
+
+/// Sends every triangle to the ranks whose row blocks it may reach; returns what this rank got.
+std::vector<dist::SurfaceTriangle> route_to_row_blocks(
+    dist::Comm& comm, const GridSpec& spec, const std::vector<dist::SurfaceTriangle>& tris) {
+    const int ranks = comm.size();
+    std::vector<std::size_t> starts;
+    for (int r = 0; r <= ranks; ++r) starts.push_back(block_start(spec, r, ranks));
+    const auto owner = [&](std::size_t row) {
+        return static_cast<std::size_t>(std::upper_bound(starts.begin(), starts.end(), row) -
+                                        starts.begin()) -
+               1;
+    };
+    std::vector<dist::Bytes> out(static_cast<std::size_t>(ranks));
+    for (const dist::SurfaceTriangle& t : tris) {
+        const double ylo = std::min({t.p[0].y, t.p[1].y, t.p[2].y});
+        const double yhi = std::max({t.p[0].y, t.p[1].y, t.p[2].y});
+        std::size_t first = 0, last = 0;
+        if (!rows_touching(spec, ylo, yhi, first, last)) continue;
+        for (std::size_t r = owner(first); r <= owner(last); ++r) {
+            if (starts[r] < starts[r + 1]) dist::append_value(out[r], t);
+        }
+    }
+    comm.set_phase("dem triangles");
+    return dist::concatenated<dist::SurfaceTriangle>(comm.alltoallv(std::move(out)));
+}
+
+/// The received triangles as a Tin: vertices once each (by merged number), triangles with the
+/// serial corners; a neighbour link is no_triangle on the hull and 0 elsewhere (rasterize reads
+/// only whether there is a neighbour).
+Tin tin_of(const std::vector<dist::SurfaceTriangle>& tris) {
+    std::vector<std::pair<std::uint64_t, Point3>> vertices;
+    vertices.reserve(3 * tris.size());
+    for (const dist::SurfaceTriangle& t : tris) {
+        for (unsigned i = 0; i < 3; ++i) vertices.emplace_back(t.id[i], t.p[i]);
+    }
+    const auto by_id = [](const auto& a, const auto& b) { return a.first < b.first; };
+    std::sort(vertices.begin(), vertices.end(), by_id);
+    vertices.erase(std::unique(vertices.begin(), vertices.end(),
+                               [](const auto& a, const auto& b) { return a.first == b.first; }),
+                   vertices.end());
+    Tin tin;
+    tin.vertices.reserve(vertices.size());
+    for (const auto& v : vertices) tin.vertices.push_back(v.second);
+    tin.triangles.reserve(tris.size());
+    for (const dist::SurfaceTriangle& t : tris) {
+        Triangle out;
+        for (unsigned i = 0; i < 3; ++i) {
+            const auto at = std::lower_bound(vertices.begin(), vertices.end(),
+                                             std::pair{t.id[i], Point3{}}, by_id);
+            out.v[i] = static_cast<VertexIndex>(at - vertices.begin());
+            out.n[i] = (t.border >> i & 1U) != 0 ? no_triangle : 0;
+        }
+        tin.triangles.push_back(out);
+    }
+    return tin;
+}
+
+/// Counts the cells with data and passes the rows on at their rows in the tile.
+class TileSink final : public GridSink {
+public:
+    TileSink(GridSink& tile, std::size_t first_row, float nodata)
+        : tile_(tile), first_row_(first_row), nodata_(nodata) {}
+    void write_rows(std::size_t first_row,
+                    std::size_t row_count,
+                    std::span<const float> values) override {
+        for (const float v : values) filled += v != nodata_ ? 1 : 0;
+        tile_.write_rows(first_row - first_row_, row_count, values);
+    }
+    std::uint64_t filled = 0;
+
+private:
+    GridSink& tile_;
+    std::size_t first_row_;
+    float nodata_;
+};
+
+constexpr double max_cells = 68'719'476'736.0;  // 2^36, as dtm grid
+
+}  // namespace
+
+std::filesystem::path dem_tile_path(const std::filesystem::path& vrt, int rank, int ranks) {
+    return vrt.parent_path() / (vrt.stem().string() + "-" + std::to_string(rank) + "-of-" +
+                                std::to_string(ranks) + ".tif");
+}
+
+DistributedDemResult distributed_dem(dist::Comm& comm,
+                                     const DistributedDemOptions& options,
+                                     const Progress& progress) {
+    DistributedDemResult result;
+    result.ranks = comm.size();
+    detail::DistributedSurface surface =
+        detail::distributed_surface(comm, options.source, progress.sub(0.0, 0.6));
+    result.points = surface.points;
+    result.skipped_lines = surface.skipped_lines;
+    result.vertices = surface.merged.total_vertices;
+    result.triangles = surface.triangles;
+
+    detail::report_progress(progress, 0.6, "rasterize");
+    comm.set_phase("dem vertices");
+    std::vector<dist::SurfaceTriangle> mine =
+        dist::surface_triangles(comm, surface.merged, surface.kernel);
+    const std::string crs_wkt = std::move(surface.crs_wkt);
+    surface = {};  // the kernel's mesh is no longer needed
+    result.spec = grid_of(comm, mine, options);
+    const GridSpec& spec = result.spec;
+    if (static_cast<double>(spec.cols) * static_cast<double>(spec.rows) > max_cells) {
+        throw UsageError(
+            "grid: " + std::to_string(spec.cols) + " x " + std::to_string(spec.rows) +
+            " cells is too many (at most 2^36); use a larger cell or a smaller extent");
+    }
+    const Tin tin = tin_of(route_to_row_blocks(comm, spec, mine));
+    std::vector<dist::SurfaceTriangle>().swap(mine);
+
+    const int rank = comm.rank(), ranks = comm.size();
+    const std::size_t first = block_start(spec, rank, ranks);
+    const std::size_t rows = block_start(spec, rank + 1, ranks) - first;
+    const io::GridWriteOptions write{.crs_wkt = crs_wkt, .nodata = options.nodata};
+    std::string error;
+    std::uint64_t filled = 0;
+    if (rows > 0) {
+        try {
+            GridSpec tile = spec;
+            tile.rows = rows;
+            tile.ymax = spec.ymax - static_cast<double>(first) * spec.cell;
+            io::GridWriter writer(dem_tile_path(options.output, rank, ranks), tile, write);
+            TileSink sink(writer, first, options.nodata);
+            rasterize(
+                tin, spec,
+                {.nodata = options.nodata, .threads = 0, .first_row = first, .row_count = rows},
+                sink, rank == 0 ? progress.sub(0.7, 0.95) : Progress{});
+            writer.commit();
+            filled = sink.filled;
+        } catch (const Error& e) {
+            error = e.what();
+        }
+    }
+    if (comm.allreduce(error.empty() ? 0 : 1, dist::Reduce::max) != 0) {
+        dist::throw_first_error(comm, error);
+    }
+    result.filled = static_cast<std::uint64_t>(
+        comm.allreduce(static_cast<std::int64_t>(filled), dist::Reduce::sum));
+    std::vector<io::DemTile> tiles;
+    for (int r = 0; r < ranks; ++r) {
+        const std::size_t lo = block_start(spec, r, ranks), hi = block_start(spec, r + 1, ranks);
+        if (hi == lo) continue;
+        tiles.push_back({dem_tile_path(options.output, r, ranks), lo, hi - lo});
+        result.tiles.push_back(tiles.back().file);
+    }
+    if (rank == 0) {
+        try {
+            io::write_dem_vrt(options.output, spec, tiles, write);
+        } catch (const Error& e) {
+            error = e.what();
+        }
+    }
+    if (comm.allreduce(error.empty() ? 0 : 1, dist::Reduce::max) != 0) {
+        dist::throw_first_error(comm, error);
+    }
+    result.bytes_sent = detail::bytes_sent(comm);
+    detail::report_progress(progress, 1.0, "done");
+    return result;
+}
+
+}  // namespace dtm::products
