@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <span>
+#include <utility>
 
 namespace dtm::dist {
 
@@ -75,9 +76,7 @@ std::vector<std::uint64_t> all_ghost_slots(Comm& comm, const LocalMesh& mesh) {
         comm.allgatherv(to_bytes(std::span<const std::uint64_t>(mine))));
 }
 
-std::vector<SurfaceTriangle> surface_triangles(Comm& comm,
-                                               const MergedShare& merged,
-                                               const DistributedMesh& k) {
+SurfaceMesh surface_mesh(Comm& comm, const MergedShare& merged, const DistributedMesh& k) {
     const LocalMesh& mesh = k.mesh;
     const auto foreign = foreign_vertex_numbers(comm, k);
     const auto ghosts = all_ghost_slots(comm, mesh);
@@ -89,27 +88,34 @@ std::vector<SurfaceTriangle> surface_triangles(Comm& comm,
     const auto is_ghost_slot = [&](std::uint64_t slot) {
         return std::binary_search(ghosts.begin(), ghosts.end(), slot);
     };
-    std::vector<SurfaceTriangle> out;
-    out.reserve(mesh.tris.size());
-    std::vector<std::uint64_t> ids;
+    SurfaceMesh out;
+    out.faces.reserve(mesh.tris.size());
+    std::vector<std::pair<std::uint64_t, std::uint64_t>> corners;  // (vertex id, 3 f + i)
+    corners.reserve(3 * mesh.tris.size());
     for (std::uint64_t s = 0; s < mesh.tris.size(); ++s) {
         const Triangle& t = mesh.tris[s];
         if (detail::is_ghost_triangle(t)) continue;
         const GlobalTriangle g = mesh.at(mesh.first_slot + s);
-        SurfaceTriangle st;
+        SurfaceFace f;
         for (unsigned i = 0; i < 3; ++i) {
-            st.id[i] = number(t.v[i]);
-            ids.push_back(st.id[i]);
+            corners.emplace_back(number(t.v[i]), 3 * out.faces.size() + i);
             // Kernel half-edge i runs v[i] -> v[i + 1], opposite corner i + 2
             // (tin_build_triangles).
             if (g.n[i] == global_ghost || is_ghost_slot(g.n[i] >> 2))
-                st.border |= 1U << ((i + 2) % 3);
+                f.border |= 1U << ((i + 2) % 3);
         }
-        out.push_back(st);
+        out.faces.push_back(f);
     }
-    // The vertices' coordinates and heights from their owners in the merge.
+    // Each vertex once, in ascending number; the sorted corners take their index in one pass.
+    std::sort(corners.begin(), corners.end());
+    std::vector<std::uint64_t> wanted;
+    for (const auto& [id, corner] : corners) {
+        if (wanted.empty() || wanted.back() != id) wanted.push_back(id);
+        out.faces[corner / 3].v[corner % 3] = static_cast<std::uint32_t>(wanted.size() - 1);
+    }
+    std::vector<std::pair<std::uint64_t, std::uint64_t>>().swap(corners);
+    // The coordinates and heights from the vertices' owners in the merge.
     const RunOwners owners(comm, merged.first_vertex, merged.first_vertex + merged.vertices.size());
-    const auto wanted = sorted_unique(std::move(ids));
     const auto asked = ask_owners(comm, owners, wanted);
     std::vector<Bytes> answer(asked.size());
     for (std::size_t r = 0; r < asked.size(); ++r) {
@@ -120,13 +126,8 @@ std::vector<SurfaceTriangle> surface_triangles(Comm& comm,
     // Answers come back in source-rank order, each in the asked (ascending) order: that is
     // `wanted`'s order, since owners hold ascending runs.
     const auto points = concatenated<Point3>(comm.alltoallv(std::move(answer)));
-    for (SurfaceTriangle& st : out) {
-        for (unsigned i = 0; i < 3; ++i) {
-            const auto at =
-                std::lower_bound(wanted.begin(), wanted.end(), st.id[i]) - wanted.begin();
-            st.p[i] = points[static_cast<std::size_t>(at)];
-        }
-    }
+    out.vertices.resize(wanted.size());
+    for (std::size_t w = 0; w < wanted.size(); ++w) out.vertices[w] = {wanted[w], points[w]};
     return out;
 }
 

@@ -39,18 +39,30 @@ private:
 /// Collective: the ghost slots of all ranks (the hull's and the unused ones), in slot order.
 [[nodiscard]] std::vector<std::uint64_t> all_ghost_slots(Comm& comm, const LocalMesh& mesh);
 
-/// A real triangle of the TIN in the Tin's conventions: corners as in the serial TIN, edge e
-/// opposite corner e, bit e of `border` set when no triangle lies across edge e (the hull).
-struct SurfaceTriangle {
-    std::array<std::uint64_t, 3> id{};  ///< merged vertex numbers (the serial TIN's)
-    std::array<Point3, 3> p{};
+/// A vertex of the TIN: its merged number (the serial TIN's) and position.
+struct SurfaceVertex {
+    std::uint64_t id = 0;
+    Point3 p{};
+};
+
+/// A real triangle of the TIN in the Tin's conventions: corners as in the serial TIN (indices
+/// into the mesh's vertices), edge e opposite corner e, bit e of `border` set when no triangle
+/// lies across edge e (the hull).
+struct SurfaceFace {
+    std::array<std::uint32_t, 3> v{};
     std::uint32_t border = 0;
 };
 
-/// Collective: this rank's real triangles with their vertices as the merge keeps them (x, y, z
-/// asked of the vertices' owners in @p merged), in slot order.
-[[nodiscard]] std::vector<SurfaceTriangle> surface_triangles(Comm& comm,
-                                                             const MergedShare& merged,
-                                                             const DistributedMesh& kernel);
+/// Some of the TIN's real triangles and the vertices they name, each vertex once.
+struct SurfaceMesh {
+    std::vector<SurfaceVertex> vertices;  ///< ascending id
+    std::vector<SurfaceFace> faces;
+};
+
+/// Collective: this rank's real triangles (in slot order) with their vertices as the merge keeps
+/// them (x, y, z asked of the vertices' owners in @p merged).
+[[nodiscard]] SurfaceMesh surface_mesh(Comm& comm,
+                                       const MergedShare& merged,
+                                       const DistributedMesh& kernel);
 
 }  // namespace dtm::dist

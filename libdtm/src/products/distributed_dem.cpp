@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: MIT
 //
 // The distributed DEM (distributed_dem.hpp). After the distributed surface:
-//   1. every rank lists its real triangles with their corners' coordinates and heights and
-//      which edges lie on the hull (dist/mesh_vertices: the tie rule of rasterize needs it);
+//   1. every rank lists its real triangles, the vertices they name (coordinates and heights,
+//      each once) and which edges lie on the hull (dist/mesh_vertices: the tie rule of
+//      rasterize needs it);
 //   2. the grid: the serial rule (snapped_grid_spec of the TIN's box, or the extent), the box
 //      being the exact minimum and maximum of the ranks' boxes (one allgather);
 //   3. each triangle goes to every rank whose row block its rows may reach (rows_touching, the
-//      rasteriser's own conservative test), in one alltoallv;
+//      rasteriser's own conservative test) with its vertices, indexed per destination (one
+//      alltoallv of vertices, one of triangles: 16 bytes a triangle and about 16 a vertex);
 //   4. each rank builds a Tin of what it received and rasterises its rows only (the row window
 //      of rasterize): a cell's value depends only on the triangle that owns its centre, never on
 //      the vertex numbers or triangle order, so it is the serial DEM's value;
@@ -33,15 +35,13 @@ std::size_t block_start(const GridSpec& spec, int r, int ranks) {
 
 /// The grid `dtm grid` chooses: the extent, or the TIN's box (exact min and max over ranks).
 GridSpec grid_of(dist::Comm& comm,
-                 const std::vector<dist::SurfaceTriangle>& tris,
+                 const dist::SurfaceMesh& surface,
                  const DistributedDemOptions& options) {
     if (options.extent) return extent_grid_spec(*options.extent, options.cell);
     Box2 box;
-    for (const dist::SurfaceTriangle& t : tris) {
-        for (const Point3& p : t.p) box.add(p);
-    }
+    for (const dist::SurfaceVertex& v : surface.vertices) box.add(v.p);
     std::vector<double> mine;
-    if (!tris.empty()) mine = {box.xmin, box.ymin, box.xmax, box.ymax};
+    if (!surface.vertices.empty()) mine = {box.xmin, box.ymin, box.xmax, box.ymax};
     const auto all =
         dist::concatenated<double>(comm.allgatherv(dist::to_bytes(std::span<const double>(mine))));
     Box2 whole;
@@ -52,9 +52,12 @@ GridSpec grid_of(dist::Comm& comm,
     return snapped_grid_spec(whole, options.cell);
 }
 
-/// Sends every triangle to the ranks whose row blocks it may reach; returns what this rank got.
-std::vector<dist::SurfaceTriangle> route_to_row_blocks(
-    dist::Comm& comm, const GridSpec& spec, const std::vector<dist::SurfaceTriangle>& tris) {
+/// Sends every face to the ranks whose row blocks it may reach, with the vertices it names (a
+/// vertex once per destination, unless its faces alternate between destinations: the receiver
+/// merges repeats by number), and builds a Tin of what this rank receives: vertices once each
+/// in ascending number, a neighbour link no_triangle on the hull and 0 elsewhere (rasterize reads
+/// only whether there is a neighbour).
+Tin route_to_row_blocks(dist::Comm& comm, const GridSpec& spec, dist::SurfaceMesh surface) {
     const int ranks = comm.size();
     std::vector<std::size_t> starts;
     for (int r = 0; r <= ranks; ++r) starts.push_back(block_start(spec, r, ranks));
@@ -63,47 +66,69 @@ std::vector<dist::SurfaceTriangle> route_to_row_blocks(
                                         starts.begin()) -
                1;
     };
-    std::vector<dist::Bytes> out(static_cast<std::size_t>(ranks));
-    for (const dist::SurfaceTriangle& t : tris) {
-        const double ylo = std::min({t.p[0].y, t.p[1].y, t.p[2].y});
-        const double yhi = std::max({t.p[0].y, t.p[1].y, t.p[2].y});
+    const auto p = static_cast<std::size_t>(ranks);
+    std::vector<dist::Bytes> vertices(p), faces(p);
+    std::vector<std::uint32_t> sent(p, 0);  // vertices sent to each rank so far
+    constexpr std::size_t none = ~std::size_t{0};
+    std::vector<std::size_t> last_rank(surface.vertices.size(), none);
+    std::vector<std::uint32_t> index_there(surface.vertices.size(), 0);
+    for (const dist::SurfaceFace& f : surface.faces) {
+        double ylo = surface.vertices[f.v[0]].p.y, yhi = ylo;
+        for (const std::uint32_t v : f.v) {
+            ylo = std::min(ylo, surface.vertices[v].p.y);
+            yhi = std::max(yhi, surface.vertices[v].p.y);
+        }
         std::size_t first = 0, last = 0;
         if (!rows_touching(spec, ylo, yhi, first, last)) continue;
         for (std::size_t r = owner(first); r <= owner(last); ++r) {
-            if (starts[r] < starts[r + 1]) dist::append_value(out[r], t);
+            if (starts[r] == starts[r + 1]) continue;
+            dist::SurfaceFace there = f;
+            for (std::uint32_t& v : there.v) {
+                if (last_rank[v] != r) {
+                    last_rank[v] = r;
+                    index_there[v] = sent[r]++;
+                    dist::append_value(vertices[r], surface.vertices[v]);
+                }
+                v = index_there[v];
+            }
+            dist::append_value(faces[r], there);
         }
     }
+    surface = {};
+    std::vector<std::size_t>().swap(last_rank);
+    std::vector<std::uint32_t>().swap(index_there);
     comm.set_phase("dem triangles");
-    return dist::concatenated<dist::SurfaceTriangle>(comm.alltoallv(std::move(out)));
-}
+    const auto got_vertices = comm.alltoallv(std::move(vertices));
+    const auto got_faces = comm.alltoallv(std::move(faces));
 
-/// The received triangles as a Tin: vertices once each (by merged number), triangles with the
-/// serial corners; a neighbour link is no_triangle on the hull and 0 elsewhere (rasterize reads
-/// only whether there is a neighbour).
-Tin tin_of(const std::vector<dist::SurfaceTriangle>& tris) {
-    std::vector<std::pair<std::uint64_t, Point3>> vertices;
-    vertices.reserve(3 * tris.size());
-    for (const dist::SurfaceTriangle& t : tris) {
-        for (unsigned i = 0; i < 3; ++i) vertices.emplace_back(t.id[i], t.p[i]);
-    }
-    const auto by_id = [](const auto& a, const auto& b) { return a.first < b.first; };
-    std::sort(vertices.begin(), vertices.end(), by_id);
-    vertices.erase(std::unique(vertices.begin(), vertices.end(),
-                               [](const auto& a, const auto& b) { return a.first == b.first; }),
-                   vertices.end());
-    Tin tin;
-    tin.vertices.reserve(vertices.size());
-    for (const auto& v : vertices) tin.vertices.push_back(v.second);
-    tin.triangles.reserve(tris.size());
-    for (const dist::SurfaceTriangle& t : tris) {
-        Triangle out;
-        for (unsigned i = 0; i < 3; ++i) {
-            const auto at = std::lower_bound(vertices.begin(), vertices.end(),
-                                             std::pair{t.id[i], Point3{}}, by_id);
-            out.v[i] = static_cast<VertexIndex>(at - vertices.begin());
-            out.n[i] = (t.border >> i & 1U) != 0 ? no_triangle : 0;
+    std::vector<std::pair<std::uint64_t, std::uint64_t>> order;  // (number, received index)
+    std::vector<Point3> received;
+    std::vector<std::size_t> offset;  // of each source's vertices in `received`
+    for (const dist::Bytes& bytes : got_vertices) {
+        offset.push_back(received.size());
+        for (const dist::SurfaceVertex& v : dist::from_bytes<dist::SurfaceVertex>(bytes)) {
+            order.emplace_back(v.id, received.size());
+            received.push_back(v.p);
         }
-        tin.triangles.push_back(out);
+    }
+    std::sort(order.begin(), order.end());
+    Tin tin;
+    std::vector<VertexIndex> vertex_of(received.size());
+    for (std::size_t i = 0; i < order.size(); ++i) {
+        if (i == 0 || order[i - 1].first != order[i].first) {
+            tin.vertices.push_back(received[order[i].second]);
+        }
+        vertex_of[order[i].second] = static_cast<VertexIndex>(tin.vertices.size() - 1);
+    }
+    for (std::size_t src = 0; src < got_faces.size(); ++src) {
+        for (const dist::SurfaceFace& f : dist::from_bytes<dist::SurfaceFace>(got_faces[src])) {
+            Triangle t;
+            for (unsigned i = 0; i < 3; ++i) {
+                t.v[i] = vertex_of[offset[src] + f.v[i]];
+                t.n[i] = (f.border >> i & 1U) != 0 ? no_triangle : 0;
+            }
+            tin.triangles.push_back(t);
+        }
     }
     return tin;
 }
@@ -150,8 +175,7 @@ DistributedDemResult distributed_dem(dist::Comm& comm,
 
     detail::report_progress(progress, 0.6, "rasterize");
     comm.set_phase("dem vertices");
-    std::vector<dist::SurfaceTriangle> mine =
-        dist::surface_triangles(comm, surface.merged, surface.kernel);
+    dist::SurfaceMesh mine = dist::surface_mesh(comm, surface.merged, surface.kernel);
     const std::string crs_wkt = std::move(surface.crs_wkt);
     surface = {};  // the kernel's mesh is no longer needed
     result.spec = grid_of(comm, mine, options);
@@ -161,8 +185,7 @@ DistributedDemResult distributed_dem(dist::Comm& comm,
             "grid: " + std::to_string(spec.cols) + " x " + std::to_string(spec.rows) +
             " cells is too many (at most 2^36); use a larger cell or a smaller extent");
     }
-    const Tin tin = tin_of(route_to_row_blocks(comm, spec, mine));
-    std::vector<dist::SurfaceTriangle>().swap(mine);
+    const Tin tin = route_to_row_blocks(comm, spec, std::move(mine));
 
     const int rank = comm.rank(), ranks = comm.size();
     const std::size_t first = block_start(spec, rank, ranks);
