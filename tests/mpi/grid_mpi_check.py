@@ -8,22 +8,9 @@ centres and whose rows the rank blocks cut. Usage: grid_mpi_check.py DTM MPIEXEC
 import os
 import random
 import subprocess
-import sys
 import tempfile
 
-dtm, mpiexec, ranks = sys.argv[1], sys.argv[2], int(sys.argv[3])
-failures = []
-
-
-def check(ok, what):
-    if not ok:
-        failures.append(what)
-        print("FAIL:", what, file=sys.stderr)
-
-
-def run(args, mpi):
-    command = ([mpiexec, "-np", str(ranks)] if mpi else []) + [dtm] + args
-    return subprocess.run(command, capture_output=True, text=True, timeout=240)
+from mpi_checks import check, dtm, finish, ranks, run
 
 
 def raw(path):
@@ -88,5 +75,4 @@ with tempfile.TemporaryDirectory() as tmp:
         tif = run(["grid", survey, "--cell", "1", "-o", os.path.join(tmp, "t.tif")], True)
         check(tif.returncode == 2 and "give -o NAME.vrt" in tif.stderr, f".tif under mpirun: {tif.stderr!r}")
 
-print("grid on", ranks, "MPI ranks:", "all checks passed" if not failures else f"{len(failures)} failed")
-sys.exit(1 if failures else 0)
+finish("grid")

@@ -7,23 +7,9 @@ and `--stats` naming the ranks. Usage: tin_mpi_check.py DTM MPIEXEC NP"""
 import json
 import os
 import random
-import subprocess
-import sys
 import tempfile
 
-dtm, mpiexec, ranks = sys.argv[1], sys.argv[2], int(sys.argv[3])
-failures = []
-
-
-def check(ok, what):
-    if not ok:
-        failures.append(what)
-        print("FAIL:", what, file=sys.stderr)
-
-
-def run(args, mpi):
-    command = ([mpiexec, "-np", str(ranks)] if mpi else []) + [dtm] + args
-    return subprocess.run(command, capture_output=True, text=True, timeout=240)
+from mpi_checks import check, dtm, finish, ranks, run
 
 
 def write_points(path, n, bad_line=None):
@@ -84,5 +70,4 @@ with tempfile.TemporaryDirectory() as tmp:
         check(other.returncode == 2 and "only `dtm tin` and `dtm grid`" in other.stderr,
               f"dtm info under mpirun: {other.stderr!r}")
 
-print("tin on", ranks, "MPI ranks:", "all checks passed" if not failures else f"{len(failures)} failed")
-sys.exit(1 if failures else 0)
+finish("tin")

@@ -165,13 +165,9 @@ DistributedDemResult distributed_dem(dist::Comm& comm,
                                      const DistributedDemOptions& options,
                                      const Progress& progress) {
     DistributedDemResult result;
-    result.ranks = comm.size();
     detail::DistributedSurface surface =
         detail::distributed_surface(comm, options.source, progress.sub(0.0, 0.6));
-    result.points = surface.points;
-    result.skipped_lines = surface.skipped_lines;
-    result.vertices = surface.merged.total_vertices;
-    result.triangles = surface.triangles;
+    static_cast<DistributedCounts&>(result) = detail::counts_of(comm, surface);
 
     detail::report_progress(progress, 0.6, "rasterize");
     comm.set_phase("dem vertices");

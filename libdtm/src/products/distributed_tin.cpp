@@ -14,13 +14,9 @@ DistributedTinResult distributed_tin(dist::Comm& comm,
                                      const DistributedTinOptions& options,
                                      const Progress& progress) {
     DistributedTinResult result;
-    result.ranks = comm.size();
     const detail::DistributedSurface surface =
         detail::distributed_surface(comm, options.source, progress.sub(0.0, 0.8));
-    result.points = surface.points;
-    result.skipped_lines = surface.skipped_lines;
-    result.vertices = surface.merged.total_vertices;
-    result.triangles = surface.triangles;
+    static_cast<DistributedCounts&>(result) = detail::counts_of(comm, surface);
 
     detail::report_progress(progress, 0.8, "writing");
     io::TinWriteOptions write;

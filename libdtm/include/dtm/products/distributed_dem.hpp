@@ -24,15 +24,9 @@ struct DistributedDemOptions {
     std::filesystem::path output;  ///< the .vrt
 };
 
-struct DistributedDemResult {
-    int ranks = 1;
+struct DistributedDemResult : DistributedCounts {
     GridSpec spec;
-    std::uint64_t filled = 0;  ///< cells with data, all tiles
-    std::uint64_t points = 0;
-    std::uint64_t vertices = 0;
-    std::uint64_t triangles = 0;
-    std::uint64_t skipped_lines = 0;
-    std::uint64_t bytes_sent = 0;
+    std::uint64_t filled = 0;                  ///< cells with data, all tiles
     std::vector<std::filesystem::path> tiles;  ///< in row order
 };
 

@@ -29,13 +29,17 @@ struct DistributedTinOptions {
     std::filesystem::path output;  ///< a .ply
 };
 
-struct DistributedTinResult {
+/// What every distributed product reports of the run and its surface.
+struct DistributedCounts {
     int ranks = 1;
     std::uint64_t points = 0;    ///< input points
     std::uint64_t vertices = 0;  ///< after exact duplicates merged
     std::uint64_t triangles = 0;
     std::uint64_t skipped_lines = 0;
     std::uint64_t bytes_sent = 0;  ///< by all ranks, every phase
+};
+
+struct DistributedTinResult : DistributedCounts {
     std::uint64_t band_triangles = 0;
     std::uint32_t widenings = 0;
 };

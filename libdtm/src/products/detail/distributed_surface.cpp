@@ -85,4 +85,14 @@ DistributedSurface distributed_surface(dist::Comm& comm,
     return out;
 }
 
+DistributedCounts counts_of(const dist::Comm& comm, const DistributedSurface& surface) {
+    DistributedCounts counts;
+    counts.ranks = comm.size();
+    counts.points = surface.points;
+    counts.skipped_lines = surface.skipped_lines;
+    counts.vertices = surface.merged.total_vertices;
+    counts.triangles = surface.triangles;
+    return counts;
+}
+
 }  // namespace dtm::products::detail

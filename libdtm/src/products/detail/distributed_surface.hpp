@@ -30,6 +30,10 @@ DistributedSurface distributed_surface(dist::Comm& comm,
                                        const DistributedSource& source,
                                        const Progress& progress);
 
+/// The counts of @p surface (bytes_sent is left to the end of the product).
+[[nodiscard]] DistributedCounts counts_of(const dist::Comm& comm,
+                                          const DistributedSurface& surface);
+
 /// Progress on the ranks that show it; a stop request is agreed on by the steps' reductions.
 void report_progress(const Progress& progress, double fraction, const char* what);
 
