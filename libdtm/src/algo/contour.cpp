@@ -67,6 +67,11 @@ std::vector<ContourLevel> fixed_levels(double zmin, double zmax, const ContourOp
     return levels;
 }
 
+/// The levels [first, last) of a level list.
+struct LevelRange {
+    std::size_t first = 0, last = 0;
+};
+
 /// Per level, the crossed triangles (CSR).
 struct LevelBuckets {
     std::vector<std::size_t> offsets;
@@ -206,6 +211,7 @@ std::vector<Contour> trace_one_level(const Tin& tin,
 
 void run_levels(const Tin& tin,
                 const std::vector<ContourLevel>& levels,
+                LevelRange range,
                 const LevelBuckets& buckets,
                 const ContourOptions& options,
                 ContourSink& sink,
@@ -217,9 +223,9 @@ void run_levels(const Tin& tin,
     }
     tbb::enumerable_thread_specific<std::vector<std::uint8_t>> visited(
         [&] { return std::vector<std::uint8_t>(tin.triangles.size(), 0); });
-    std::size_t next = 0;
+    std::size_t next = range.first;
     auto source = [&](tbb::flow_control& fc) -> std::size_t {
-        if (next == levels.size()) {
+        if (next == range.last) {
             fc.stop();
         }
         return next++;
@@ -240,7 +246,9 @@ void run_levels(const Tin& tin,
             sink.add(c.level, c.line, c.closed);
         }
         std::vector<Contour>().swap(traced[k]);
-        progress.report(static_cast<double>(k + 1) / static_cast<double>(levels.size()), "contour");
+        progress.report(static_cast<double>(k + 1 - range.first) /
+                            static_cast<double>(range.last - range.first),
+                        "contour");
     };
     const auto tokens = static_cast<std::size_t>(2 * tbb::this_task_arena::max_concurrency());
     tbb::parallel_pipeline(
@@ -303,7 +311,19 @@ void trace_contour_levels(const Tin& tin,
                           ContourSink& sink,
                           const Progress& progress,
                           const EdgeCrossing* edge_crossing) {
-    if (levels.empty()) {
+    trace_level_range(tin, levels, 0, levels.size(), options, sink, progress, edge_crossing);
+}
+
+void trace_level_range(const Tin& tin,
+                       const std::vector<ContourLevel>& levels,
+                       std::size_t first,
+                       std::size_t last,
+                       const ContourOptions& options,
+                       ContourSink& sink,
+                       const Progress& progress,
+                       const EdgeCrossing* edge_crossing) {
+    last = std::min(last, levels.size());
+    if (first >= last) {
         return;
     }
     std::vector<double> values;
@@ -312,12 +332,14 @@ void trace_contour_levels(const Tin& tin,
     }
     const LevelBuckets buckets = bucket_levels(tin, values);
     progress.report(0.0, "contour");
+    const LevelRange range{first, last};
     if (options.threads > 0) {
         tbb::task_arena arena(static_cast<int>(options.threads));
-        arena.execute(
-            [&] { run_levels(tin, levels, buckets, options, sink, progress, edge_crossing); });
+        arena.execute([&] {
+            run_levels(tin, levels, range, buckets, options, sink, progress, edge_crossing);
+        });
     } else {
-        run_levels(tin, levels, buckets, options, sink, progress, edge_crossing);
+        run_levels(tin, levels, range, buckets, options, sink, progress, edge_crossing);
     }
 }
 
@@ -371,6 +393,16 @@ void contour(const Tin& tin,
         return;
     }
     detail::contour_refined(tin, interpolant, options, sink, progress);
+}
+
+void contour_level_range(const Tin& tin,
+                         const std::vector<ContourLevel>& levels,
+                         std::size_t first,
+                         std::size_t last,
+                         const ContourOptions& options,
+                         ContourSink& sink,
+                         const Progress& progress) {
+    detail::trace_level_range(tin, levels, first, last, options, sink, progress);
 }
 
 std::vector<Contour> contour(const Tin& tin,

@@ -354,6 +354,32 @@ public:
     std::vector<Contour> out;
 };
 
+TEST(Contour, LevelRangesTracedApartConcatenateToTheWholeRun) {
+    const Tin tin = random_tin(9);
+    const dtm::ContourOptions options{.interval = 0.25, .smooth = 1, .threads = 1};
+    CollectingSink whole;
+    dtm::contour(tin, options, whole);
+    double zmin = 1e300, zmax = -1e300;
+    for (const Point3& p : tin.vertices) {
+        zmin = std::min(zmin, p.z);
+        zmax = std::max(zmax, p.z);
+    }
+    const std::vector<dtm::ContourLevel> levels = dtm::contour_levels(zmin, zmax, options);
+    ASSERT_GT(levels.size(), 5U);
+    CollectingSink pieces;
+    const std::size_t cuts[] = {0, 1, 2, levels.size() / 2, levels.size() - 1, levels.size()};
+    for (std::size_t i = 0; i + 1 < std::size(cuts); ++i) {
+        dtm::contour_level_range(tin, levels, cuts[i], cuts[i + 1], options, pieces);
+    }
+    dtm::contour_level_range(tin, levels, 3, 3, options, pieces);  // empty range: nothing
+    ASSERT_EQ(pieces.out.size(), whole.out.size());
+    for (std::size_t i = 0; i < whole.out.size(); ++i) {
+        EXPECT_EQ(pieces.out[i].line, whole.out[i].line);
+        EXPECT_EQ(pieces.out[i].level.number, whole.out[i].level.number);
+        EXPECT_EQ(pieces.out[i].closed, whole.out[i].closed);
+    }
+}
+
 TEST(Contour, OutputIsInLevelOrderAndIndependentOfTheThreadCount) {
     const Tin tin = random_tin(8);
     CollectingSink one, all;

@@ -72,6 +72,19 @@ void contour(const Tin& tin,
              ContourSink& sink,
              const Progress& progress = {});
 
+/// Traces, on the linear surface of @p tin, the levels [first, last) of @p levels (as
+/// contour_levels gives them for the whole surface) into @p sink, as contour() traces them:
+/// lines of those levels only, in the same order and bits, provided @p tin holds every triangle
+/// those levels cross, in the whole TIN's relative order, with the same corner order and vertex
+/// order (a distributed run whose ranks trace disjoint level ranges). @throws Cancelled
+void contour_level_range(const Tin& tin,
+                         const std::vector<ContourLevel>& levels,
+                         std::size_t first,
+                         std::size_t last,
+                         const ContourOptions& options,
+                         ContourSink& sink,
+                         const Progress& progress = {});
+
 /// Convenience for small data: collect into memory.
 [[nodiscard]] std::vector<Contour> contour(const Tin& tin,
                                            const ContourOptions& options = {},

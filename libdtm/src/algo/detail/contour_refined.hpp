@@ -20,6 +20,17 @@ void trace_contour_levels(const Tin& tin,
                           const Progress& progress,
                           const EdgeCrossing* edge_crossing = nullptr);
 
+/// The same for the levels [first, last) of @p levels only (the smoothing band of a level is
+/// the one of the whole list).
+void trace_level_range(const Tin& tin,
+                       const std::vector<ContourLevel>& levels,
+                       std::size_t first,
+                       std::size_t last,
+                       const ContourOptions& options,
+                       ContourSink& sink,
+                       const Progress& progress,
+                       const EdgeCrossing* edge_crossing = nullptr);
+
 /// Contours of a cubic or natural-neighbour surface: traced on a refinement of the TIN whose
 /// vertices lie on that surface (contour_refined.cpp).
 void contour_refined(const Tin& tin,
