@@ -76,6 +76,16 @@ std::vector<std::uint64_t> all_ghost_slots(Comm& comm, const LocalMesh& mesh) {
         comm.allgatherv(to_bytes(std::span<const std::uint64_t>(mine))));
 }
 
+std::uint64_t serial_face(std::uint64_t slot,
+                          std::span<const std::uint64_t> ghosts,
+                          std::uint64_t real) {
+    if (slot < real) return slot;
+    const auto holes_end = std::lower_bound(ghosts.begin(), ghosts.end(), real);
+    const auto between = static_cast<std::uint64_t>(
+        std::lower_bound(ghosts.begin(), ghosts.end(), slot) - holes_end);
+    return ghosts[slot - real - between];
+}
+
 SurfaceMesh surface_mesh(Comm& comm, const MergedShare& merged, const DistributedMesh& k) {
     const LocalMesh& mesh = k.mesh;
     const auto foreign = foreign_vertex_numbers(comm, k);
@@ -88,6 +98,9 @@ SurfaceMesh surface_mesh(Comm& comm, const MergedShare& merged, const Distribute
     const auto is_ghost_slot = [&](std::uint64_t slot) {
         return std::binary_search(ghosts.begin(), ghosts.end(), slot);
     };
+    const auto slots = static_cast<std::uint64_t>(
+        comm.allreduce(static_cast<std::int64_t>(mesh.tris.size()), Reduce::sum));
+    const std::uint64_t real = slots - ghosts.size();
     SurfaceMesh out;
     out.faces.reserve(mesh.tris.size());
     std::vector<std::pair<std::uint64_t, std::uint64_t>> corners;  // (vertex id, 3 f + i)
@@ -97,6 +110,7 @@ SurfaceMesh surface_mesh(Comm& comm, const MergedShare& merged, const Distribute
         if (detail::is_ghost_triangle(t)) continue;
         const GlobalTriangle g = mesh.at(mesh.first_slot + s);
         SurfaceFace f;
+        f.face = serial_face(mesh.first_slot + s, ghosts, real);
         for (unsigned i = 0; i < 3; ++i) {
             corners.emplace_back(number(t.v[i]), 3 * out.faces.size() + i);
             // Kernel half-edge i runs v[i] -> v[i + 1], opposite corner i + 2

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstdint>
+#include <span>
 #include <unordered_map>
 #include <vector>
 
@@ -39,6 +40,13 @@ private:
 /// Collective: the ghost slots of all ranks (the hull's and the unused ones), in slot order.
 [[nodiscard]] std::vector<std::uint64_t> all_ghost_slots(Comm& comm, const LocalMesh& mesh);
 
+/// The index in the serial TIN of the real triangle in kernel slot @p slot: the slot itself
+/// below the real count @p real; the k-th real slot at or above it fills the k-th ghost slot
+/// below it (tin_build_triangles). @p ghosts: every ghost slot, ascending.
+[[nodiscard]] std::uint64_t serial_face(std::uint64_t slot,
+                                        std::span<const std::uint64_t> ghosts,
+                                        std::uint64_t real);
+
 /// A vertex of the TIN: its merged number (the serial TIN's) and position.
 struct SurfaceVertex {
     std::uint64_t id = 0;
@@ -49,6 +57,7 @@ struct SurfaceVertex {
 /// into the mesh's vertices), edge e opposite corner e, bit e of `border` set when no triangle
 /// lies across edge e (the hull).
 struct SurfaceFace {
+    std::uint64_t face = 0;  ///< its index among the serial TIN's triangles
     std::array<std::uint32_t, 3> v{};
     std::uint32_t border = 0;
 };

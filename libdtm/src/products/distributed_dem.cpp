@@ -23,6 +23,7 @@
 #include "dtm/core/error.hpp"
 #include "dtm/io/grid_writer.hpp"
 #include "products/detail/distributed_surface.hpp"
+#include "products/detail/surface_routing.hpp"
 
 namespace dtm::products {
 namespace {
@@ -52,85 +53,29 @@ GridSpec grid_of(dist::Comm& comm,
     return snapped_grid_spec(whole, options.cell);
 }
 
-/// Sends every face to the ranks whose row blocks it may reach, with the vertices it names (a
-/// vertex once per destination, unless its faces alternate between destinations: the receiver
-/// merges repeats by number), and builds a Tin of what this rank receives: vertices once each
-/// in ascending number, a neighbour link no_triangle on the hull and 0 elsewhere (rasterize reads
-/// only whether there is a neighbour).
+/// Every face goes to the ranks whose row blocks its rows may reach.
 Tin route_to_row_blocks(dist::Comm& comm, const GridSpec& spec, dist::SurfaceMesh surface) {
     const int ranks = comm.size();
     std::vector<std::size_t> starts;
     for (int r = 0; r <= ranks; ++r) starts.push_back(block_start(spec, r, ranks));
-    const auto owner = [&](std::size_t row) {
+    const auto owner = [&](std::size_t row) {  // the last rank whose block starts at or before
         return static_cast<std::size_t>(std::upper_bound(starts.begin(), starts.end(), row) -
                                         starts.begin()) -
                1;
     };
-    const auto p = static_cast<std::size_t>(ranks);
-    std::vector<dist::Bytes> vertices(p), faces(p);
-    std::vector<std::uint32_t> sent(p, 0);  // vertices sent to each rank so far
-    constexpr std::size_t none = ~std::size_t{0};
-    std::vector<std::size_t> last_rank(surface.vertices.size(), none);
-    std::vector<std::uint32_t> index_there(surface.vertices.size(), 0);
-    for (const dist::SurfaceFace& f : surface.faces) {
-        double ylo = surface.vertices[f.v[0]].p.y, yhi = ylo;
+    const auto destinations = [&](const dist::SurfaceFace& f,
+                                  const std::vector<dist::SurfaceVertex>& vertices) {
+        double ylo = vertices[f.v[0]].p.y, yhi = ylo;
         for (const std::uint32_t v : f.v) {
-            ylo = std::min(ylo, surface.vertices[v].p.y);
-            yhi = std::max(yhi, surface.vertices[v].p.y);
+            ylo = std::min(ylo, vertices[v].p.y);
+            yhi = std::max(yhi, vertices[v].p.y);
         }
         std::size_t first = 0, last = 0;
-        if (!rows_touching(spec, ylo, yhi, first, last)) continue;
-        for (std::size_t r = owner(first); r <= owner(last); ++r) {
-            if (starts[r] == starts[r + 1]) continue;
-            dist::SurfaceFace there = f;
-            for (std::uint32_t& v : there.v) {
-                if (last_rank[v] != r) {
-                    last_rank[v] = r;
-                    index_there[v] = sent[r]++;
-                    dist::append_value(vertices[r], surface.vertices[v]);
-                }
-                v = index_there[v];
-            }
-            dist::append_value(faces[r], there);
-        }
-    }
-    surface = {};
-    std::vector<std::size_t>().swap(last_rank);
-    std::vector<std::uint32_t>().swap(index_there);
+        if (!rows_touching(spec, ylo, yhi, first, last)) return detail::RankRange{};
+        return detail::RankRange{owner(first), owner(last)};
+    };
     comm.set_phase("dem triangles");
-    const auto got_vertices = comm.alltoallv(std::move(vertices));
-    const auto got_faces = comm.alltoallv(std::move(faces));
-
-    std::vector<std::pair<std::uint64_t, std::uint64_t>> order;  // (number, received index)
-    std::vector<Point3> received;
-    std::vector<std::size_t> offset;  // of each source's vertices in `received`
-    for (const dist::Bytes& bytes : got_vertices) {
-        offset.push_back(received.size());
-        for (const dist::SurfaceVertex& v : dist::from_bytes<dist::SurfaceVertex>(bytes)) {
-            order.emplace_back(v.id, received.size());
-            received.push_back(v.p);
-        }
-    }
-    std::sort(order.begin(), order.end());
-    Tin tin;
-    std::vector<VertexIndex> vertex_of(received.size());
-    for (std::size_t i = 0; i < order.size(); ++i) {
-        if (i == 0 || order[i - 1].first != order[i].first) {
-            tin.vertices.push_back(received[order[i].second]);
-        }
-        vertex_of[order[i].second] = static_cast<VertexIndex>(tin.vertices.size() - 1);
-    }
-    for (std::size_t src = 0; src < got_faces.size(); ++src) {
-        for (const dist::SurfaceFace& f : dist::from_bytes<dist::SurfaceFace>(got_faces[src])) {
-            Triangle t;
-            for (unsigned i = 0; i < 3; ++i) {
-                t.v[i] = vertex_of[offset[src] + f.v[i]];
-                t.n[i] = (f.border >> i & 1U) != 0 ? no_triangle : 0;
-            }
-            tin.triangles.push_back(t);
-        }
-    }
-    return tin;
+    return detail::route_faces(comm, std::move(surface), destinations, detail::Links::border_only);
 }
 
 /// Counts the cells with data and passes the rows on at their rows in the tile.
@@ -157,8 +102,7 @@ constexpr double max_cells = 68'719'476'736.0;  // 2^36, as dtm grid
 }  // namespace
 
 std::filesystem::path dem_tile_path(const std::filesystem::path& vrt, int rank, int ranks) {
-    return vrt.parent_path() / (vrt.stem().string() + "-" + std::to_string(rank) + "-of-" +
-                                std::to_string(ranks) + ".tif");
+    return detail::piece_path(vrt, rank, ranks, "tif");
 }
 
 DistributedDemResult distributed_dem(dist::Comm& comm,

@@ -80,7 +80,6 @@ void write_distributed_ply(dist::Comm& comm,
         file->write_at(header.size() + 24 * merged.first_vertex, block);
         // Faces: runs of slots below R in place, the movers one by one into the holes.
         const std::uint64_t real_end = faces;  // R
-        const auto holes_end = std::lower_bound(ghosts.begin(), ghosts.end(), real_end);
         block.clear();
         std::uint64_t run_start = 0;
         const auto flush = [&] {
@@ -101,11 +100,7 @@ void write_distributed_ply(dist::Comm& comm,
             for (const std::uint32_t v : t.v) dist::append_value(out, number(v));
             if (slot >= real_end) {
                 flush();
-                // The k-th real slot at or above R fills the k-th hole below R.
-                const std::uint64_t ghosts_between = static_cast<std::uint64_t>(
-                    std::lower_bound(ghosts.begin(), ghosts.end(), slot) - holes_end);
-                const std::uint64_t k = slot - real_end - ghosts_between;
-                file->write_at(face_start + 13 * ghosts[k], one);
+                file->write_at(face_start + 13 * dist::serial_face(slot, ghosts, real_end), one);
                 one.clear();
             }
         }
