@@ -67,7 +67,7 @@ with tempfile.TemporaryDirectory() as tmp:
         check(refused.returncode == 2 and refused.stderr.count("does not take") == 1,
               f"breaklines refused: exit {refused.returncode}: {refused.stderr!r}")
         other = run(["info", points], True)
-        check(other.returncode == 2 and "only `dtm tin` and `dtm grid`" in other.stderr,
+        check(other.returncode == 2 and "only `dtm tin`, `dtm grid` and `dtm contour`" in other.stderr,
               f"dtm info under mpirun: {other.stderr!r}")
 
 finish("tin")

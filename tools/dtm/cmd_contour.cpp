@@ -3,7 +3,8 @@
 //             [--smooth N] [--interpolation linear|cubic|natural] [--subdivisions M]
 //             [--spot-heights] [--no-labels] [--label-scale S] [--label-height MM]
 // Contour lines traced exactly on the TIN, with their labels in DXF and GeoPackage files
-// (parse -> options -> library -> report).
+// (parse -> options -> library -> report). A .vrt output, and any run under mpirun, is the
+// distributed layout: one GeoPackage per rank (a range of levels) and an OGR VRT over them.
 #include <iostream>
 #include <memory>
 #include <string>
@@ -12,12 +13,16 @@
 
 #include "command.hpp"
 #include "contour_flats_args.hpp"
+#include "distributed.hpp"
 #include "dtm/algo/contour.hpp"
 #include "dtm/core/error.hpp"
+#include "dtm/dist/in_process.hpp"
 #include "dtm/io/contour_writer.hpp"
+#include "dtm/io/extension.hpp"
 #include "dtm/io/inputs.hpp"
 #include "dtm/io/output_check.hpp"
 #include "dtm/products/contours.hpp"
+#include "dtm/products/distributed_contours.hpp"
 #include "dtm/products/surface.hpp"
 #include "input_args.hpp"
 #include "interpolation_args.hpp"
@@ -38,9 +43,54 @@ struct ContourArgs {
     bool quiet = false;
 };
 
+/// Contours as one GeoPackage per rank and an OGR VRT, on the ranks of an MPI job or on this
+/// process alone: what the distributed run covers, or a clear refusal.
+int run_contour_pieces(ContourArgs args, dist::Comm& comm) {
+    check_distributed_input("contour", args.input, args.tin);
+    const auto refuse = [](const std::string& what) {
+        throw UsageError("contour: distributed contours (.vrt output, or mpirun) do not take " +
+                         what + " yet");
+    };
+    if (io::lower_extension(args.output) != "vrt") {
+        throw UsageError(
+            "contour: distributed contours are one GeoPackage per rank and an OGR VRT over "
+            "them: give -o NAME.vrt, not " +
+            args.output);
+    }
+    if (args.contour.surface != Interpolation::linear) {
+        refuse("`interpolation` other than linear");
+    }
+    if (!args.no_labels || args.file.spot_heights) {
+        refuse("labels or spot heights (give --no-labels)");
+    }
+    io::check_output(products::contour_piece_path(args.output, 0, comm.size()),
+                     io::OutputKind::contours, "output");
+    args.contour.threads = args.tin.threads;
+    const InputArgs& in = args.input;
+    products::DistributedContourOptions options;
+    options.source = {
+        {in.inputs[0], io::InputRole::points}, in.read, in.crs.default_crs, args.tin.duplicates};
+    options.contour = args.contour;
+    options.output = args.output;
+    const products::DistributedContourResult r = products::distributed_contours(
+        comm, options, prints() ? terminal_progress("contour", args.quiet) : Progress{});
+    if (prints()) {
+        std::cout << "contour: " << r.lines << " lines of " << r.levels << " levels -> "
+                  << args.output << " (" << r.pieces.size() << " GeoPackage piece"
+                  << (r.pieces.size() == 1 ? "" : "s") << " beside it)\n";
+    }
+    return 0;
+}
+
 int run_contour(ContourArgs args) {
     if (args.contour.fixed_levels.empty() && !(args.contour.interval > 0.0)) {
         throw UsageError("contour: give --interval or --levels");
+    }
+    if (dist::Comm* comm = distributed_comm()) return run_contour_pieces(std::move(args), *comm);
+    if (io::lower_extension(args.output) == "vrt") {
+        int status = 0;
+        dist::run_in_process(1, [&](dist::Comm& comm) { status = run_contour_pieces(args, comm); });
+        return status;
     }
     io::check_output(args.output, io::OutputKind::contours, "output");
     args.file.labels = !args.no_labels;
@@ -88,7 +138,9 @@ Command contour_command() {
                 add_contour_flats_options(app, args->flats);
                 add_dem_options(app, args->input.dem);
                 app.add_option("-o,--output", args->output,
-                               "Contour file: .gpkg (default format), .shp, .dxf, .geojson")
+                               "Contour file: .gpkg (default format), .shp, .dxf, .geojson; .vrt: "
+                               "an OGR VRT over one GeoPackage per rank, NAME-R-of-P.gpkg, as "
+                               "mpirun writes")
                     ->required();
                 app.add_option("--interval", args->contour.interval, "Distance between levels")
                     ->check(CLI::PositiveNumber);

@@ -80,8 +80,10 @@ int main(int argc, char** argv) {
         say("a subcommand is required\n" + app.help());
         return 2;
     }
-    if (distributed_comm() != nullptr && chosen != "tin" && chosen != "grid") {
-        say("only `dtm tin` and `dtm grid` run distributed (under mpirun) yet; run `dtm " +
+    if (distributed_comm() != nullptr && chosen != "tin" && chosen != "grid" &&
+        chosen != "contour") {
+        say("only `dtm tin`, `dtm grid` and `dtm contour` run distributed (under mpirun) yet; "
+            "run `dtm " +
             std::string(chosen) + "` on one machine");
         return 2;
     }

@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <fstream>
 #include <mutex>
 #include <optional>
 
@@ -23,6 +24,7 @@
 #include "dtm/io/extension.hpp"
 #include "dtm/io/formats/dxf.hpp"
 #include "dtm/io/formats/qgis_project.hpp"
+#include "io/formats/qgis/qgis_project_xml.hpp"
 
 namespace dtm::io {
 namespace fs = std::filesystem;
@@ -333,6 +335,52 @@ std::vector<std::string> contour_extensions() {
         out.emplace_back(f.extension);
     }
     return out;
+}
+
+void write_contour_vrt(const fs::path& target,
+                       const std::vector<fs::path>& pieces,
+                       const ContourWriteOptions& options) {
+    static std::once_flag once;
+    std::call_once(once, [] { GDALAllRegister(); });
+    qgis::XmlWriter xml;
+    xml.open("OGRVRTDataSource");
+    xml.open("OGRVRTUnionLayer", {{"name", options.layer}});
+    for (const fs::path& piece : pieces) {
+        const bool beside = piece.parent_path() == target.parent_path();
+        xml.open("OGRVRTLayer", {{"name", piece.stem().string()}});
+        xml.text("SrcDataSource", beside ? piece.filename().string() : piece.string(),
+                 {{"relativeToVRT", beside ? "1" : "0"}});
+        xml.text("SrcLayer", options.layer);
+        xml.close("OGRVRTLayer");
+    }
+    xml.close("OGRVRTUnionLayer");
+    xml.close("OGRVRTDataSource");
+    AtomicOutput out(target);
+    {
+        std::ofstream file(out.temp_path(), std::ios::binary);
+        file << xml.str();
+        if (!file.flush()) throw Error("contour: cannot write " + target.string());
+    }
+    for (const fs::path& piece : pieces) {  // each piece opens and holds the layer
+        GDALDatasetH ds =
+            GDALOpenEx(piece.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, nullptr, nullptr);
+        const bool holds =
+            ds != nullptr && GDALDatasetGetLayerByName(ds, options.layer.c_str()) != nullptr;
+        if (ds != nullptr) GDALClose(ds);
+        if (!holds) {
+            throw Error("contour: cannot open the layer " + options.layer + " of " +
+                        piece.string() + " for the VRT " + target.string());
+        }
+    }
+    CPLErrorReset();
+    GDALDatasetH ds = GDALOpenEx(out.temp_path().c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY,
+                                 nullptr, nullptr, nullptr);
+    const bool opens = ds != nullptr && GDALDatasetGetLayerCount(ds) == 1 &&
+                       OGR_L_GetFeatureCount(GDALDatasetGetLayer(ds, 0), 1) >= 0 &&
+                       CPLGetLastErrorType() < CE_Failure;
+    if (ds != nullptr) GDALClose(ds);
+    if (!opens) throw_ogr("the VRT " + target.string() + " over the contour pieces does not open");
+    out.commit();
 }
 
 }  // namespace dtm::io

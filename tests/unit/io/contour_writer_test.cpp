@@ -115,6 +115,31 @@ TEST(ContourWriter, DxfPutsIndexAndIntermediateContoursOnSeparateLayers) {
     EXPECT_EQ(layers.count("CONTOUR"), 2U);
 }
 
+TEST(ContourWriter, VrtJoinsThePiecesInOrderIntoOneLayer) {
+    const dtm::test::ScratchDir dir;
+    write_three(dir / "a.gpkg", true);
+    write_three(dir / "b.gpkg", true);
+    dtm::io::write_contour_vrt(dir / "all.vrt", {dir / "a.gpkg", dir / "b.gpkg"},
+                               {.crs_wkt = epsg_wkt(5514)});
+    Dataset ds(GDALDataset::Open((dir / "all.vrt").c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY));
+    ASSERT_TRUE(ds);
+    ASSERT_EQ(ds->GetLayerCount(), 1);
+    OGRLayer* layer = ds->GetLayerByName("contours");
+    ASSERT_NE(layer, nullptr);
+    EXPECT_EQ(layer->GetFeatureCount(), 6);
+    EXPECT_EQ(layer->GetLayerDefn()->GetGeomFieldCount(), 1);
+    std::vector<double> elevations;
+    for (auto& feature : *layer) elevations.push_back(feature->GetFieldAsDouble("elevation"));
+    EXPECT_EQ(elevations, (std::vector<double>{100.0, 101.0, 105.0, 100.0, 101.0, 105.0}));
+    ASSERT_NE(layer->GetSpatialRef(), nullptr);
+    const std::string text = dtm::test::read_file(dir / "all.vrt");
+    EXPECT_EQ(text.find(dir.path().string()), std::string::npos) << "piece paths are relative";
+    EXPECT_THROW(
+        dtm::io::write_contour_vrt(dir / "bad.vrt", {dir / "a.gpkg", dir / "missing.gpkg"}, {}),
+        dtm::Error);
+    EXPECT_FALSE(std::filesystem::exists(dir / "bad.vrt"));
+}
+
 TEST(ContourWriter, UnknownExtensionIsAUsageError) {
     const dtm::test::ScratchDir dir;
     EXPECT_THROW(dtm::io::ContourWriter(dir / "c.xyz", {}), dtm::UsageError);

@@ -56,6 +56,14 @@ private:
     std::unique_ptr<State> state_;
 };
 
+/// Writes @p target, an OGR VRT whose layer options.layer is the union, in the given order, of
+/// the layers of that name in @p pieces (the contour GeoPackages of a distributed run): QGIS and
+/// GDAL read it as one layer. Piece paths beside the VRT are written relative to it. The file is
+/// opened through OGR (and so every piece) before it is committed atomically. @throws Error
+void write_contour_vrt(const std::filesystem::path& target,
+                       const std::vector<std::filesystem::path>& pieces,
+                       const ContourWriteOptions& options);
+
 /// True when a contour file of this extension holds labels (ContourWriter::holds_annotation).
 [[nodiscard]] bool contour_file_holds_annotation(const std::filesystem::path& target);
 

@@ -1,0 +1,162 @@
+// SPDX-License-Identifier: MIT
+//
+// The distributed contours (distributed_contours.hpp). After the distributed surface:
+//   1. every rank lists its real triangles and their vertices (dist::surface_mesh), each
+//      triangle with its index in the serial TIN;
+//   2. the exact height range over the ranks (one allgather of two numbers, no arithmetic) gives
+//      the serial levels, the same list on every rank; rank r owns the levels [r L / P,
+//      (r + 1) L / P);
+//   3. a triangle is crossed by the levels k with lo <= k < hi, lo and hi the least and greatest
+//      count of levels at or below a corner (the serial bucketing's rule), and goes to the ranks
+//      owning one of them (route_faces: vertices once per destination);
+//   4. each rank rebuilds a Tin in the serial orders (vertices by number, triangles by serial
+//      index, links across the edges it received) and traces its levels with
+//      contour_level_range: a line of level k crosses only triangles level k crosses, and the
+//      triangle across each edge it crosses is crossed too, so the rank holds the whole line and
+//      traces it as the serial run does (the tracer compares triangle indices only, whose order is
+//      kept);
+//   5. the lines go to the rank's GeoPackage (io::ContourWriter, atomic), then rank 0 writes the
+//      OGR VRT (io::write_contour_vrt), pieces in level order: read through it, the layer is
+//      the serial one feature for feature.
+#include "dtm/products/distributed_contours.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <string>
+
+#include "dist/mesh_vertices.hpp"
+#include "dtm/core/error.hpp"
+#include "dtm/io/contour_writer.hpp"
+#include "products/detail/distributed_surface.hpp"
+#include "products/detail/surface_routing.hpp"
+
+namespace dtm::products {
+namespace {
+
+std::size_t range_start(std::size_t levels, int r, int ranks) {
+    return levels * static_cast<std::size_t>(r) / static_cast<std::size_t>(ranks);
+}
+
+/// The exact minimum and maximum height of the TIN's vertices over all ranks.
+std::pair<double, double> height_range(dist::Comm& comm, const dist::SurfaceMesh& surface) {
+    const double inf = std::numeric_limits<double>::infinity();
+    double lo = inf, hi = -inf;
+    for (const dist::SurfaceVertex& v : surface.vertices) {
+        lo = std::min(lo, v.p.z);
+        hi = std::max(hi, v.p.z);
+    }
+    std::vector<double> mine;
+    if (!surface.vertices.empty()) mine = {lo, hi};
+    const auto all =
+        dist::concatenated<double>(comm.allgatherv(dist::to_bytes(std::span<const double>(mine))));
+    lo = inf, hi = -inf;
+    for (std::size_t i = 0; i + 1 < all.size(); i += 2) {
+        lo = std::min(lo, all[i]);
+        hi = std::max(hi, all[i + 1]);
+    }
+    return {lo, hi};
+}
+
+/// Every face goes to the ranks owning a level that crosses it.
+Tin route_to_level_ranges(dist::Comm& comm,
+                          const std::vector<ContourLevel>& levels,
+                          dist::SurfaceMesh surface) {
+    const int ranks = comm.size();
+    std::vector<double> values;
+    for (const ContourLevel& l : levels) values.push_back(l.value);
+    std::vector<std::size_t> starts;
+    for (int r = 0; r <= ranks; ++r) starts.push_back(range_start(levels.size(), r, ranks));
+    const auto owner = [&](std::size_t k) {  // the last rank whose range starts at or before k
+        return static_cast<std::size_t>(std::upper_bound(starts.begin(), starts.end(), k) -
+                                        starts.begin()) -
+               1;
+    };
+    const auto destinations = [&](const dist::SurfaceFace& f,
+                                  const std::vector<dist::SurfaceVertex>& vertices) {
+        std::size_t lo = values.size(), hi = 0;
+        for (const std::uint32_t v : f.v) {
+            const auto at = static_cast<std::size_t>(
+                std::upper_bound(values.begin(), values.end(), vertices[v].p.z) - values.begin());
+            lo = std::min(lo, at);
+            hi = std::max(hi, at);
+        }
+        if (lo >= hi) return detail::RankRange{};
+        return detail::RankRange{owner(lo), owner(hi - 1)};
+    };
+    comm.set_phase("contour triangles");
+    return detail::route_faces(comm, std::move(surface), destinations, detail::Links::shared_edges);
+}
+
+}  // namespace
+
+std::filesystem::path contour_piece_path(const std::filesystem::path& vrt, int rank, int ranks) {
+    return detail::piece_path(vrt, rank, ranks, "gpkg");
+}
+
+DistributedContourResult distributed_contours(dist::Comm& comm,
+                                              const DistributedContourOptions& options,
+                                              const Progress& progress) {
+    if (options.contour.surface != Interpolation::linear) {
+        throw UsageError("contour: distributed contours follow the linear surface only");
+    }
+    DistributedContourResult result;
+    detail::DistributedSurface surface =
+        detail::distributed_surface(comm, options.source, progress.sub(0.0, 0.6));
+    static_cast<DistributedCounts&>(result) = detail::counts_of(comm, surface);
+
+    detail::report_progress(progress, 0.6, "tracing");
+    comm.set_phase("contour vertices");
+    dist::SurfaceMesh mine = dist::surface_mesh(comm, surface.merged, surface.kernel);
+    const std::string crs_wkt = std::move(surface.crs_wkt);
+    surface = {};  // the kernel's mesh is no longer needed
+    const auto [zmin, zmax] = height_range(comm, mine);
+    const std::vector<ContourLevel> levels = contour_levels(zmin, zmax, options.contour);
+    result.levels = levels.size();
+    const Tin tin = route_to_level_ranges(comm, levels, std::move(mine));
+
+    const int rank = comm.rank(), ranks = comm.size();
+    const std::size_t first = range_start(levels.size(), rank, ranks);
+    const std::size_t last = range_start(levels.size(), rank + 1, ranks);
+    // Ranks with levels write a piece; with no level at all, rank 0 writes the empty layer.
+    const auto writes = [&](int r) {
+        return range_start(levels.size(), r, ranks) < range_start(levels.size(), r + 1, ranks) ||
+               (levels.empty() && r == 0);
+    };
+    const io::ContourWriteOptions write{.crs_wkt = crs_wkt, .layer = options.layer};
+    std::string error;
+    std::uint64_t lines = 0;
+    if (writes(rank)) {
+        try {
+            io::ContourWriter writer(contour_piece_path(options.output, rank, ranks), write);
+            contour_level_range(tin, levels, first, last, options.contour, writer,
+                                rank == 0 ? progress.sub(0.7, 0.95) : Progress{});
+            writer.commit();
+            lines = writer.feature_count();
+        } catch (const Error& e) {
+            error = e.what();
+        }
+    }
+    if (comm.allreduce(error.empty() ? 0 : 1, dist::Reduce::max) != 0) {
+        dist::throw_first_error(comm, error);
+    }
+    result.lines = static_cast<std::uint64_t>(
+        comm.allreduce(static_cast<std::int64_t>(lines), dist::Reduce::sum));
+    for (int r = 0; r < ranks; ++r) {
+        if (writes(r)) result.pieces.push_back(contour_piece_path(options.output, r, ranks));
+    }
+    if (rank == 0) {
+        try {
+            io::write_contour_vrt(options.output, result.pieces, write);
+        } catch (const Error& e) {
+            error = e.what();
+        }
+    }
+    if (comm.allreduce(error.empty() ? 0 : 1, dist::Reduce::max) != 0) {
+        dist::throw_first_error(comm, error);
+    }
+    result.bytes_sent = detail::bytes_sent(comm);
+    detail::report_progress(progress, 1.0, "done");
+    return result;
+}
+
+}  // namespace dtm::products
