@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# `mpirun -np P dtm tin|grid` against `dtm tin|grid` on one machine, in one run, on the same
-# S-JTSK point list (bench/make_inputs, N points, default 10^6): wall times (best of RUNS), the
-# ratio distributed / serial, and the outputs compared (PLY bytes; DEM cells through
-# gdal_translate -of ENVI). Usage: BUILD=build bench/dist_cli.sh [N] [CELL]
+# `mpirun -np P dtm tin|grid|contour` against the same subcommand on one process, in one run,
+# on the same S-JTSK point list (bench/make_inputs, N points, default 10^6): wall times (best of
+# RUNS), the ratio distributed / serial, and the outputs compared (PLY bytes; DEM cells through
+# gdal_translate -of ENVI; contour features through ogr2ogr).
+# Usage: BUILD=build bench/dist_cli.sh [N] [CELL]
 set -euo pipefail
 repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=${BUILD:-$repo/build}
@@ -51,5 +52,13 @@ s=$(cells "$work/s.tif" "$work/s.raw")
 [[ "$s" == "$(cells "$work/d2.vrt" "$work/d2.raw")" && "$s" == "$(cells "$work/d4.vrt" "$work/d4.raw")" ]] \
     && same="yes (cells)"
 echo "| grid | ${serial} s | ${d2} s | $(echo "scale=2; $d2 / $serial" | bc)x | ${d4} s | $(echo "scale=2; $d4 / $serial" | bc)x | $same |"
+serial=$(best "$dtm" contour "$pts" --crs EPSG:5514 --interval 1 --no-labels -o "$work/s.gpkg")
+d2=$(best mpirun -np 2 "$dtm" contour "$pts" --crs EPSG:5514 --interval 1 --no-labels -o "$work/c2.vrt")
+d4=$(best mpirun -np 4 "$dtm" contour "$pts" --crs EPSG:5514 --interval 1 --no-labels -o "$work/c4.vrt")
+same=no
+lines() { ogr2ogr -f CSV /vsistdout/ "$1" -lco GEOMETRY=AS_WKT | md5sum | cut -d' ' -f1; }
+s=$(lines "$work/s.gpkg")
+[[ "$s" == "$(lines "$work/c2.vrt")" && "$s" == "$(lines "$work/c4.vrt")" ]] && same="yes (features)"
+echo "| contour, interval 1 m | ${serial} s | ${d2} s | $(echo "scale=2; $d2 / $serial" | bc)x | ${d4} s | $(echo "scale=2; $d4 / $serial" | bc)x | $same |"
 echo
 echo "job start alone: mpirun -np 2 dtm --version $(best mpirun -np 2 "$dtm" --version) s"
