@@ -14,14 +14,19 @@
 
 namespace {
 
+#define DTM_REQUIRE_PYQGIS()                                                                     \
+    do {                                                                                         \
+        if (std::system("/usr/bin/python3 -c 'import qgis.core' >/dev/null 2>&1") != 0) {        \
+            const char* ci = std::getenv("CI");                                                  \
+            if (ci != nullptr && std::string(ci) == "true") {                                    \
+                FAIL() << "PyQGIS not installed: scripts/install-deps.sh installs python3-qgis"; \
+            }                                                                                    \
+            GTEST_SKIP() << "PyQGIS not installed (apt-get install python3-qgis)";               \
+        }                                                                                        \
+    } while (false)
+
 TEST(QgisOpen, BuildProjectOpensInQgisWithEveryLayerValidInSjtsk) {
-    if (std::system("/usr/bin/python3 -c 'import qgis.core' >/dev/null 2>&1") != 0) {
-        const char* ci = std::getenv("CI");
-        if (ci != nullptr && std::string(ci) == "true") {
-            FAIL() << "PyQGIS not installed: scripts/install-deps.sh installs python3-qgis";
-        }
-        GTEST_SKIP() << "PyQGIS not installed (apt-get install python3-qgis)";
-    }
+    DTM_REQUIRE_PYQGIS();
     const std::filesystem::path samples =
         std::filesystem::path(DTM_TEST_DATA_DIR) / ".." / ".." / "samples" / "sjtsk";
     const std::filesystem::path check =
@@ -64,6 +69,31 @@ TEST(QgisOpen, BuildProjectOpensInQgisWithEveryLayerValidInSjtsk) {
     // the layout's extent is map.pdf's neat line
     const std::string json = dtm::test::read_file(out / "report.json");
     EXPECT_NE(json.find("\"map\""), std::string::npos) << json;
+}
+
+// The distributed layout (one rank's here; mpirun writes more pieces of the same kinds): the
+// GDAL VRT over the DEM tiles and the OGR VRT over the contour pieces open in QGIS as a valid
+// raster and a valid line layer in EPSG:5514 that draw.
+TEST(QgisOpen, DistributedDemAndContourVrtsOpenInQgis) {
+    DTM_REQUIRE_PYQGIS();
+    const std::filesystem::path points =
+        std::filesystem::path(DTM_TEST_DATA_DIR) / ".." / ".." / "samples" / "sjtsk" / "points.csv";
+    const std::filesystem::path check =
+        std::filesystem::path(DTM_TEST_DATA_DIR) / ".." / "support" / "qgis_layers_check.py";
+    dtm::test::ScratchDir dir;
+    const dtm::test::RunResult dem =
+        dtm::test::run_dtm({"grid", points.string(), "--crs", "EPSG:5514", "--skip-bad-lines",
+                            "--cell", "1", "-q", "-o", (dir / "dem.vrt").string()});
+    ASSERT_EQ(dem.exit_code, 0) << dem.err;
+    const dtm::test::RunResult lines = dtm::test::run_dtm(
+        {"contour", points.string(), "--crs", "EPSG:5514", "--skip-bad-lines", "--interval", "1",
+         "--no-labels", "-q", "-o", (dir / "contours.vrt").string()});
+    ASSERT_EQ(lines.exit_code, 0) << lines.err;
+    const std::string command = "QT_QPA_PLATFORM=offscreen /usr/bin/python3 '" + check.string() +
+                                "' 'raster:" + (dir / "dem.vrt").string() +
+                                "' 'vector:" + (dir / "contours.vrt").string() + "' > '" +
+                                (dir / "qgis.log").string() + "' 2>&1";
+    EXPECT_EQ(std::system(command.c_str()), 0) << dtm::test::read_file(dir / "qgis.log");
 }
 
 }  // namespace
