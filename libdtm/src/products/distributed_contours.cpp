@@ -4,8 +4,8 @@
 //   1. every rank lists its real triangles and their vertices (dist::surface_mesh), each
 //      triangle with its index in the serial TIN;
 //   2. the exact height range over the ranks (one allgather of two numbers, no arithmetic) gives
-//      the serial levels, the same list on every rank; rank r owns the levels [r L / P,
-//      (r + 1) L / P);
+//      the serial levels, the same list on every rank; the levels are cut into P ranges of
+//      about equal numbers of crossed triangles (one int64 allreduce of the counts per level);
 //   3. a triangle is crossed by the levels k with lo <= k < hi, lo and hi the least and greatest
 //      count of levels at or below a corner (the serial bucketing's rule), and goes to the ranks
 //      owning one of them (route_faces: vertices once per destination);
@@ -33,8 +33,52 @@
 namespace dtm::products {
 namespace {
 
-std::size_t range_start(std::size_t levels, int r, int ranks) {
-    return levels * static_cast<std::size_t>(r) / static_cast<std::size_t>(ranks);
+/// For every level, how many of this rank's faces it crosses (k with lo <= k < hi, lo and hi the
+/// least and greatest count of levels at or below a corner: the serial bucketing's rule).
+std::pair<std::size_t, std::size_t> crossed_levels(const std::vector<double>& values,
+                                                   const dist::SurfaceFace& f,
+                                                   const std::vector<dist::SurfaceVertex>& v) {
+    std::size_t lo = values.size(), hi = 0;
+    for (const std::uint32_t corner : f.v) {
+        const auto at = static_cast<std::size_t>(
+            std::upper_bound(values.begin(), values.end(), v[corner].p.z) - values.begin());
+        lo = std::min(lo, at);
+        hi = std::max(hi, at);
+    }
+    return {lo, hi};
+}
+
+/// The first level of every rank's range and the end (P + 1 numbers): ranges of about equal
+/// numbers of crossed triangles over all ranks (integer sums, the same on every rank); a rank
+/// may get no level when one level crosses more than its share.
+std::vector<std::size_t> level_ranges(dist::Comm& comm,
+                                      const std::vector<double>& values,
+                                      const dist::SurfaceMesh& surface) {
+    std::vector<std::int64_t> crossings(values.size() + 1, 0);  // differences, then counts
+    for (const dist::SurfaceFace& f : surface.faces) {
+        const auto [lo, hi] = crossed_levels(values, f, surface.vertices);
+        if (lo >= hi) continue;
+        ++crossings[lo];
+        --crossings[hi];
+    }
+    for (std::size_t k = 1; k < crossings.size(); ++k) crossings[k] += crossings[k - 1];
+    comm.allreduce(std::span<std::int64_t>(crossings), dist::Reduce::sum);
+    std::int64_t total = 0;
+    for (std::size_t k = 0; k < values.size(); ++k) total += crossings[k];
+    const auto ranks = static_cast<std::int64_t>(comm.size());
+    std::vector<std::size_t> starts{0};
+    std::int64_t before = 0;  // crossings of the levels below k
+    std::size_t k = 0;
+    for (std::int64_t r = 1; r < ranks; ++r) {
+        // Rank r starts at the first level whose crossings' midpoint lies at or after r / P of
+        // the total: (before + crossings / 2) P >= r total.
+        while (k < values.size() && (2 * before + crossings[k]) * ranks < 2 * r * total) {
+            before += crossings[k++];
+        }
+        starts.push_back(k);
+    }
+    starts.push_back(values.size());
+    return starts;
 }
 
 /// The exact minimum and maximum height of the TIN's vertices over all ranks.
@@ -59,13 +103,9 @@ std::pair<double, double> height_range(dist::Comm& comm, const dist::SurfaceMesh
 
 /// Every face goes to the ranks owning a level that crosses it.
 Tin route_to_level_ranges(dist::Comm& comm,
-                          const std::vector<ContourLevel>& levels,
+                          const std::vector<double>& values,
+                          const std::vector<std::size_t>& starts,
                           dist::SurfaceMesh surface) {
-    const int ranks = comm.size();
-    std::vector<double> values;
-    for (const ContourLevel& l : levels) values.push_back(l.value);
-    std::vector<std::size_t> starts;
-    for (int r = 0; r <= ranks; ++r) starts.push_back(range_start(levels.size(), r, ranks));
     const auto owner = [&](std::size_t k) {  // the last rank whose range starts at or before k
         return static_cast<std::size_t>(std::upper_bound(starts.begin(), starts.end(), k) -
                                         starts.begin()) -
@@ -73,13 +113,7 @@ Tin route_to_level_ranges(dist::Comm& comm,
     };
     const auto destinations = [&](const dist::SurfaceFace& f,
                                   const std::vector<dist::SurfaceVertex>& vertices) {
-        std::size_t lo = values.size(), hi = 0;
-        for (const std::uint32_t v : f.v) {
-            const auto at = static_cast<std::size_t>(
-                std::upper_bound(values.begin(), values.end(), vertices[v].p.z) - values.begin());
-            lo = std::min(lo, at);
-            hi = std::max(hi, at);
-        }
+        const auto [lo, hi] = crossed_levels(values, f, vertices);
         if (lo >= hi) return detail::RankRange{};
         return detail::RankRange{owner(lo), owner(hi - 1)};
     };
@@ -112,15 +146,17 @@ DistributedContourResult distributed_contours(dist::Comm& comm,
     const auto [zmin, zmax] = height_range(comm, mine);
     const std::vector<ContourLevel> levels = contour_levels(zmin, zmax, options.contour);
     result.levels = levels.size();
-    const Tin tin = route_to_level_ranges(comm, levels, std::move(mine));
+    std::vector<double> values;
+    for (const ContourLevel& l : levels) values.push_back(l.value);
+    const std::vector<std::size_t> starts = level_ranges(comm, values, mine);
+    const Tin tin = route_to_level_ranges(comm, values, starts, std::move(mine));
 
     const int rank = comm.rank(), ranks = comm.size();
-    const std::size_t first = range_start(levels.size(), rank, ranks);
-    const std::size_t last = range_start(levels.size(), rank + 1, ranks);
+    const auto at = [](int r) { return static_cast<std::size_t>(r); };
+    const std::size_t first = starts[at(rank)], last = starts[at(rank) + 1];
     // Ranks with levels write a piece; with no level at all, rank 0 writes the empty layer.
     const auto writes = [&](int r) {
-        return range_start(levels.size(), r, ranks) < range_start(levels.size(), r + 1, ranks) ||
-               (levels.empty() && r == 0);
+        return starts[at(r)] < starts[at(r) + 1] || (levels.empty() && r == 0);
     };
     const io::ContourWriteOptions write{.crs_wkt = crs_wkt, .layer = options.layer};
     std::string error;

@@ -34,11 +34,12 @@ struct DistributedContourResult : DistributedCounts {
                                                        int rank,
                                                        int ranks);
 
-/// Collective: the distributed TIN (as distributed_tin builds it) and its contours. The L levels
-/// that cut it (contour_levels of the exact height range) are split into ranges [r L / P,
-/// (r + 1) L / P); every triangle goes to the ranks owning a level that crosses it, so each rank
-/// holds every triangle its levels cross, in the serial order, and traces them as `dtm contour`
-/// does. Rank 0 writes the VRT once every piece is in place; every file is written atomically.
+/// Collective: the distributed TIN (as distributed_tin builds it) and its contours. The levels
+/// that cut it (contour_levels of the exact height range) are split into P ranges of about equal
+/// numbers of crossed triangles; every triangle goes to the ranks owning a level that crosses it,
+/// so each rank holds every triangle its levels cross, in the serial order, and traces them as `dtm
+/// contour` does. Rank 0 writes the VRT once every piece is in place; every file is written
+/// atomically.
 /// @throws InputError, UsageError or Error on every rank.
 DistributedContourResult distributed_contours(dist::Comm& comm,
                                               const DistributedContourOptions& options,
