@@ -3,7 +3,7 @@
 // per-rank GeoPackages reads back, feature for feature and bit for bit, as the serial
 // triangulation's contour lines (triangulate + contour on one thread, an independent path):
 // uniform points with smoothing, a lattice whose heights sit on the levels, explicit levels,
-// more ranks than levels, and random delays before every send.
+// more ranks than levels, fewer points than ranks, and random delays before every send.
 #include "dtm/products/distributed_contours.hpp"
 
 #include <gdal.h>
@@ -58,6 +58,10 @@ std::vector<Case> cases() {
     fixed.contour.fixed_levels = {298.5, 301.25, 304.0};
     fixed.contour.smooth = 1;
     out.push_back(fixed);
+    Case tiny{"fewer points than ranks", {}, {}};  // 6 points: most ranks hold none
+    for (int i = 0; i < 6; ++i) tiny.points.push_back({u(rng), u(rng), u(rng) / 10.0});
+    tiny.contour.interval = 1.0;
+    out.push_back(tiny);
     return out;
 }
 

@@ -3,7 +3,8 @@
 // reads back, cell for cell and bit for bit, as the serial triangulation rasterised on the grid
 // `dtm grid` picks (an independent path: triangulate + rasterize on one thread); uniform points,
 // a cocircular lattice whose rows of centres run along triangle edges, S-JTSK magnitudes, a given
-// extent, fewer grid rows than ranks, and random delays before every send.
+// extent, fewer grid rows than ranks, fewer points than ranks, and random delays before every
+// send.
 #include "dtm/products/distributed_dem.hpp"
 
 #include <gdal_priv.h>
@@ -63,6 +64,9 @@ std::vector<Case> cases() {
     Case few_rows{"few rows", {}, 5.0, {}};  // 3 rows: most ranks compute none
     for (int i = 0; i < 50; ++i) few_rows.points.push_back({u(rng), u(rng) / 15.0, u(rng)});
     out.push_back(few_rows);
+    Case tiny{"fewer points than ranks", {}, 0.5, {}};  // 5 points: most ranks hold none
+    for (int i = 0; i < 5; ++i) tiny.points.push_back({u(rng) / 20.0, u(rng) / 20.0, u(rng)});
+    out.push_back(tiny);
     return out;
 }
 
