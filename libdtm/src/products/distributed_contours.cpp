@@ -33,8 +33,8 @@
 namespace dtm::products {
 namespace {
 
-/// For every level, how many of this rank's faces it crosses (k with lo <= k < hi, lo and hi the
-/// least and greatest count of levels at or below a corner: the serial bucketing's rule).
+/// The levels [lo, hi) that cross face @p f: lo and hi are the least and greatest count of levels
+/// at or below one of its corners (the serial bucketing's rule).
 std::pair<std::size_t, std::size_t> crossed_levels(const std::vector<double>& values,
                                                    const dist::SurfaceFace& f,
                                                    const std::vector<dist::SurfaceVertex>& v) {
