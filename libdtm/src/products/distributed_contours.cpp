@@ -159,37 +159,21 @@ DistributedContourResult distributed_contours(dist::Comm& comm,
         return starts[at(r)] < starts[at(r) + 1] || (levels.empty() && r == 0);
     };
     const io::ContourWriteOptions write{.crs_wkt = crs_wkt, .layer = options.layer};
-    std::string error;
     std::uint64_t lines = 0;
-    if (writes(rank)) {
-        try {
-            io::ContourWriter writer(contour_piece_path(options.output, rank, ranks), write);
-            contour_level_range(tin, levels, first, last, options.contour, writer,
-                                rank == 0 ? progress.sub(0.7, 0.95) : Progress{});
-            writer.commit();
-            lines = writer.feature_count();
-        } catch (const Error& e) {
-            error = e.what();
-        }
-    }
-    if (comm.allreduce(error.empty() ? 0 : 1, dist::Reduce::max) != 0) {
-        dist::throw_first_error(comm, error);
-    }
+    detail::on_ranks(comm, writes(rank), [&] {
+        io::ContourWriter writer(contour_piece_path(options.output, rank, ranks), write);
+        contour_level_range(tin, levels, first, last, options.contour, writer,
+                            rank == 0 ? progress.sub(0.7, 0.95) : Progress{});
+        writer.commit();
+        lines = writer.feature_count();
+    });
     result.lines = static_cast<std::uint64_t>(
         comm.allreduce(static_cast<std::int64_t>(lines), dist::Reduce::sum));
     for (int r = 0; r < ranks; ++r) {
         if (writes(r)) result.pieces.push_back(contour_piece_path(options.output, r, ranks));
     }
-    if (rank == 0) {
-        try {
-            io::write_contour_vrt(options.output, result.pieces, write);
-        } catch (const Error& e) {
-            error = e.what();
-        }
-    }
-    if (comm.allreduce(error.empty() ? 0 : 1, dist::Reduce::max) != 0) {
-        dist::throw_first_error(comm, error);
-    }
+    detail::on_ranks(comm, rank == 0,
+                     [&] { io::write_contour_vrt(options.output, result.pieces, write); });
     result.bytes_sent = detail::bytes_sent(comm);
     detail::report_progress(progress, 1.0, "done");
     return result;

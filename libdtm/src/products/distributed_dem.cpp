@@ -131,28 +131,19 @@ DistributedDemResult distributed_dem(dist::Comm& comm,
     const std::size_t first = block_start(spec, rank, ranks);
     const std::size_t rows = block_start(spec, rank + 1, ranks) - first;
     const io::GridWriteOptions write{.crs_wkt = crs_wkt, .nodata = options.nodata};
-    std::string error;
     std::uint64_t filled = 0;
-    if (rows > 0) {
-        try {
-            GridSpec tile = spec;
-            tile.rows = rows;
-            tile.ymax = spec.ymax - static_cast<double>(first) * spec.cell;
-            io::GridWriter writer(dem_tile_path(options.output, rank, ranks), tile, write);
-            TileSink sink(writer, first, options.nodata);
-            rasterize(
-                tin, spec,
-                {.nodata = options.nodata, .threads = 0, .first_row = first, .row_count = rows},
-                sink, rank == 0 ? progress.sub(0.7, 0.95) : Progress{});
-            writer.commit();
-            filled = sink.filled;
-        } catch (const Error& e) {
-            error = e.what();
-        }
-    }
-    if (comm.allreduce(error.empty() ? 0 : 1, dist::Reduce::max) != 0) {
-        dist::throw_first_error(comm, error);
-    }
+    detail::on_ranks(comm, rows > 0, [&] {
+        GridSpec tile = spec;
+        tile.rows = rows;
+        tile.ymax = spec.ymax - static_cast<double>(first) * spec.cell;
+        io::GridWriter writer(dem_tile_path(options.output, rank, ranks), tile, write);
+        TileSink sink(writer, first, options.nodata);
+        rasterize(tin, spec,
+                  {.nodata = options.nodata, .threads = 0, .first_row = first, .row_count = rows},
+                  sink, rank == 0 ? progress.sub(0.7, 0.95) : Progress{});
+        writer.commit();
+        filled = sink.filled;
+    });
     result.filled = static_cast<std::uint64_t>(
         comm.allreduce(static_cast<std::int64_t>(filled), dist::Reduce::sum));
     std::vector<io::DemTile> tiles;
@@ -162,16 +153,8 @@ DistributedDemResult distributed_dem(dist::Comm& comm,
         tiles.push_back({dem_tile_path(options.output, r, ranks), lo, hi - lo});
         result.tiles.push_back(tiles.back().file);
     }
-    if (rank == 0) {
-        try {
-            io::write_dem_vrt(options.output, spec, tiles, write);
-        } catch (const Error& e) {
-            error = e.what();
-        }
-    }
-    if (comm.allreduce(error.empty() ? 0 : 1, dist::Reduce::max) != 0) {
-        dist::throw_first_error(comm, error);
-    }
+    detail::on_ranks(comm, rank == 0,
+                     [&] { io::write_dem_vrt(options.output, spec, tiles, write); });
     result.bytes_sent = detail::bytes_sent(comm);
     detail::report_progress(progress, 1.0, "done");
     return result;

@@ -95,4 +95,18 @@ DistributedCounts counts_of(const dist::Comm& comm, const DistributedSurface& su
     return counts;
 }
 
+void on_ranks(dist::Comm& comm, bool here, const std::function<void()>& step) {
+    std::string error;
+    if (here) {
+        try {
+            step();
+        } catch (const Error& e) {
+            error = e.what();
+        }
+    }
+    if (comm.allreduce(error.empty() ? 0 : 1, dist::Reduce::max) != 0) {
+        dist::throw_first_error(comm, error);
+    }
+}
+
 }  // namespace dtm::products::detail

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 
 #include "dist/kernel.hpp"
@@ -33,6 +34,10 @@ DistributedSurface distributed_surface(dist::Comm& comm,
 /// The counts of @p surface (bytes_sent is left to the end of the product).
 [[nodiscard]] DistributedCounts counts_of(const dist::Comm& comm,
                                           const DistributedSurface& surface);
+
+/// Collective: runs @p step where @p here is true; an Error on any rank is then thrown on every
+/// rank with the message of the lowest rank that failed (dist::throw_first_error).
+void on_ranks(dist::Comm& comm, bool here, const std::function<void()>& step);
 
 /// Progress on the ranks that show it; a stop request is agreed on by the steps' reductions.
 void report_progress(const Progress& progress, double fraction, const char* what);
