@@ -16,6 +16,7 @@
 
 #include "algo/detail/delaunay_dc.hpp"
 #include "algo/detail/input_merge.hpp"
+#include "dist/constraints.hpp"
 #include "dist/kernel.hpp"
 #include "dtm/algo/triangulate.hpp"
 #include "dtm/dist/duplicates.hpp"
@@ -25,6 +26,7 @@
 #include "dtm/io/formats/ply.hpp"
 #include "io/formats/ply/ply_dist_writer.hpp"
 #include "support/dist_cases.hpp"
+#include "support/dist_lines.hpp"
 
 namespace {
 
@@ -144,6 +146,35 @@ std::string kernel_oracle(const std::vector<Words>& all, const std::vector<Point
     if (slots != want_slots) return "triangle slots differ from the serial kernel";
     const Words& want_ids = serial.ids;
     return ids == want_ids ? "" : "vertex order differs from the serial kernel";
+}
+
+/// Breaklines inserted across ranks: every slot and its constraint bits.
+Words constraints_job(Comm& comm, const test::LineCase& c) {
+    const Share share = partition_points(
+        comm, test::initial_share(c.points, comm.rank(), comm.size(), true), {}, {});
+    DistributedMesh d = triangulate_share(comm, share, {}, {});
+    insert_constraints(comm, d, c.segments, {});
+    Words words;
+    const auto tris = d.mesh.global_triangles();
+    for (std::size_t s = 0; s < tris.size(); ++s) {
+        words.insert(words.end(), tris[s].v.begin(), tris[s].v.end());
+        words.insert(words.end(), tris[s].n.begin(), tris[s].n.end());
+        for (const std::uint8_t b : d.mesh.bits[s]) words.push_back(b);
+    }
+    return words;
+}
+
+std::string constraints_oracle(const std::vector<Words>& all, const test::LineCase& c) {
+    const test::ConstrainedMesh serial = test::serial_constrained(c);
+    Words want;
+    for (std::size_t s = 0; s < serial.tris.size(); ++s) {
+        want.insert(want.end(), serial.tris[s].v.begin(), serial.tris[s].v.end());
+        want.insert(want.end(), serial.tris[s].n.begin(), serial.tris[s].n.end());
+        for (const std::uint8_t b : serial.bits[s]) want.push_back(b);
+    }
+    Words got;
+    for (const Words& w : all) got.insert(got.end(), w.begin(), w.end());
+    return got == want ? "" : "slots or constraint bits differ from the serial insertion";
 }
 
 std::string duplicates_oracle(const std::vector<Words>& all,
@@ -287,6 +318,14 @@ int main(int argc, char** argv) {
                 "kernel " + c.name + suffix,
                 [&](Comm& comm) { return kernel_job(comm, c.points, true); },
                 [&](const std::vector<Words>& all) { return kernel_oracle(all, c.points); });
+        }
+        for (const auto& c : test::dist_cases(20000)) {
+            if (c.points.size() < 1000 || c.name == "collinear") continue;
+            const test::LineCase lines = test::with_lines(c);
+            run(
+                "constraints " + c.name + suffix,
+                [&](Comm& comm) { return constraints_job(comm, lines); },
+                [&](const std::vector<Words>& all) { return constraints_oracle(all, lines); });
         }
         for (DuplicateRule rule : {DuplicateRule::first, DuplicateRule::mean, DuplicateRule::max}) {
             run(

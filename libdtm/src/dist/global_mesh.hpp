@@ -54,6 +54,9 @@ struct LocalMesh {
     std::vector<XY> foreign_xy;
     std::unordered_map<std::uint64_t, std::uint32_t> foreign_index;
     std::vector<std::uint64_t> foreign_edges;
+    /// Per slot, the ConstraintBits of its three edges (edge i runs from v[i] to v[i + 1]);
+    /// empty until constraints are inserted (dist/constraints.hpp).
+    std::vector<std::array<std::uint8_t, 3>> bits;
 
     [[nodiscard]] bool owns(std::uint64_t slot) const noexcept {
         return slot >= first_slot && slot - first_slot < tris.size();

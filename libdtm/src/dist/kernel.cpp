@@ -111,14 +111,7 @@ public:
         publish_local_hulls();
         for (auto level = cross_by_depth.rbegin(); level != cross_by_depth.rend(); ++level) {
             if (level->empty()) continue;
-            // A stop request on any rank stops every rank (no rank may leave the collectives).
-            std::int64_t stop = 0;
-            try {
-                progress.check();
-            } catch (const Cancelled&) {
-                stop = 1;
-            }
-            if (comm_.allreduce(stop, Reduce::max) != 0) throw Cancelled();
+            check_stop_everywhere(comm_, progress);
             merge_level(*level, out);
             ++out.stats.levels;
         }
@@ -333,6 +326,16 @@ private:
 };
 
 }  // namespace
+
+void check_stop_everywhere(Comm& comm, const Progress& progress) {
+    std::int64_t stop = 0;
+    try {
+        progress.check();
+    } catch (const Cancelled&) {
+        stop = 1;
+    }
+    if (comm.allreduce(stop, Reduce::max) != 0) throw Cancelled();
+}
 
 DistributedMesh triangulate_share(Comm& comm,
                                   const Share& share,

@@ -36,6 +36,10 @@ struct DistributedMesh {
     KernelStats stats;
 };
 
+/// Collective: a stop request on any rank stops every rank (no rank may leave the collectives).
+/// @throws Cancelled on every rank when some rank's @p progress asks to stop.
+void check_stop_everywhere(Comm& comm, const Progress& progress);
+
 /// Collective: each rank triangulates the subtrees it holds whole with the serial kernel, then
 /// the merges across ranks run level by level, deepest first, each on the rank that holds its
 /// left half's last leaf, on a band of triangles the ranks of both halves send (the seeds of

@@ -175,12 +175,7 @@ void insert_segments(MeshEditor& editor,
     // conflicting plans can win a round) do not serialise the rounds. The result equals
     // sequential insertion in this order, whatever the thread count.
     const auto priority = [&](std::uint32_t i) {
-        std::uint64_t h = i + 0x9e3779b97f4a7c15ull;
-        h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ull;
-        h = (h ^ (h >> 27)) * 0x94d049bb133111ebull;
-        h ^= h >> 31;
-        const std::uint64_t block = std::min(segments[i].a, segments[i].b) >> 16;
-        return (block << 32) | (h & 0xffffffffull);
+        return segment_priority(i, std::min(segments[i].a, segments[i].b));
     };
     std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(pending.size());
     tbb::parallel_for(std::size_t{0}, pending.size(), [&](std::size_t k) {

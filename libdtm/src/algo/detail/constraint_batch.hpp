@@ -4,6 +4,7 @@
 /// result that never depends on the thread count.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "algo/detail/input_merge.hpp"
@@ -11,6 +12,18 @@
 #include "dtm/core/progress.hpp"
 
 namespace dtm::detail {
+
+/// The order insert_segments gives the free segments (the result equals inserting them one by
+/// one in ascending order): blocks of nearby segments (the kernel number of the smaller endpoint
+/// divided by 2^16), and within a block a fixed hash of the segment's index @p index.
+[[nodiscard]] inline std::uint64_t segment_priority(std::uint64_t index,
+                                                    std::uint64_t smaller_endpoint) noexcept {
+    std::uint64_t h = index + 0x9e3779b97f4a7c15ull;
+    h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ull;
+    h = (h ^ (h >> 27)) * 0x94d049bb133111ebull;
+    h ^= h >> 31;
+    return ((smaller_endpoint >> 16) << 32) | (h & 0xffffffffull);
+}
 
 /// For each segment (kernel vertex ids): true when it touches no other segment except at a
 /// shared endpoint (no crossing, no overlap, no T-junction). Exact predicates only.
