@@ -12,7 +12,7 @@ import random
 import subprocess
 import tempfile
 
-from mpi_checks import check, finish, ranks, run
+from mpi_checks import check, finish, ranks, run, write_breaklines
 
 
 def layer(path):
@@ -56,10 +56,13 @@ with tempfile.TemporaryDirectory() as tmp:
     survey, lattice = os.path.join(tmp, "survey.csv"), os.path.join(tmp, "lattice.csv")
     write_survey(survey)
     write_lattice(lattice)
+    lines = os.path.join(tmp, "lines.csv")
+    write_breaklines(lines, -750500, -1050400, 500, 400)
     cases = [("survey", survey, ["--crs", "EPSG:5514", "--interval", "0.5", "--duplicates", "mean"]),
              ("survey smoothed", survey, ["--crs", "EPSG:5514", "--interval", "2", "--smooth", "2"]),
              ("survey levels", survey, ["--crs", "EPSG:5514", "--levels", "251.3,255,260.25,262",
                                         "--smooth", "1", "--index-every", "2"]),
+             ("survey breaklines", survey, ["--crs", "EPSG:5514", "--interval", "1", "--breaklines", lines]),
              ("lattice", lattice, ["--interval", "1"]),
              ("lattice base", lattice, ["--interval", "0.5", "--base", "0.25"])]
     for n, (name, points, options) in enumerate(cases):

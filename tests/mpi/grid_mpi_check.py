@@ -10,7 +10,7 @@ import random
 import subprocess
 import tempfile
 
-from mpi_checks import check, dtm, finish, ranks, run
+from mpi_checks import check, dtm, finish, ranks, run, write_breaklines
 
 
 def raw(path):
@@ -48,10 +48,13 @@ with tempfile.TemporaryDirectory() as tmp:
     survey, lattice = os.path.join(tmp, "survey.csv"), os.path.join(tmp, "lattice.csv")
     write_survey(survey)
     write_lattice(lattice)
+    lines = os.path.join(tmp, "lines.csv")
+    write_breaklines(lines, -750600, -1050400, 600, 400)
     cases = [("survey", survey, ["--crs", "EPSG:5514", "--cell", "0.7"]),
              ("survey extent", survey, ["--crs", "EPSG:5514", "--cell", "2",
                                         "--extent", "-750700,-1050450,-750100,-1050050"]),
-             ("lattice", lattice, ["--cell", "0.25", "--duplicates", "mean"])]
+             ("lattice", lattice, ["--cell", "0.25", "--duplicates", "mean"]),
+             ("survey breaklines", survey, ["--crs", "EPSG:5514", "--cell", "1.3", "--breaklines", lines])]
     for name, points, options in cases:
         serial_tif, dist_vrt = os.path.join(tmp, "serial.tif"), os.path.join(tmp, f"dem-{len(name)}.vrt")
         serial = run(["grid", points, "-o", serial_tif, "-q"] + options, False)

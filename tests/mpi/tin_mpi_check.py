@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
 """`mpirun -np P dtm tin POINTS.csv -o tin.ply` against `dtm tin` on one process (issue 18):
-the same PLY bytes, the serial reader's message and exit code 2 for a bad line in the last
+the same PLY bytes (also with hard breaklines crossing the seams and each other), the serial reader's message and exit code 2 for a bad line in the last
 rank's byte range (printed once), a clear refusal of what the distributed run does not take yet,
 and `--stats` naming the ranks. Usage: tin_mpi_check.py DTM MPIEXEC NP"""
 import json
@@ -9,7 +9,7 @@ import os
 import random
 import tempfile
 
-from mpi_checks import check, dtm, finish, ranks, run
+from mpi_checks import check, dtm, finish, ranks, run, write_breaklines
 
 
 def write_points(path, n, bad_line=None):
@@ -43,6 +43,22 @@ with tempfile.TemporaryDirectory() as tmp:
             with open(os.path.join(tmp, "serial.ply"), "rb") as a, open(os.path.join(tmp, "dist.ply"), "rb") as b:
                 check(a.read() == b.read(), f"the PLY differs from the serial one ({rule})")
 
+    lines = os.path.join(tmp, "lines.csv")
+    with open(points) as f:  # a line through survey points: its vertices merge with them
+        rows = [r.split(",") for r in f.read().splitlines()[2:40] if r.startswith("P")]
+    write_breaklines(lines, -752000, -1052000, 2000, 2000, [(r[1], r[2], r[3]) for r in rows[:8]])
+    serial = run(["tin", points, "--breaklines", lines, "-o", os.path.join(tmp, "serial-b.ply"),
+                  "--crs", "EPSG:5514", "-q"], False)
+    dist = run(["tin", points, "--breaklines", lines, "-o", os.path.join(tmp, "dist-b.ply"),
+                "--crs", "EPSG:5514", "-q"], True)
+    check(serial.returncode == 0 and dist.returncode == 0,
+          f"breaklines: exit {serial.returncode} / {dist.returncode}: {serial.stderr} {dist.stderr}")
+    if serial.returncode == 0 and dist.returncode == 0:
+        with open(os.path.join(tmp, "serial-b.ply"), "rb") as a, open(os.path.join(tmp, "dist-b.ply"), "rb") as b:
+            serial_bytes = a.read()
+            check(b"element edge 0" not in serial_bytes, "breaklines: the serial PLY has constrained edges")
+            check(serial_bytes == b.read(), "breaklines: the PLY differs from the serial one")
+
     stats = run(["tin", points, "-o", os.path.join(tmp, "stats.ply"), "--stats"], True)
     check(stats.returncode == 0, f"--stats: {stats.stderr}")
     if stats.returncode == 0:
@@ -63,9 +79,9 @@ with tempfile.TemporaryDirectory() as tmp:
     check(not os.path.exists(os.path.join(tmp, "y.ply")), "no output after a bad line")
 
     if ranks > 1:  # -np 1 is the single-process run, which takes everything
-        refused = run(["tin", points, "--breaklines", points, "-o", os.path.join(tmp, "z.ply")], True)
+        refused = run(["tin", points, "--soft-breaklines", points, "-o", os.path.join(tmp, "z.ply")], True)
         check(refused.returncode == 2 and refused.stderr.count("does not take") == 1,
-              f"breaklines refused: exit {refused.returncode}: {refused.stderr!r}")
+              f"soft breaklines refused: exit {refused.returncode}: {refused.stderr!r}")
         other = run(["info", points], True)
         check(other.returncode == 2 and "only `dtm tin`, `dtm grid` and `dtm contour`" in other.stderr,
               f"dtm info under mpirun: {other.stderr!r}")

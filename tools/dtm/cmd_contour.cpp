@@ -68,8 +68,7 @@ int run_contour_pieces(ContourArgs args, dist::Comm& comm) {
     args.contour.threads = args.tin.threads;
     const InputArgs& in = args.input;
     products::DistributedContourOptions options;
-    options.source = {
-        {in.inputs[0], io::InputRole::points}, in.read, in.crs.default_crs, args.tin.duplicates};
+    options.source = distributed_source(in, args.tin);
     options.contour = args.contour;
     options.output = args.output;
     const products::DistributedContourResult r = products::distributed_contours(

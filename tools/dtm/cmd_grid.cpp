@@ -139,10 +139,7 @@ int run_grid_tiled(const GridArgs& args, dist::Comm& comm) {
     const InputArgs& in = args.input;
     const products::DistributedDemResult r =
         products::distributed_dem(comm,
-                                  {.source = {{in.inputs[0], io::InputRole::points},
-                                              in.read,
-                                              in.crs.default_crs,
-                                              args.tin.duplicates},
+                                  {.source = distributed_source(in, args.tin),
                                    .cell = args.cell,
                                    .extent = extent,
                                    .nodata = args.nodata,

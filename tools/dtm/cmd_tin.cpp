@@ -55,12 +55,7 @@ int run_tin_distributed(const TinArgs& a, dist::Comm& comm) {
     const auto start = std::chrono::steady_clock::now();
     const bool shows = prints() && !a.quiet && !a.stats;
     const products::DistributedTinResult r =
-        products::distributed_tin(comm,
-                                  {{{in.inputs[0], io::InputRole::points},
-                                    in.read,
-                                    in.crs.default_crs,
-                                    a.triangulate.duplicates},
-                                   a.output},
+        products::distributed_tin(comm, {distributed_source(in, a.triangulate), a.output},
                                   shows ? terminal_progress(false) : Progress{});
     if (a.stats && prints()) {
         std::cout << products::distributed_tin_stats_json(r, since(start)) << std::flush;

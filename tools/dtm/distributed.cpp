@@ -23,9 +23,9 @@ void check_distributed_input(const char* command,
                          what + " yet");
     };
     if (in.inputs.size() != 1) refuse("more than one input file");
-    if (!in.breaklines.empty() || !in.soft_breaklines.empty() || !in.boundaries.empty() ||
-        !in.holes.empty() || !in.flat_areas.empty()) {
-        refuse("breaklines, boundaries or holes");
+    if (!in.soft_breaklines.empty() || !in.boundaries.empty() || !in.holes.empty() ||
+        !in.flat_areas.empty()) {
+        refuse("soft breaklines, boundaries, holes or flat areas");
     }
     const std::string extension = io::lower_extension(in.inputs[0]);
     if (extension != "csv" && extension != "txt" && extension != "xyz") {
@@ -37,6 +37,20 @@ void check_distributed_input(const char* command,
         triangulate.optimize != Criterion::delaunay) {
         refuse("`snap`, `max_edge` or `optimize`");
     }
+}
+
+products::DistributedSource distributed_source(const InputArgs& in,
+                                               const TriangulateOptions& triangulate) {
+    products::DistributedSource source;
+    source.input = {in.inputs[0], io::InputRole::points};
+    source.read = in.read;
+    source.default_crs = in.crs.default_crs;
+    source.duplicates = triangulate.duplicates;
+    for (const std::string& f : in.breaklines) {
+        source.breaklines.push_back({f, io::InputRole::breaklines});
+    }
+    source.z_tolerance = triangulate.z_tolerance;
+    return source;
 }
 
 }  // namespace dtm::cli

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "dtm/algo/triangulate.hpp"
 #include "dtm/core/progress.hpp"
@@ -22,6 +23,9 @@ struct DistributedSource {
     io::ReadOptions read;     ///< columns, skip_bad_lines
     std::string default_crs;  ///< the CRS of the points (the file carries none)
     DuplicateRule duplicates = DuplicateRule::first;
+    /// Hard 3-D breakline files, read whole by every rank (role breaklines).
+    std::vector<io::InputFile> breaklines;
+    double z_tolerance = TriangulateOptions{}.z_tolerance;  ///< at breakline crossings
 };
 
 struct DistributedTinOptions {

@@ -26,12 +26,6 @@
 namespace dtm::detail {
 namespace {
 
-struct Combined {
-    std::vector<Point3> points;
-    std::vector<bool> z_known;
-    std::vector<InputSegment> segments;  // indices into points
-};
-
 std::string where(const Polyline& line, const char* what, std::size_t number) {
     return line.source.empty() ? std::string(what) + " " + std::to_string(number + 1) : line.source;
 }
@@ -40,7 +34,7 @@ void add_polylines(const std::vector<Polyline>& lines,
                    std::uint8_t bits,
                    bool ring,
                    const char* what,
-                   Combined& c) {
+                   CombinedInput& c) {
     for (std::size_t k = 0; k < lines.size(); ++k) {
         const Polyline& line = lines[k];
         std::size_t count = line.points.size();
@@ -110,7 +104,7 @@ Representatives find_representatives(const std::vector<Point3>& pts, double snap
 }
 
 /// Fills out.vertices, z_known, input_to_vertex and merges when some points merge.
-void merge_duplicates(const Combined& c,
+void merge_duplicates(const CombinedInput& c,
                       const Representatives& rep,
                       std::size_t kept_count,
                       DuplicateRule rule,
@@ -148,13 +142,20 @@ void merge_duplicates(const Combined& c,
 
 }  // namespace
 
+void add_lines(const TerrainInput& input, CombinedInput& c) {
+    add_polylines(input.breaklines, constraint_breakline, false, "breakline", c);
+    add_polylines(input.boundaries, constraint_boundary, true, "boundary", c);
+    add_polylines(input.holes, constraint_hole, true, "hole", c);
+    add_polylines(input.soft_breaklines, constraint_soft, false, "soft breakline", c);
+}
+
 MergedInput merge_input(const TerrainInput& input, const TriangulateOptions& options) {
     TerrainInput copy = input;
     return merge_input(std::move(copy), options);
 }
 
 MergedInput merge_input(TerrainInput&& input, const TriangulateOptions& options) {
-    Combined c;
+    CombinedInput c;
     // The first point with a coordinate that is not finite, found by all threads.
     const std::size_t bad = tbb::parallel_reduce(
         tbb::blocked_range<std::size_t>(0, input.points.size(), 1 << 16), input.points.size(),
@@ -182,10 +183,7 @@ MergedInput merge_input(TerrainInput&& input, const TriangulateOptions& options)
     c.points.reserve(c.points.size() + line_vertices);
     c.z_known.reserve(c.points.size() + line_vertices);
     c.z_known.assign(c.points.size(), true);
-    add_polylines(input.breaklines, constraint_breakline, false, "breakline", c);
-    add_polylines(input.boundaries, constraint_boundary, true, "boundary", c);
-    add_polylines(input.holes, constraint_hole, true, "hole", c);
-    add_polylines(input.soft_breaklines, constraint_soft, false, "soft breakline", c);
+    add_lines(input, c);
 
     MergedInput out;
     out.points_in = c.points.size();

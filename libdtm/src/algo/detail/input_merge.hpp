@@ -50,6 +50,18 @@ inline double duplicate_rule_z(DuplicateRule rule, double current, double z, std
     return current;
 }
 
+/// The combined input before merging: survey points, then the line vertices.
+struct CombinedInput {
+    std::vector<Point3> points;
+    std::vector<bool> z_known;
+    std::vector<InputSegment> segments;  ///< indices into points
+};
+
+/// Appends the vertices and segments of input's breaklines, boundaries, holes and soft
+/// breaklines to @p c, in that order (merge_input's order; the distributed run's too).
+/// @throws InputError on non-finite coordinates or an open boundary/hole ring.
+void add_lines(const TerrainInput& input, CombinedInput& c);
+
 /// @throws InputError on non-finite coordinates or an open boundary/hole ring.
 [[nodiscard]] MergedInput merge_input(const TerrainInput& input, const TriangulateOptions& options);
 /// Same, taking over input.points (left empty) instead of copying them.

@@ -47,4 +47,12 @@ void compact(TinDraft& draft, const std::vector<bool>& keep);
 /// Canonical order (see Tin) and the constraint list.
 void finish_tin(TinDraft& draft);
 
+/// The kind a TIN lists for an edge with these ConstraintBits (the strongest of them).
+[[nodiscard]] inline ConstraintKind constraint_kind_of(std::uint8_t bits) noexcept {
+    if (bits & constraint_boundary) return ConstraintKind::boundary;
+    if (bits & constraint_hole) return ConstraintKind::hole;
+    if (bits & constraint_breakline) return ConstraintKind::breakline;
+    return ConstraintKind::soft_breakline;
+}
+
 }  // namespace dtm::detail

@@ -10,17 +10,6 @@
 #include "algo/detail/tin_build.hpp"
 
 namespace dtm::detail {
-namespace {
-
-ConstraintKind kind_of(std::uint8_t bits) {
-    if (bits & constraint_boundary) return ConstraintKind::boundary;
-    if (bits & constraint_hole) return ConstraintKind::hole;
-    if (bits & constraint_breakline) return ConstraintKind::breakline;
-    return ConstraintKind::soft_breakline;
-}
-
-}  // namespace
-
 std::size_t trim_long_edges(TinDraft& draft, double max_edge) {
     const Tin& tin = draft.tin;
     const std::size_t count = tin.triangles.size();
@@ -80,7 +69,8 @@ void finish_tin(TinDraft& draft) {
                 const VertexIndex c = tri.v[(j + 2) % 3];
                 // An interior edge is seen from both sides: keep it from the side where a < c.
                 if (a < c || tri.n[j] == no_triangle) {
-                    found[b].push_back({std::min(a, c), std::max(a, c), kind_of(bits[j])});
+                    found[b].push_back(
+                        {std::min(a, c), std::max(a, c), constraint_kind_of(bits[j])});
                 }
             }
         }

@@ -7,10 +7,12 @@
 //   ranks (dist/kernel) -> the serial degeneracy checks.
 #include "products/detail/distributed_surface.hpp"
 
+#include "dist/constraints.hpp"
 #include "dtm/core/error.hpp"
 #include "dtm/dist/partition.hpp"
 #include "dtm/io/formats/crs.hpp"
 #include "io/formats/csv/csv_distributed.hpp"
+#include "products/detail/distributed_lines.hpp"
 
 namespace dtm::products::detail {
 namespace {
@@ -71,17 +73,33 @@ DistributedSurface distributed_surface(dist::Comm& comm,
     }
     out.points = read.total;
     out.skipped_lines = read.skipped_lines;
-
+    // Breakline vertices follow the points in the merge (the last rank holds the last inputs).
+    ::dtm::detail::CombinedInput lines;
+    on_ranks(comm, true, [&] { lines = load_distributed_lines(source, out.crs_wkt); });
+    const std::uint64_t first_line_input = read.points.size();
+    if (comm.rank() == comm.size() - 1) {
+        for (std::size_t i = 0; i < lines.points.size(); ++i) {
+            read.points.push_back({lines.points[i], lines.z_known[i]});
+        }
+    }
     report_progress(progress, 0.25, "triangulating");
     out.merged = dist::merge_exact_duplicates(comm, read.points, source.duplicates);
     std::vector<dist::InputPoint>().swap(read.points);
+    const PlacedLines placed =
+        place_lines(comm, out.merged, lines, first_line_input, source.z_tolerance);
+    lines = {};
+    out.segments = placed.segments.size();
+    out.crossings = placed.crossings;
     std::vector<dist::Point> points;
     points.reserve(out.merged.vertices.size());
     for (const dist::Vertex& v : out.merged.vertices) points.push_back({v.p.x, v.p.y, v.id});
     const dist::Share share =
         dist::partition_points(comm, std::move(points), {}, progress.sub(0.25, 0.5));
-    out.kernel = dist::triangulate_share(comm, share, {}, progress.sub(0.5, 1.0));
+    out.kernel = dist::triangulate_share(comm, share, {}, progress.sub(0.5, 0.9));
     out.triangles = check_not_degenerate(comm, out.merged.total_vertices, out.kernel);
+    if (!placed.segments.empty()) {
+        dist::insert_constraints(comm, out.kernel, placed.segments, progress.sub(0.9, 1.0));
+    }
     return out;
 }
 

@@ -18,6 +18,7 @@
 #include <limits>
 #include <string>
 
+#include "algo/detail/tin_build.hpp"
 #include "dist/mesh_vertices.hpp"
 #include "dtm/core/error.hpp"
 #include "dtm/io/formats/ply.hpp"
@@ -26,6 +27,56 @@ namespace dtm::io {
 
 static_assert(std::endian::native == std::endian::little,
               "the binary PLY is little endian: the values are appended as they are in memory");
+
+namespace {
+
+struct EdgeRecord {
+    std::int32_t a;
+    std::int32_t b;
+    std::uint8_t kind;
+};
+
+/// Rank 0: the PLY `edge` element's bytes (empty elsewhere). As finish_tin lists them: every
+/// constrained edge once (from the side where a < b, or from its only real triangle), sorted by
+/// (a, b), with the strongest kind of its bits.
+template <class Number>
+std::vector<std::byte> constrained_edges(dist::Comm& comm,
+                                         const dist::LocalMesh& mesh,
+                                         const std::vector<std::uint64_t>& ghosts,
+                                         const Number& number) {
+    std::vector<dist::Bytes> out(static_cast<std::size_t>(comm.size()));
+    for (std::uint64_t s = 0; s < mesh.bits.size(); ++s) {
+        const Triangle& t = mesh.tris[s];
+        if (detail::is_ghost_triangle(t)) continue;
+        for (unsigned i = 0; i < 3; ++i) {
+            const std::uint8_t bits = mesh.bits[s][i];
+            if (bits == 0) continue;
+            const std::int32_t a = number(t.v[i]);
+            const std::int32_t c = number(t.v[(i + 1) % 3]);
+            const std::uint64_t twin = mesh.at(mesh.first_slot + s).n[i] >> 2;
+            if (a < c || std::binary_search(ghosts.begin(), ghosts.end(), twin)) {
+                dist::append_value(
+                    out[0],
+                    EdgeRecord{std::min(a, c), std::max(a, c),
+                               static_cast<std::uint8_t>(detail::constraint_kind_of(bits))});
+            }
+        }
+    }
+    std::vector<EdgeRecord> all = dist::concatenated<EdgeRecord>(comm.alltoallv(std::move(out)));
+    std::sort(all.begin(), all.end(), [](const EdgeRecord& x, const EdgeRecord& y) {
+        return x.a < y.a || (x.a == y.a && x.b < y.b);
+    });
+    std::vector<std::byte> bytes;
+    bytes.reserve(9 * all.size());
+    for (const EdgeRecord& e : all) {
+        dist::append_value(bytes, e.a);
+        dist::append_value(bytes, e.b);
+        dist::append_value(bytes, e.kind);
+    }
+    return bytes;
+}
+
+}  // namespace
 
 void write_distributed_ply(dist::Comm& comm,
                            const dist::MergedShare& merged,
@@ -53,6 +104,10 @@ void write_distributed_ply(dist::Comm& comm,
         return static_cast<std::int32_t>(v);
     };
 
+    const std::vector<std::byte> edges = constrained_edges(comm, mesh, ghosts, number);
+    const auto edge_count = static_cast<std::uint64_t>(
+        comm.allreduce(static_cast<std::int64_t>(edges.size() / 9), dist::Reduce::max));
+
     // A temporary sibling named by rank 0, renamed by it when every rank has written.
     dist::Bytes name_bytes;
     if (comm.rank() == 0) {
@@ -64,7 +119,7 @@ void write_distributed_ply(dist::Comm& comm,
     const std::string temporary(reinterpret_cast<const char*>(name_bytes.data()),
                                 name_bytes.size());
     try {
-        const std::string header = ply_header(vertices, faces, 0, options);
+        const std::string header = ply_header(vertices, faces, edge_count, options);
         const std::uint64_t face_start = header.size() + 24 * vertices;
         auto file = comm.open_shared(temporary);
         if (comm.rank() == 0) {
@@ -105,6 +160,7 @@ void write_distributed_ply(dist::Comm& comm,
             }
         }
         flush();
+        if (comm.rank() == 0 && !edges.empty()) file->write_at(face_start + 13 * faces, edges);
         file->close();
     } catch (const Error&) {
         if (comm.rank() == 0) std::filesystem::remove(temporary);

@@ -1,0 +1,168 @@
+// SPDX-License-Identifier: MIT
+//
+// Hard breaklines in a distributed run. The lines are few against the points, so every rank
+// reads them whole (departure from R-D2: no feature ranges) and computes the same things: the
+// serial combined order (add_lines), and after the distributed duplicate merge the serial
+// segments in vertex numbers. The split pre-pass (split_segments, docs/algorithms/cdt.md) then
+// runs on every rank over the line vertices alone, renumbered monotonically: its decisions read
+// coordinates and segment indices only, except that a crossing falling exactly on an existing
+// vertex becomes that vertex; line vertices are in the copy, and a crossing on a survey point
+// (which only its rank knows) is looked up on all ranks and refused. Crossing vertices are
+// numbered after every merged vertex, in pair order, as serially.
+#include "products/detail/distributed_lines.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <unordered_set>
+
+#include "algo/detail/segment_split.hpp"
+#include "dtm/core/error.hpp"
+#include "dtm/io/inputs.hpp"
+
+namespace dtm::products::detail {
+namespace {
+
+struct NumberedPoint {
+    std::uint64_t id;
+    Point3 p;
+};
+
+std::pair<std::uint64_t, std::uint64_t> key(double x, double y) {
+    return {std::bit_cast<std::uint64_t>(x == 0.0 ? 0.0 : x),
+            std::bit_cast<std::uint64_t>(y == 0.0 ? 0.0 : y)};
+}
+
+struct KeyHash {
+    std::size_t operator()(const std::pair<std::uint64_t, std::uint64_t>& k) const noexcept {
+        return std::hash<std::uint64_t>{}(k.first * 0x9e3779b97f4a7c15ull ^ k.second);
+    }
+};
+
+}  // namespace
+
+::dtm::detail::CombinedInput load_distributed_lines(const DistributedSource& source,
+                                                    const std::string& crs_wkt) {
+    ::dtm::detail::CombinedInput lines;
+    if (source.breaklines.empty()) return lines;
+    io::LoadOptions load;
+    load.files = source.breaklines;
+    load.read = source.read;
+    load.crs = {source.default_crs, crs_wkt};
+    const io::LoadedInputs loaded = io::load_inputs(load);
+    const TerrainInput& t = loaded.terrain;
+    if (!t.points.empty() || !t.soft_breaklines.empty() || !t.boundaries.empty() ||
+        !t.holes.empty()) {
+        throw UsageError(
+            "a distributed run takes lines only from breakline files (no points, soft lines, "
+            "boundaries or holes in them yet)");
+    }
+    for (const Polyline& line : t.breaklines) {
+        for (const Point3& p : line.points) {
+            if (std::isnan(p.z) && std::isfinite(p.x) && std::isfinite(p.y)) {
+                throw UsageError((line.source.empty() ? std::string("a breakline") : line.source) +
+                                 ": a 2-D breakline (its heights come from the surface) is not "
+                                 "taken by a distributed run yet");
+            }
+        }
+    }
+    ::dtm::detail::add_lines(t, lines);
+    return lines;
+}
+
+PlacedLines place_lines(dist::Comm& comm,
+                        dist::MergedShare& merged,
+                        const ::dtm::detail::CombinedInput& lines,
+                        std::uint64_t first_line_input,
+                        double z_tolerance) {
+    PlacedLines out;
+    if (lines.points.empty()) return out;
+    const int last = comm.size() - 1;
+    comm.set_phase("breaklines");
+    // The vertex number of every line vertex, from the last rank, which holds them.
+    std::vector<std::uint64_t> number;
+    if (comm.rank() == last) {
+        number.assign(
+            merged.vertex_of_input.begin() + static_cast<std::ptrdiff_t>(first_line_input),
+            merged.vertex_of_input.end());
+    }
+    dist::Bytes bytes = dist::to_bytes(std::span<const std::uint64_t>(number));
+    comm.bcast(bytes, last);
+    number = dist::from_bytes<std::uint64_t>(bytes);
+
+    // The serial segments (merge_input: equal ends dropped) over the vertices they use.
+    std::vector<std::array<std::uint64_t, 2>> ends;
+    std::vector<std::uint8_t> bits;
+    std::vector<std::uint64_t> used;
+    for (const ::dtm::detail::InputSegment& s : lines.segments) {
+        const std::uint64_t a = number[s.a];
+        const std::uint64_t b = number[s.b];
+        if (a == b) continue;
+        ends.push_back({a, b});
+        bits.push_back(s.bits);
+        used.insert(used.end(), {a, b});
+    }
+    std::sort(used.begin(), used.end());
+    used.erase(std::unique(used.begin(), used.end()), used.end());
+    // Their kept positions and heights (after the duplicate rule), from the ranks holding them.
+    std::vector<NumberedPoint> mine;
+    for (const dist::Vertex& v : merged.vertices) {
+        if (std::binary_search(used.begin(), used.end(), v.id)) mine.push_back({v.id, v.p});
+    }
+    std::vector<NumberedPoint> kept = dist::concatenated<NumberedPoint>(
+        comm.allgatherv(dist::to_bytes(std::span<const NumberedPoint>(mine))));
+    std::sort(kept.begin(), kept.end(),
+              [](const NumberedPoint& a, const NumberedPoint& b) { return a.id < b.id; });
+
+    ::dtm::detail::MergedInput in;
+    for (const NumberedPoint& k : kept) in.vertices.push_back(k.p);
+    in.z_known.assign(in.vertices.size(), true);
+    const auto compact = [&](std::uint64_t v) {
+        return static_cast<VertexIndex>(std::lower_bound(used.begin(), used.end(), v) -
+                                        used.begin());
+    };
+    for (std::size_t i = 0; i < ends.size(); ++i) {
+        in.segments.push_back({compact(ends[i][0]), compact(ends[i][1]), bits[i]});
+    }
+    const ::dtm::detail::SegmentSplit split = ::dtm::detail::split_segments(in, z_tolerance);
+    if (!split.all_free) {
+        throw Error(
+            "breaklines: crossings left after the split's rounds are not taken by a distributed "
+            "run yet");
+    }
+    const std::size_t first_crossing = used.size();
+    out.crossings = in.vertices.size() - first_crossing;
+
+    // A crossing exactly on a survey point becomes that point serially: refused here.
+    std::unordered_set<std::pair<std::uint64_t, std::uint64_t>, KeyHash> at;
+    for (std::size_t v = first_crossing; v < in.vertices.size(); ++v) {
+        at.insert(key(in.vertices[v].x, in.vertices[v].y));
+    }
+    std::int64_t on_point = 0;
+    if (!at.empty()) {
+        for (const dist::Vertex& v : merged.vertices) {
+            if (at.contains(key(v.p.x, v.p.y))) on_point = 1;
+        }
+    }
+    if (comm.allreduce(on_point, dist::Reduce::max) != 0) {
+        throw Error(
+            "breaklines: a crossing of two breaklines falls exactly on a survey point, which a "
+            "distributed run does not take yet");
+    }
+    const std::uint64_t first_new = merged.total_vertices;
+    if (comm.rank() == last) {
+        for (std::size_t v = first_crossing; v < in.vertices.size(); ++v) {
+            merged.vertices.push_back({in.vertices[v], first_new + (v - first_crossing), true});
+        }
+    }
+    merged.total_vertices += out.crossings;
+    const auto global = [&](VertexIndex v) {
+        return v < first_crossing ? used[v] : first_new + (v - first_crossing);
+    };
+    for (const ::dtm::detail::InputSegment& s : in.segments) {
+        out.segments.push_back({global(s.a), global(s.b), s.bits});
+    }
+    return out;
+}
+
+}  // namespace dtm::products::detail

@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: MIT
+/// @file
+/// @brief Internal: hard breaklines in a distributed run, as the serial flow takes them (the
+/// vertices after the points in the merge, the segments split at their crossings), replicated
+/// on every rank.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "algo/detail/input_merge.hpp"
+#include "dist/constraints.hpp"
+#include "dtm/dist/duplicates.hpp"
+#include "dtm/products/distributed_tin.hpp"
+
+namespace dtm::products::detail {
+
+/// Every rank: the breakline files read by the serial readers into @p crs_wkt (the points' CRS;
+/// empty: as they come), their vertices and segments numbered from 0 in the serial order.
+/// @throws InputError (the readers' messages); UsageError for what a distributed run does not
+/// take yet (2-D lines, which take heights from the surface; points, boundaries, holes or soft
+/// lines in those files)
+[[nodiscard]] ::dtm::detail::CombinedInput load_distributed_lines(const DistributedSource& source,
+                                                                  const std::string& crs_wkt);
+
+struct PlacedLines {
+    std::vector<dist::GlobalSegment> segments;  ///< vertex numbers, split at crossings
+    std::uint64_t crossings = 0;                ///< vertices added at crossings
+};
+
+/// Collective, after merge_exact_duplicates of the points followed by lines.points on the last
+/// rank (its local inputs from @p first_line_input): the segments in vertex numbers, split as
+/// split_segments splits them; the crossing vertices are appended to the last rank's vertices
+/// (numbered after all others) and merged.total_vertices grows on every rank.
+/// @throws Error on every rank when the split's rounds run out or a crossing falls exactly on a
+/// survey point (not yet in a distributed run)
+[[nodiscard]] PlacedLines place_lines(dist::Comm& comm,
+                                      dist::MergedShare& merged,
+                                      const ::dtm::detail::CombinedInput& lines,
+                                      std::uint64_t first_line_input,
+                                      double z_tolerance);
+
+}  // namespace dtm::products::detail
