@@ -23,8 +23,8 @@ struct TouchSegment {
                                    const std::array<XY, 3>& t,
                                    bool hull_edge);
 
-/// A uniform grid of square cells about the median segment's length; each segment is listed in every cell its
-/// bounding strip reaches in each row (a superset of the cells it crosses).
+/// A uniform grid of square cells about the median segment's length; each segment is listed in
+/// every cell its bounding strip reaches in each row (a superset of the cells it crosses).
 class SegmentGrid {
 public:
     explicit SegmentGrid(const std::vector<TouchSegment>& segments);
