@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # `mpirun -np P dtm tin|grid|contour` against the same subcommand on one process, in one run,
-# on the same S-JTSK point list (bench/make_inputs, N points, default 10^6): wall times (best of
+# on the same S-JTSK point list (bench/make_inputs, N points, default 10^6; for `tin` also with
+# make_inputs' N/2 breakline segments): wall times (best of
 # RUNS), the ratio distributed / serial, and the outputs compared (PLY bytes; DEM cells through
 # gdal_translate -of ENVI; contour features through ogr2ogr).
 # Usage: BUILD=build bench/dist_cli.sh [N] [CELL]
@@ -44,6 +45,15 @@ d4=$(best mpirun -np 4 "$dtm" tin "$pts" --crs EPSG:5514 -o "$work/d4.ply")
 same=no
 cmp -s "$work/s.ply" "$work/d2.ply" && cmp -s "$work/s.ply" "$work/d4.ply" && same="yes (PLY bytes)"
 echo "| tin | ${serial} s | ${d2} s | $(echo "scale=2; $d2 / $serial" | bc)x | ${d4} s | $(echo "scale=2; $d4 / $serial" | bc)x | $same |"
+"$build/bench/make_inputs" --kind breaklines --n "$n" --out "$work/bl" >/dev/null
+bpts=$work/bl/points.xyz
+blines=$work/bl/breaklines.csv
+serial=$(best "$dtm" tin "$bpts" --breaklines "$blines" --crs EPSG:5514 -o "$work/bs.ply")
+d2=$(best mpirun -np 2 "$dtm" tin "$bpts" --breaklines "$blines" --crs EPSG:5514 -o "$work/bd2.ply")
+d4=$(best mpirun -np 4 "$dtm" tin "$bpts" --breaklines "$blines" --crs EPSG:5514 -o "$work/bd4.ply")
+same=no
+cmp -s "$work/bs.ply" "$work/bd2.ply" && cmp -s "$work/bs.ply" "$work/bd4.ply" && same="yes (PLY bytes)"
+echo "| tin, N/2 breakline segments | ${serial} s | ${d2} s | $(echo "scale=2; $d2 / $serial" | bc)x | ${d4} s | $(echo "scale=2; $d4 / $serial" | bc)x | $same |"
 serial=$(best "$dtm" grid "$pts" --crs EPSG:5514 --cell "$cell" -o "$work/s.tif")
 d2=$(best mpirun -np 2 "$dtm" grid "$pts" --crs EPSG:5514 --cell "$cell" -o "$work/d2.vrt")
 d4=$(best mpirun -np 4 "$dtm" grid "$pts" --crs EPSG:5514 --cell "$cell" -o "$work/d4.vrt")

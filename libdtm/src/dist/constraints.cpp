@@ -145,6 +145,7 @@ std::array<XY, 3> corners(const LocalMesh& mesh, const GlobalTriangle& g, bool& 
 std::vector<std::pair<std::uint64_t, std::uint32_t>> touched_slots(
     const LocalMesh& mesh,
     const SegmentGrid& grid,
+    const std::vector<std::uint32_t>& ids,
     Groups& groups,
     std::vector<std::uint32_t>& unions) {
     const std::size_t n = mesh.tris.size();
@@ -161,7 +162,7 @@ std::vector<std::pair<std::uint64_t, std::uint32_t>> touched_slots(
             hits.clear();
             grid.touching(p, hull_edge, hits);
             for (const std::uint32_t h : hits)
-                found[b].emplace_back(static_cast<std::uint32_t>(s), h);
+                found[b].emplace_back(static_cast<std::uint32_t>(s), ids[h]);
         }
     });
     std::vector<std::pair<std::uint64_t, std::uint32_t>> out;
@@ -177,6 +178,40 @@ std::vector<std::pair<std::uint64_t, std::uint32_t>> touched_slots(
         }
     }
     return out;
+}
+
+struct PairHash {
+    std::size_t operator()(const std::pair<std::uint64_t, std::uint64_t>& k) const noexcept {
+        return std::hash<std::uint64_t>{}(k.first * 0x9e3779b97f4a7c15ull ^ k.second);
+    }
+};
+
+/// Sets the bits of every own half-edge that is a segment; per segment, 1 if it is an edge here.
+std::vector<std::int64_t> mark_existing_edges(
+    LocalMesh& mesh,
+    const std::vector<GlobalSegment>& segments,
+    const std::vector<std::array<std::uint64_t, 2>>& position) {
+    std::unordered_map<std::pair<std::uint64_t, std::uint64_t>, std::uint32_t, PairHash> index;
+    for (std::uint32_t i = 0; i < segments.size(); ++i) {
+        index.emplace(std::pair{std::min(position[i][0], position[i][1]),
+                                std::max(position[i][0], position[i][1])},
+                      i);
+    }
+    std::vector<std::int64_t> found(segments.size(), 0);
+    for (std::uint64_t s = 0; s < mesh.tris.size(); ++s) {
+        const GlobalTriangle g = mesh.at(mesh.first_slot + s);
+        if (g.unused()) continue;
+        for (unsigned i = 0; i < 3; ++i) {
+            const std::uint64_t u = g.v[i];
+            const std::uint64_t w = g.v[(i + 1) % 3];
+            if (u == global_ghost || w == global_ghost) continue;
+            const auto it = index.find({std::min(u, w), std::max(u, w)});
+            if (it == index.end()) continue;
+            mesh.bits[s][i] |= segments[it->second].bits;
+            found[it->second] = 1;
+        }
+    }
+    return found;
 }
 
 /// A met slot's note to the owner of its neighbour: join my group if you are met too.
@@ -224,6 +259,7 @@ SlotRecord record_of(const LocalMesh& mesh, std::uint64_t slot) {
     SlotRecord r;
     r.slot = slot;
     r.t = mesh.at(slot);
+    r.bits = mesh.bits[slot - mesh.first_slot];
     for (unsigned i = 0; i < 3; ++i) {
         if (r.t.v[i] != global_ghost) r.p[i] = mesh.point(r.t.v[i]);
     }
@@ -320,6 +356,9 @@ std::string insert_here(Gathered& gathered,
     try {
         std::vector<double> z(gathered.mesh.points.size(), 0.0);
         detail::MeshEditor editor(gathered.mesh, z, 0.0);
+        for (std::size_t k = 0; k < gathered.records.size(); ++k) {  // edges marked in place
+            gathered.mesh.bits[k] = gathered.records[k].bits;
+        }
         detail::MeshEditor::SegmentPlan plan;
         for (const std::uint32_t s : order) {  // planned first: a crossing adds no vertex
             editor.plan_segment(gathered.local_vertex(position[s][0]),
@@ -360,10 +399,23 @@ ConstraintStats insert_constraints(Comm& comm,
         position[i] = {a.position, b.position};
     }
 
+    // Segments that are an edge already are marked where they are (serially too: they stay
+    // edges, as no other segment crosses them); the others are grouped.
+    std::vector<std::int64_t> is_edge = mark_existing_edges(mesh, segments, position);
+    comm.allreduce(is_edge, Reduce::max);
+    std::vector<std::uint32_t> rest;
+    std::vector<TouchSegment> rest_geometry;
+    for (std::uint32_t i = 0; i < segments.size(); ++i) {
+        if (is_edge[i] != 0) continue;
+        rest.push_back(i);
+        rest_geometry.push_back(geometry[i]);
+    }
+    stats.marked = segments.size() - rest.size();
+
     // Groups: segments meeting one slot, or two slots that share an edge.
     Groups local(segments.size());
     std::vector<std::uint32_t> unions;
-    const auto touched = touched_slots(mesh, SegmentGrid(geometry), local, unions);
+    const auto touched = touched_slots(mesh, SegmentGrid(rest_geometry), rest, local, unions);
     join_adjacent(comm, mesh, owners, touched, local, unions);
     Groups groups(segments.size());
     const auto all_unions = concatenated<std::uint32_t>(
@@ -373,7 +425,7 @@ ConstraintStats insert_constraints(Comm& comm,
     std::vector<int> destination(segments.size());
     for (std::uint32_t s = 0; s < segments.size(); ++s) {
         const std::uint32_t root = groups.find(s);
-        if (root == s) ++stats.components;
+        if (root == s && is_edge[s] == 0) ++stats.components;
         destination[s] = owners.of_vertex(std::min(position[root][0], position[root][1]));
     }
     check_stop_everywhere(comm, progress);
@@ -416,7 +468,7 @@ ConstraintStats insert_constraints(Comm& comm,
     // Insertion in the serial priority order.
     std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed;
     for (std::uint32_t s = 0; s < segments.size(); ++s) {
-        if (destination[s] != comm.rank()) continue;
+        if (destination[s] != comm.rank() || is_edge[s] != 0) continue;
         keyed.emplace_back(detail::segment_priority(s, std::min(position[s][0], position[s][1])),
                            s);
     }

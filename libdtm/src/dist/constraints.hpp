@@ -23,7 +23,8 @@ struct GlobalSegment {
 };
 
 struct ConstraintStats {
-    std::uint64_t components = 0;  ///< groups of segments inserted together (all ranks)
+    std::uint64_t marked = 0;      ///< segments that were edges already (all ranks)
+    std::uint64_t components = 0;  ///< groups of the other segments inserted together
     std::uint64_t gathered = 0;    ///< triangles this rank received to insert into (with frames)
     std::uint64_t changed = 0;     ///< slots of this rank the insertion changed
 };
