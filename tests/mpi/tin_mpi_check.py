@@ -48,9 +48,9 @@ with tempfile.TemporaryDirectory() as tmp:
         rows = [r.split(",") for r in f.read().splitlines()[2:40] if r.startswith("P")]
     write_breaklines(lines, -752000, -1052000, 2000, 2000, [(r[1], r[2], r[3]) for r in rows[:8]])
     serial = run(["tin", points, "--breaklines", lines, "-o", os.path.join(tmp, "serial-b.ply"),
-                  "--crs", "EPSG:5514", "-q"], False)
+                  "--crs", "EPSG:5514", "--stats"], False)
     dist = run(["tin", points, "--breaklines", lines, "-o", os.path.join(tmp, "dist-b.ply"),
-                "--crs", "EPSG:5514", "-q"], True)
+                "--crs", "EPSG:5514", "--stats"], True)
     check(serial.returncode == 0 and dist.returncode == 0,
           f"breaklines: exit {serial.returncode} / {dist.returncode}: {serial.stderr} {dist.stderr}")
     if serial.returncode == 0 and dist.returncode == 0:
@@ -58,6 +58,9 @@ with tempfile.TemporaryDirectory() as tmp:
             serial_bytes = a.read()
             check(b"element edge 0" not in serial_bytes, "breaklines: the serial PLY has constrained edges")
             check(serial_bytes == b.read(), "breaklines: the PLY differs from the serial one")
+        a, b = json.loads(serial.stdout), json.loads(dist.stdout)
+        for key in ("points_in", "duplicates_merged", "vertices", "triangles", "constrained_edges"):
+            check(a[key] == b[key], f"breaklines --stats {key}: {a[key]} serial, {b[key]} distributed")
 
     stats = run(["tin", points, "-o", os.path.join(tmp, "stats.ply"), "--stats"], True)
     check(stats.returncode == 0, f"--stats: {stats.stderr}")

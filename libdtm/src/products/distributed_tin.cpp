@@ -21,7 +21,8 @@ DistributedTinResult distributed_tin(dist::Comm& comm,
     detail::report_progress(progress, 0.8, "writing");
     io::TinWriteOptions write;
     write.crs_wkt = surface.crs_wkt;
-    io::write_distributed_ply(comm, surface.merged, surface.kernel, options.output, write);
+    result.constrained_edges =
+        io::write_distributed_ply(comm, surface.merged, surface.kernel, options.output, write);
     result.bytes_sent = detail::bytes_sent(comm);
     result.band_triangles = static_cast<std::uint64_t>(comm.allreduce(
         static_cast<std::int64_t>(surface.kernel.stats.band_triangles), dist::Reduce::sum));

@@ -124,11 +124,11 @@ std::string distributed_tin_stats_json(const DistributedTinResult& r, double tot
     json.begin_object({}, Layout::inline_);
     json.value("ranks", static_cast<std::size_t>(r.ranks));
     json.value("points_in", r.points);
-    json.value("duplicates_merged", r.points - r.vertices);
+    json.value("duplicates_merged", r.points + r.crossings - r.vertices);
     json.value("skipped_lines", r.skipped_lines);
     json.value("vertices", r.vertices);
     json.value("triangles", r.triangles);
-    json.value("constrained_edges", std::size_t{0});
+    json.value("constrained_edges", r.constrained_edges);
     json.value("bytes_sent", r.bytes_sent);
     json.value("band_triangles", r.band_triangles);
     json.value("widenings", static_cast<std::size_t>(r.widenings));

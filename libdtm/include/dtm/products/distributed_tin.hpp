@@ -36,8 +36,9 @@ struct DistributedTinOptions {
 /// What every distributed product reports of the run and its surface.
 struct DistributedCounts {
     int ranks = 1;
-    std::uint64_t points = 0;    ///< input points
-    std::uint64_t vertices = 0;  ///< after exact duplicates merged
+    std::uint64_t points = 0;     ///< input points and breakline vertices
+    std::uint64_t vertices = 0;   ///< after exact duplicates merged, with those at crossings
+    std::uint64_t crossings = 0;  ///< vertices added where breaklines cross
     std::uint64_t triangles = 0;
     std::uint64_t skipped_lines = 0;
     std::uint64_t bytes_sent = 0;  ///< by all ranks, every phase
@@ -46,6 +47,7 @@ struct DistributedCounts {
 struct DistributedTinResult : DistributedCounts {
     std::uint64_t band_triangles = 0;
     std::uint32_t widenings = 0;
+    std::uint64_t constrained_edges = 0;
 };
 
 /// Collective: reads the points by byte ranges, merges exact duplicates, spreads the kernel's

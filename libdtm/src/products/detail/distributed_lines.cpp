@@ -6,9 +6,10 @@
 // segments in vertex numbers. The split pre-pass (split_segments, docs/algorithms/cdt.md) then
 // runs on every rank over the line vertices alone, renumbered monotonically: its decisions read
 // coordinates and segment indices only, except that a crossing falling exactly on an existing
-// vertex becomes that vertex; line vertices are in the copy, and a crossing on a survey point
-// (which only its rank knows) is looked up on all ranks and refused. Crossing vertices are
-// numbered after every merged vertex, in pair order, as serially.
+// vertex becomes that vertex; line vertices are in the copy, and survey points that crossings
+// land on (which only their ranks know) are looked up on all ranks and added, the split run
+// again, until none lands on a new one. Crossing vertices are numbered after every merged
+// vertex, in pair order, as serially.
 #include "products/detail/distributed_lines.hpp"
 
 #include <algorithm>
@@ -104,51 +105,60 @@ PlacedLines place_lines(dist::Comm& comm,
     }
     std::sort(used.begin(), used.end());
     used.erase(std::unique(used.begin(), used.end()), used.end());
-    // Their kept positions and heights (after the duplicate rule), from the ranks holding them.
-    std::vector<NumberedPoint> mine;
-    for (const dist::Vertex& v : merged.vertices) {
-        if (std::binary_search(used.begin(), used.end(), v.id)) mine.push_back({v.id, v.p});
-    }
-    std::vector<NumberedPoint> kept = dist::concatenated<NumberedPoint>(
-        comm.allgatherv(dist::to_bytes(std::span<const NumberedPoint>(mine))));
-    std::sort(kept.begin(), kept.end(),
-              [](const NumberedPoint& a, const NumberedPoint& b) { return a.id < b.id; });
 
+    // The split over those vertices and the survey points that crossings fall on, found by
+    // rounds: a crossing that lands exactly on a survey point becomes that point serially, so
+    // the point joins the copy and the split runs again, until no new crossing lands on one.
     ::dtm::detail::MergedInput in;
-    for (const NumberedPoint& k : kept) in.vertices.push_back(k.p);
-    in.z_known.assign(in.vertices.size(), true);
-    const auto compact = [&](std::uint64_t v) {
-        return static_cast<VertexIndex>(std::lower_bound(used.begin(), used.end(), v) -
-                                        used.begin());
-    };
-    for (std::size_t i = 0; i < ends.size(); ++i) {
-        in.segments.push_back({compact(ends[i][0]), compact(ends[i][1]), bits[i]});
-    }
-    const ::dtm::detail::SegmentSplit split = ::dtm::detail::split_segments(in, z_tolerance);
-    if (!split.all_free) {
-        throw Error(
-            "breaklines: crossings left after the split's rounds are not taken by a distributed "
-            "run yet");
+    for (int round = 0;; ++round) {
+        if (round == 16) {
+            throw Error("breaklines: crossings keep landing on survey points after 16 rounds");
+        }
+        // Kept positions and heights (after the duplicate rule), from the ranks holding them.
+        std::vector<NumberedPoint> mine;
+        for (const dist::Vertex& v : merged.vertices) {
+            if (std::binary_search(used.begin(), used.end(), v.id)) mine.push_back({v.id, v.p});
+        }
+        std::vector<NumberedPoint> kept = dist::concatenated<NumberedPoint>(
+            comm.allgatherv(dist::to_bytes(std::span<const NumberedPoint>(mine))));
+        std::sort(kept.begin(), kept.end(),
+                  [](const NumberedPoint& a, const NumberedPoint& b) { return a.id < b.id; });
+        in = {};
+        for (const NumberedPoint& k : kept) in.vertices.push_back(k.p);
+        in.z_known.assign(in.vertices.size(), true);
+        const auto compact = [&](std::uint64_t v) {
+            return static_cast<VertexIndex>(std::lower_bound(used.begin(), used.end(), v) -
+                                            used.begin());
+        };
+        for (std::size_t i = 0; i < ends.size(); ++i) {
+            in.segments.push_back({compact(ends[i][0]), compact(ends[i][1]), bits[i]});
+        }
+        const ::dtm::detail::SegmentSplit split = ::dtm::detail::split_segments(in, z_tolerance);
+        if (!split.all_free) {
+            throw Error(
+                "breaklines: crossings left after the split's rounds are not taken by a "
+                "distributed run yet");
+        }
+        std::unordered_set<std::pair<std::uint64_t, std::uint64_t>, KeyHash> at;
+        for (std::size_t v = used.size(); v < in.vertices.size(); ++v) {
+            at.insert(key(in.vertices[v].x, in.vertices[v].y));
+        }
+        std::vector<std::uint64_t> landed;
+        if (!at.empty()) {
+            for (const dist::Vertex& v : merged.vertices) {
+                if (at.contains(key(v.p.x, v.p.y))) landed.push_back(v.id);
+            }
+        }
+        landed = dist::concatenated<std::uint64_t>(
+            comm.allgatherv(dist::to_bytes(std::span<const std::uint64_t>(landed))));
+        if (landed.empty()) break;
+        used.insert(used.end(), landed.begin(), landed.end());
+        std::sort(used.begin(), used.end());
+        used.erase(std::unique(used.begin(), used.end()), used.end());
     }
     const std::size_t first_crossing = used.size();
     out.crossings = in.vertices.size() - first_crossing;
 
-    // A crossing exactly on a survey point becomes that point serially: refused here.
-    std::unordered_set<std::pair<std::uint64_t, std::uint64_t>, KeyHash> at;
-    for (std::size_t v = first_crossing; v < in.vertices.size(); ++v) {
-        at.insert(key(in.vertices[v].x, in.vertices[v].y));
-    }
-    std::int64_t on_point = 0;
-    if (!at.empty()) {
-        for (const dist::Vertex& v : merged.vertices) {
-            if (at.contains(key(v.p.x, v.p.y))) on_point = 1;
-        }
-    }
-    if (comm.allreduce(on_point, dist::Reduce::max) != 0) {
-        throw Error(
-            "breaklines: a crossing of two breaklines falls exactly on a survey point, which a "
-            "distributed run does not take yet");
-    }
     const std::uint64_t first_new = merged.total_vertices;
     if (comm.rank() == last) {
         for (std::size_t v = first_crossing; v < in.vertices.size(); ++v) {

@@ -33,8 +33,7 @@ struct PlacedLines {
 /// rank (its local inputs from @p first_line_input): the segments in vertex numbers, split as
 /// split_segments splits them; the crossing vertices are appended to the last rank's vertices
 /// (numbered after all others) and merged.total_vertices grows on every rank.
-/// @throws Error on every rank when the split's rounds run out or a crossing falls exactly on a
-/// survey point (not yet in a distributed run)
+/// @throws Error on every rank when the split's rounds run out
 [[nodiscard]] PlacedLines place_lines(dist::Comm& comm,
                                       dist::MergedShare& merged,
                                       const ::dtm::detail::CombinedInput& lines,

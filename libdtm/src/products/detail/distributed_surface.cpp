@@ -87,6 +87,7 @@ DistributedSurface distributed_surface(dist::Comm& comm,
     std::vector<dist::InputPoint>().swap(read.points);
     const PlacedLines placed =
         place_lines(comm, out.merged, lines, first_line_input, source.z_tolerance);
+    out.points += lines.points.size();  // every rank holds the lines
     lines = {};
     out.segments = placed.segments.size();
     out.crossings = placed.crossings;
@@ -109,6 +110,7 @@ DistributedCounts counts_of(const dist::Comm& comm, const DistributedSurface& su
     counts.points = surface.points;
     counts.skipped_lines = surface.skipped_lines;
     counts.vertices = surface.merged.total_vertices;
+    counts.crossings = surface.crossings;
     counts.triangles = surface.triangles;
     return counts;
 }

@@ -78,11 +78,11 @@ std::vector<std::byte> constrained_edges(dist::Comm& comm,
 
 }  // namespace
 
-void write_distributed_ply(dist::Comm& comm,
-                           const dist::MergedShare& merged,
-                           const dist::DistributedMesh& kernel,
-                           const std::filesystem::path& path,
-                           const TinWriteOptions& options) {
+std::uint64_t write_distributed_ply(dist::Comm& comm,
+                                    const dist::MergedShare& merged,
+                                    const dist::DistributedMesh& kernel,
+                                    const std::filesystem::path& path,
+                                    const TinWriteOptions& options) {
     comm.set_phase("write tin");
     const dist::LocalMesh& mesh = kernel.mesh;
     const auto ghosts = dist::all_ghost_slots(comm, mesh);
@@ -181,6 +181,7 @@ void write_distributed_ply(dist::Comm& comm,
     if (comm.allreduce(failed, dist::Reduce::max) != 0) {
         throw Error(comm.rank() == 0 ? message : "cannot write " + path.string());
     }
+    return edge_count;
 }
 
 }  // namespace dtm::io

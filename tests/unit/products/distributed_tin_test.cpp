@@ -1,0 +1,140 @@
+// SPDX-License-Identifier: MIT
+// products::distributed_tin with hard breaklines on 1 to 64 in-process ranks (R-B2, R-P1): the
+// PLY bytes, with the constrained-edge element, of the serial load_inputs -> triangulate ->
+// write_tin_ply path. Lines along the first seam, across every rank, a diagonal longer than any
+// rank's region, lines crossing each other (split first), a line through survey points (its
+// vertices merge with them), short hooks; uniform points, a cocircular lattice and S-JTSK
+// magnitudes; random delays before every send.
+#include "dtm/products/distributed_tin.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "dtm/algo/triangulate.hpp"
+#include "dtm/dist/in_process.hpp"
+#include "dtm/io/formats/ply.hpp"
+#include "dtm/io/inputs.hpp"
+#include "support/test_support.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Case {
+    std::string name;
+    std::vector<dtm::Point3> points;
+    double x0, y0, size;
+};
+
+std::vector<Case> cases() {
+    std::vector<Case> out;
+    std::mt19937_64 rng(20261204);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    Case uniform{"uniform", {}, 0.0, 0.0, 1000.0};
+    for (int i = 0; i < 4000; ++i) {
+        const double x = 1000.0 * u(rng), y = 1000.0 * u(rng);
+        uniform.points.push_back({x, y, 300.0 + 0.01 * x + 3.0 * std::sin(y / 90.0)});
+    }
+    out.push_back(uniform);
+    Case lattice{"lattice", {}, 0.0, 0.0, 120.0};
+    for (int i = 0; i <= 60; ++i) {
+        for (int j = 0; j <= 60; ++j)
+            lattice.points.push_back({i * 2.0, j * 2.0, 100.0 + (i * 7 + j * 13) % 17});
+    }
+    out.push_back(lattice);
+    Case sjtsk{"sjtsk", {}, -751000.0, -1051000.0, 1000.0};
+    for (int i = 0; i < 3000; ++i) {
+        const double x = -751000.0 + std::round(u(rng) * 1e6) / 1000.0;
+        const double y = -1051000.0 + std::round(u(rng) * 1e6) / 1000.0;
+        sjtsk.points.push_back({x, y, 250.0 + 10.0 * u(rng)});
+    }
+    out.push_back(sjtsk);
+    return out;
+}
+
+std::string points_csv(const Case& c) {
+    std::string text = "x,y,z\n";
+    char line[128];
+    for (const dtm::Point3& p : c.points) {
+        std::snprintf(line, sizeof line, "%.17g,%.17g,%.17g\n", p.x, p.y, p.z);
+        text += line;
+    }
+    return text;
+}
+
+std::string lines_csv(const Case& c) {
+    const double x0 = c.x0, y0 = c.y0, w = c.size;
+    const auto z = [&](double x, double y) {
+        return 260.0 + (x - x0) / w * 20.0 + (y - y0) / w * 10.0;
+    };
+    std::vector<std::vector<std::array<double, 3>>> lines;
+    const auto add = [&](std::vector<std::pair<double, double>> xy) {
+        auto& line = lines.emplace_back();
+        for (const auto& [x, y] : xy) line.push_back({x, y, z(x, y)});
+    };
+    std::vector<std::pair<double, double>> along, across,
+        diagonal{{x0 + 3.0, y0 + 5.0}, {x0 + w - 4.0, y0 + w - 2.0}};
+    for (int k = 0; k <= 40; ++k)
+        along.emplace_back(x0 + w * 0.5, y0 + w * (0.02 + 0.96 * k / 40.0));
+    for (int k = 0; k <= 50; ++k)
+        across.emplace_back(x0 + w * (0.01 + 0.98 * k / 50.0), y0 + w * (0.3 + 0.01 * (k % 3)));
+    add(along);
+    add(across);
+    add(diagonal);
+    add({{x0 + w * 0.25, y0 + w * 0.05}, {x0 + w * 0.27, y0 + w * 0.95}});
+    for (int k = 0; k < 10; ++k) {
+        const double x = x0 + w * (0.05 + 0.09 * k), y = y0 + w * (0.1 + 0.08 * k);
+        add({{x, y}, {x + w * 0.01, y + w * 0.004}, {x + w * 0.02, y - w * 0.003}});
+    }
+    auto& through = lines.emplace_back();  // through survey points: merged with them
+    for (std::size_t i = 0; i < 6; ++i) {
+        const dtm::Point3& p = c.points[i * c.points.size() / 6 + 3];
+        through.push_back({p.x, p.y, p.z});
+    }
+    std::string text = "shapeid,x,y,z\n";
+    char row[160];
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+        for (const auto& p : lines[i]) {
+            std::snprintf(row, sizeof row, "%zu,%.17g,%.17g,%.17g\n", i + 1, p[0], p[1], p[2]);
+            text += row;
+        }
+    }
+    return text;
+}
+
+TEST(DistributedTin, BreaklinesGiveTheSerialPlyBytesOnAnyRankCount) {
+    for (const Case& c : cases()) {
+        const dtm::test::ScratchDir dir;
+        dtm::test::write_file(dir / "points.csv", points_csv(c));
+        dtm::test::write_file(dir / "lines.csv", lines_csv(c));
+        dtm::io::LoadOptions load;
+        load.files = {{dir / "points.csv", dtm::io::InputRole::points},
+                      {dir / "lines.csv", dtm::io::InputRole::breaklines}};
+        const dtm::TriangulateResult serial =
+            dtm::triangulate(dtm::io::load_inputs(load).terrain, dtm::TriangulateOptions{});
+        ASSERT_GT(serial.stats.intersections, 2U) << c.name;
+        ASSERT_GT(serial.tin.constraints.size(), 100U) << c.name;
+        dtm::io::write_tin_ply(serial.tin, dir / "serial.ply", {});
+        const std::string expected = dtm::test::read_file(dir / "serial.ply");
+        for (const int ranks : {1, 2, 3, 7, 16, 64}) {
+            const unsigned jitter = ranks == 7 ? 200U : 0U;  // random delays before every send
+            dtm::products::DistributedTinOptions options;
+            options.source.input = {dir / "points.csv", dtm::io::InputRole::points};
+            options.source.breaklines = {{dir / "lines.csv", dtm::io::InputRole::breaklines}};
+            options.output = dir / ("dist-" + std::to_string(ranks) + ".ply");
+            dtm::dist::run_in_process(
+                ranks,
+                [&](dtm::dist::Comm& comm) { dtm::products::distributed_tin(comm, options, {}); },
+                {jitter, 3});
+            EXPECT_TRUE(dtm::test::read_file(options.output) == expected)
+                << c.name << " on " << ranks << " ranks";
+        }
+    }
+}
+
+}  // namespace
