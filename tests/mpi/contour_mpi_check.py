@@ -12,7 +12,7 @@ import random
 import subprocess
 import tempfile
 
-from mpi_checks import check, finish, ranks, run, write_breaklines
+from mpi_checks import check, finish, ranks, run, write_breaklines, write_ring
 
 
 def layer(path):
@@ -58,11 +58,16 @@ with tempfile.TemporaryDirectory() as tmp:
     write_lattice(lattice)
     lines = os.path.join(tmp, "lines.csv")
     write_breaklines(lines, -750500, -1050400, 500, 400)
+    boundary, hole = os.path.join(tmp, "boundary.csv"), os.path.join(tmp, "hole.csv")
+    write_ring(boundary, -750250, -1050200, 180, 262)
+    write_ring(hole, -750250, -1050180, 45, 258)
     cases = [("survey", survey, ["--crs", "EPSG:5514", "--interval", "0.5", "--duplicates", "mean"]),
              ("survey smoothed", survey, ["--crs", "EPSG:5514", "--interval", "2", "--smooth", "2"]),
              ("survey levels", survey, ["--crs", "EPSG:5514", "--levels", "251.3,255,260.25,262",
                                         "--smooth", "1", "--index-every", "2"]),
              ("survey breaklines", survey, ["--crs", "EPSG:5514", "--interval", "1", "--breaklines", lines]),
+             ("survey boundary", survey, ["--crs", "EPSG:5514", "--interval", "1", "--breaklines", lines,
+                                          "--boundary", boundary, "--holes", hole]),
              ("lattice", lattice, ["--interval", "1"]),
              ("lattice base", lattice, ["--interval", "0.5", "--base", "0.25"])]
     for n, (name, points, options) in enumerate(cases):

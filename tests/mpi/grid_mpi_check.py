@@ -10,7 +10,7 @@ import random
 import subprocess
 import tempfile
 
-from mpi_checks import check, dtm, finish, ranks, run, write_breaklines
+from mpi_checks import check, dtm, finish, ranks, run, write_breaklines, write_ring
 
 
 def raw(path):
@@ -50,11 +50,16 @@ with tempfile.TemporaryDirectory() as tmp:
     write_lattice(lattice)
     lines = os.path.join(tmp, "lines.csv")
     write_breaklines(lines, -750600, -1050400, 600, 400)
+    boundary, hole = os.path.join(tmp, "boundary.csv"), os.path.join(tmp, "hole.csv")
+    write_ring(boundary, -750300, -1050200, 190, 290)
+    write_ring(hole, -750300, -1050180, 50, 280)
     cases = [("survey", survey, ["--crs", "EPSG:5514", "--cell", "0.7"]),
              ("survey extent", survey, ["--crs", "EPSG:5514", "--cell", "2",
                                         "--extent", "-750700,-1050450,-750100,-1050050"]),
              ("lattice", lattice, ["--cell", "0.25", "--duplicates", "mean"]),
-             ("survey breaklines", survey, ["--crs", "EPSG:5514", "--cell", "1.3", "--breaklines", lines])]
+             ("survey breaklines", survey, ["--crs", "EPSG:5514", "--cell", "1.3", "--breaklines", lines]),
+             ("survey boundary", survey, ["--crs", "EPSG:5514", "--cell", "1.1", "--breaklines", lines,
+                                          "--boundary", boundary, "--holes", hole])]
     for name, points, options in cases:
         serial_tif, dist_vrt = os.path.join(tmp, "serial.tif"), os.path.join(tmp, f"dem-{len(name)}.vrt")
         serial = run(["grid", points, "-o", serial_tif, "-q"] + options, False)

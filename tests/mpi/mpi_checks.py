@@ -1,6 +1,7 @@
 # SPDX-License-Identifier: MIT
 """What the MPI checks share: the command line (DTM MPIEXEC NP), running dtm with or without
 mpirun, and collecting failures. Imported by the *_mpi_check.py scripts beside it."""
+import math
 import subprocess
 import sys
 
@@ -39,6 +40,17 @@ def write_breaklines(path, x0, y0, w, h, through=()):
                 out.write(f"{i + 1},{x:.3f},{y:.3f},{z(x, y):.3f}\n")
         for x, y, zz in through:
             out.write(f"{len(lines) + 1},{x},{y},{zz}\n")
+
+
+def write_ring(path, cx, cy, r, z):
+    """A closed 3-D ring (shapeid,x,y,z) of radius about r around (cx, cy) at height z: as a
+    boundary it is cut by every seam; as a hole it straddles the first ones."""
+    with open(path, "w") as out:
+        out.write("shapeid,x,y,z\n")
+        for k in range(37):
+            a = 2 * math.pi * (k % 36) / 36
+            rr = r * (1 + 0.08 * math.sin(5 * (k % 36)))
+            out.write(f"1,{cx + rr * math.cos(a):.3f},{cy + rr * math.sin(a):.3f},{z}\n")
 
 
 def finish(job):

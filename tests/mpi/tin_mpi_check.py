@@ -9,7 +9,7 @@ import os
 import random
 import tempfile
 
-from mpi_checks import check, dtm, finish, ranks, run, write_breaklines
+from mpi_checks import check, dtm, finish, ranks, run, write_breaklines, write_ring
 
 
 def write_points(path, n, bad_line=None):
@@ -61,6 +61,21 @@ with tempfile.TemporaryDirectory() as tmp:
         a, b = json.loads(serial.stdout), json.loads(dist.stdout)
         for key in ("points_in", "duplicates_merged", "vertices", "triangles", "constrained_edges"):
             check(a[key] == b[key], f"breaklines --stats {key}: {a[key]} serial, {b[key]} distributed")
+
+    boundary, hole = os.path.join(tmp, "boundary.csv"), os.path.join(tmp, "hole.csv")
+    write_ring(boundary, -751000, -1051000, 880, 262)
+    write_ring(hole, -751000, -1050900, 240, 258)
+    domain = ["--breaklines", lines, "--boundary", boundary, "--holes", hole, "--crs", "EPSG:5514"]
+    serial = run(["tin", points, "-o", os.path.join(tmp, "serial-d.ply"), "--stats"] + domain, False)
+    dist = run(["tin", points, "-o", os.path.join(tmp, "dist-d.ply"), "--stats"] + domain, True)
+    check(serial.returncode == 0 and dist.returncode == 0,
+          f"boundary and hole: exit {serial.returncode} / {dist.returncode}: {serial.stderr} {dist.stderr}")
+    if serial.returncode == 0 and dist.returncode == 0:
+        with open(os.path.join(tmp, "serial-d.ply"), "rb") as a, open(os.path.join(tmp, "dist-d.ply"), "rb") as b:
+            check(a.read() == b.read(), "boundary and hole: the PLY differs from the serial one")
+        a, b = json.loads(serial.stdout), json.loads(dist.stdout)
+        check(a["removed_triangles"] > 1000 and a["removed_triangles"] == b["removed_triangles"],
+              f"boundary and hole: removed {a['removed_triangles']} serial, {b['removed_triangles']} distributed")
 
     stats = run(["tin", points, "-o", os.path.join(tmp, "stats.ply"), "--stats"], True)
     check(stats.returncode == 0, f"--stats: {stats.stderr}")

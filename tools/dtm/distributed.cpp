@@ -23,9 +23,8 @@ void check_distributed_input(const char* command,
                          what + " yet");
     };
     if (in.inputs.size() != 1) refuse("more than one input file");
-    if (!in.soft_breaklines.empty() || !in.boundaries.empty() || !in.holes.empty() ||
-        !in.flat_areas.empty()) {
-        refuse("soft breaklines, boundaries, holes or flat areas");
+    if (!in.soft_breaklines.empty() || !in.flat_areas.empty()) {
+        refuse("soft breaklines or flat areas");
     }
     const std::string extension = io::lower_extension(in.inputs[0]);
     if (extension != "csv" && extension != "txt" && extension != "xyz") {
@@ -46,9 +45,10 @@ products::DistributedSource distributed_source(const InputArgs& in,
     source.read = in.read;
     source.default_crs = in.crs.default_crs;
     source.duplicates = triangulate.duplicates;
-    for (const std::string& f : in.breaklines) {
-        source.breaklines.push_back({f, io::InputRole::breaklines});
-    }
+    for (const std::string& f : in.breaklines)
+        source.lines.push_back({f, io::InputRole::breaklines});
+    for (const std::string& f : in.boundaries) source.lines.push_back({f, io::InputRole::boundary});
+    for (const std::string& f : in.holes) source.lines.push_back({f, io::InputRole::holes});
     source.z_tolerance = triangulate.z_tolerance;
     return source;
 }

@@ -57,6 +57,14 @@ struct LocalMesh {
     /// Per slot, the ConstraintBits of its three edges (edge i runs from v[i] to v[i + 1]);
     /// empty until constraints are inserted (dist/constraints.hpp).
     std::vector<std::array<std::uint8_t, 3>> bits;
+    /// Per slot, 1 when the domain (boundary, holes) removed its triangle; empty: none removed
+    /// (dist/domain.hpp).
+    std::vector<std::uint8_t> removed;
+
+    /// Own slot @p s (local index) holds a triangle of the TIN: real, not removed.
+    [[nodiscard]] bool kept(std::uint64_t s) const noexcept {
+        return !detail::is_ghost_triangle(tris[s]) && (removed.empty() || removed[s] == 0);
+    }
 
     [[nodiscard]] bool owns(std::uint64_t slot) const noexcept {
         return slot >= first_slot && slot - first_slot < tris.size();

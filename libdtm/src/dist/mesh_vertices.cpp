@@ -7,7 +7,10 @@
 
 #include <algorithm>
 #include <span>
+#include <unordered_set>
 #include <utility>
+
+#include "dist/domain.hpp"
 
 namespace dtm::dist {
 
@@ -95,8 +98,15 @@ SurfaceMesh surface_mesh(Comm& comm, const MergedShare& merged, const Distribute
         return mesh.own_vertex(position) ? k.input_ids[position - mesh.first_vertex]
                                          : foreign.at(position);
     };
-    const auto is_ghost_slot = [&](std::uint64_t slot) {
-        return std::binary_search(ghosts.begin(), ghosts.end(), slot);
+    // A removed neighbour (dist/domain.hpp) leaves the edge on the border, as a hull ghost does.
+    const bool trimmed = !mesh.removed.empty();
+    const std::unordered_set<std::uint64_t> removed_next_door =
+        trimmed ? foreign_removed(comm, mesh) : std::unordered_set<std::uint64_t>{};
+    const auto outside = [&](std::uint64_t slot) {
+        if (std::binary_search(ghosts.begin(), ghosts.end(), slot)) return true;
+        if (!trimmed) return false;
+        return mesh.owns(slot) ? mesh.removed[slot - mesh.first_slot] != 0
+                               : removed_next_door.contains(slot);
     };
     const auto slots = static_cast<std::uint64_t>(
         comm.allreduce(static_cast<std::int64_t>(mesh.tris.size()), Reduce::sum));
@@ -107,7 +117,7 @@ SurfaceMesh surface_mesh(Comm& comm, const MergedShare& merged, const Distribute
     corners.reserve(3 * mesh.tris.size());
     for (std::uint64_t s = 0; s < mesh.tris.size(); ++s) {
         const Triangle& t = mesh.tris[s];
-        if (detail::is_ghost_triangle(t)) continue;
+        if (!mesh.kept(s)) continue;
         const GlobalTriangle g = mesh.at(mesh.first_slot + s);
         SurfaceFace f;
         f.face = serial_face(mesh.first_slot + s, ghosts, real);
@@ -115,7 +125,7 @@ SurfaceMesh surface_mesh(Comm& comm, const MergedShare& merged, const Distribute
             corners.emplace_back(number(t.v[i]), 3 * out.faces.size() + i);
             // Kernel half-edge i runs v[i] -> v[i + 1], opposite corner i + 2
             // (tin_build_triangles).
-            if (g.n[i] == global_ghost || is_ghost_slot(g.n[i] >> 2))
+            if (g.n[i] == global_ghost || outside(g.n[i] >> 2))
                 f.border |= 1U << ((i + 2) % 3);
         }
         out.faces.push_back(f);

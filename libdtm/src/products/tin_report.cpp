@@ -129,6 +129,7 @@ std::string distributed_tin_stats_json(const DistributedTinResult& r, double tot
     json.value("vertices", r.vertices);
     json.value("triangles", r.triangles);
     json.value("constrained_edges", r.constrained_edges);
+    json.value("removed_triangles", r.removed_triangles);
     json.value("bytes_sent", r.bytes_sent);
     json.value("band_triangles", r.band_triangles);
     json.value("widenings", static_cast<std::size_t>(r.widenings));

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// products::distributed_tin with hard breaklines on 1 to 64 in-process ranks (R-B2, R-P1): the
+// products::distributed_tin with hard breaklines, a boundary cut by every seam and a hole
+// straddling seams on 1 to 64 in-process ranks (R-B2, R-B3, R-P1): the
 // PLY bytes, with the constrained-edge element, of the serial load_inputs -> triangulate ->
 // write_tin_ply path. Lines along the first seam, across every rank, a diagonal longer than any
 // rank's region, lines crossing each other (split first), a line through survey points (its
@@ -107,25 +108,50 @@ std::string lines_csv(const Case& c) {
     return text;
 }
 
-TEST(DistributedTin, BreaklinesGiveTheSerialPlyBytesOnAnyRankCount) {
+/// A closed ring (shapeid,x,y,z) around (cx, cy): radius r, wobbling, at height z.
+std::string ring_csv(double cx, double cy, double r, double z) {
+    std::string text = "shapeid,x,y,z\n";
+    char row[160];
+    for (int k = 0; k <= 36; ++k) {
+        const double a = 2.0 * 3.141592653589793 * (k % 36) / 36.0;
+        const double rr = r * (1.0 + 0.08 * std::sin(5.0 * (k % 36)));
+        std::snprintf(row, sizeof row, "1,%.17g,%.17g,%.17g\n", cx + rr * std::cos(a),
+                      cy + rr * std::sin(a), z);
+        text += row;
+    }
+    return text;
+}
+
+TEST(DistributedTin, BreaklinesBoundaryAndHolesGiveTheSerialPlyBytesOnAnyRankCount) {
     for (const Case& c : cases()) {
         const dtm::test::ScratchDir dir;
         dtm::test::write_file(dir / "points.csv", points_csv(c));
         dtm::test::write_file(dir / "lines.csv", lines_csv(c));
+        // A boundary cut by every seam, a hole straddling the first ones.
+        const double mid = c.size / 2.0;
+        dtm::test::write_file(dir / "boundary.csv",
+                              ring_csv(c.x0 + mid, c.y0 + mid, 0.44 * c.size, 270.0));
+        dtm::test::write_file(dir / "hole.csv",
+                              ring_csv(c.x0 + mid, c.y0 + 0.55 * c.size, 0.12 * c.size, 265.0));
+        const std::vector<dtm::io::InputFile> lines{
+            {dir / "lines.csv", dtm::io::InputRole::breaklines},
+            {dir / "boundary.csv", dtm::io::InputRole::boundary},
+            {dir / "hole.csv", dtm::io::InputRole::holes}};
         dtm::io::LoadOptions load;
-        load.files = {{dir / "points.csv", dtm::io::InputRole::points},
-                      {dir / "lines.csv", dtm::io::InputRole::breaklines}};
+        load.files = {{dir / "points.csv", dtm::io::InputRole::points}};
+        load.files.insert(load.files.end(), lines.begin(), lines.end());
         const dtm::TriangulateResult serial =
             dtm::triangulate(dtm::io::load_inputs(load).terrain, dtm::TriangulateOptions{});
         ASSERT_GT(serial.stats.intersections, 2U) << c.name;
         ASSERT_GT(serial.tin.constraints.size(), 100U) << c.name;
+        ASSERT_GT(serial.stats.removed_triangles, serial.tin.triangles.size() / 4) << c.name;
         dtm::io::write_tin_ply(serial.tin, dir / "serial.ply", {});
         const std::string expected = dtm::test::read_file(dir / "serial.ply");
         for (const int ranks : {1, 2, 3, 7, 16, 64}) {
             const unsigned jitter = ranks == 7 ? 200U : 0U;  // random delays before every send
             dtm::products::DistributedTinOptions options;
             options.source.input = {dir / "points.csv", dtm::io::InputRole::points};
-            options.source.breaklines = {{dir / "lines.csv", dtm::io::InputRole::breaklines}};
+            options.source.lines = lines;
             options.output = dir / ("dist-" + std::to_string(ranks) + ".ply");
             dtm::dist::run_in_process(
                 ranks,

@@ -23,8 +23,9 @@ struct DistributedSource {
     io::ReadOptions read;     ///< columns, skip_bad_lines
     std::string default_crs;  ///< the CRS of the points (the file carries none)
     DuplicateRule duplicates = DuplicateRule::first;
-    /// Hard 3-D breakline files, read whole by every rank (role breaklines).
-    std::vector<io::InputFile> breaklines;
+    /// Hard 3-D breakline, boundary and hole files (roles breaklines, boundary, holes), read
+    /// whole by every rank.
+    std::vector<io::InputFile> lines;
     double z_tolerance = TriangulateOptions{}.z_tolerance;  ///< at breakline crossings
 };
 
@@ -39,7 +40,8 @@ struct DistributedCounts {
     std::uint64_t points = 0;     ///< input points and breakline vertices
     std::uint64_t vertices = 0;   ///< after exact duplicates merged, with those at crossings
     std::uint64_t crossings = 0;  ///< vertices added where breaklines cross
-    std::uint64_t triangles = 0;
+    std::uint64_t triangles = 0;  ///< of the TIN (inside the boundary, outside the holes)
+    std::uint64_t removed_triangles = 0;  ///< by the boundary and holes
     std::uint64_t skipped_lines = 0;
     std::uint64_t bytes_sent = 0;  ///< by all ranks, every phase
 };

@@ -42,32 +42,35 @@ struct KeyHash {
 
 }  // namespace
 
-::dtm::detail::CombinedInput load_distributed_lines(const DistributedSource& source,
-                                                    const std::string& crs_wkt) {
-    ::dtm::detail::CombinedInput lines;
-    if (source.breaklines.empty()) return lines;
+DistributedLines load_distributed_lines(const DistributedSource& source,
+                                        const std::string& crs_wkt) {
+    DistributedLines lines;
+    if (source.lines.empty()) return lines;
     io::LoadOptions load;
-    load.files = source.breaklines;
+    load.files = source.lines;
     load.read = source.read;
     load.crs = {source.default_crs, crs_wkt};
     const io::LoadedInputs loaded = io::load_inputs(load);
     const TerrainInput& t = loaded.terrain;
-    if (!t.points.empty() || !t.soft_breaklines.empty() || !t.boundaries.empty() ||
-        !t.holes.empty()) {
+    if (!t.points.empty() || !t.soft_breaklines.empty() || !t.hole_seeds.empty()) {
         throw UsageError(
-            "a distributed run takes lines only from breakline files (no points, soft lines, "
-            "boundaries or holes in them yet)");
+            "a distributed run takes lines only from breakline, boundary and hole files (no "
+            "points, soft lines or hole seeds in them yet)");
     }
-    for (const Polyline& line : t.breaklines) {
-        for (const Point3& p : line.points) {
-            if (std::isnan(p.z) && std::isfinite(p.x) && std::isfinite(p.y)) {
-                throw UsageError((line.source.empty() ? std::string("a breakline") : line.source) +
-                                 ": a 2-D breakline (its heights come from the surface) is not "
-                                 "taken by a distributed run yet");
+    for (const auto* kind : {&t.breaklines, &t.boundaries, &t.holes}) {
+        for (const Polyline& line : *kind) {
+            for (const Point3& p : line.points) {
+                if (std::isnan(p.z) && std::isfinite(p.x) && std::isfinite(p.y)) {
+                    throw UsageError(
+                        (line.source.empty() ? std::string("a line") : line.source) +
+                        ": a 2-D line (its heights come from the surface) is not taken by a "
+                        "distributed run yet");
+                }
             }
         }
     }
-    ::dtm::detail::add_lines(t, lines);
+    ::dtm::detail::add_lines(t, lines.combined);
+    lines.has_boundary = !t.boundaries.empty();
     return lines;
 }
 

@@ -8,6 +8,7 @@
 #include "products/detail/distributed_surface.hpp"
 
 #include "dist/constraints.hpp"
+#include "dist/domain.hpp"
 #include "dtm/core/error.hpp"
 #include "dtm/dist/partition.hpp"
 #include "dtm/io/formats/crs.hpp"
@@ -74,8 +75,9 @@ DistributedSurface distributed_surface(dist::Comm& comm,
     out.points = read.total;
     out.skipped_lines = read.skipped_lines;
     // Breakline vertices follow the points in the merge (the last rank holds the last inputs).
-    ::dtm::detail::CombinedInput lines;
-    on_ranks(comm, true, [&] { lines = load_distributed_lines(source, out.crs_wkt); });
+    DistributedLines loaded;
+    on_ranks(comm, true, [&] { loaded = load_distributed_lines(source, out.crs_wkt); });
+    ::dtm::detail::CombinedInput& lines = loaded.combined;
     const std::uint64_t first_line_input = read.points.size();
     if (comm.rank() == comm.size() - 1) {
         for (std::size_t i = 0; i < lines.points.size(); ++i) {
@@ -87,6 +89,8 @@ DistributedSurface distributed_surface(dist::Comm& comm,
     std::vector<dist::InputPoint>().swap(read.points);
     const PlacedLines placed =
         place_lines(comm, out.merged, lines, first_line_input, source.z_tolerance);
+    out.segments = placed.segments.size();
+    out.crossings = placed.crossings;
     out.points += lines.points.size();  // every rank holds the lines
     lines = {};
     out.segments = placed.segments.size();
@@ -101,6 +105,12 @@ DistributedSurface distributed_surface(dist::Comm& comm,
     if (!placed.segments.empty()) {
         dist::insert_constraints(comm, out.kernel, placed.segments, progress.sub(0.9, 1.0));
     }
+    out.removed_triangles =
+        dist::apply_distributed_domain(comm, out.kernel, loaded.has_boundary, progress).removed;
+    if (out.removed_triangles == out.triangles) {
+        throw InputError("no triangle is left inside the boundary and outside the holes");
+    }
+    out.triangles -= out.removed_triangles;
     return out;
 }
 
@@ -111,6 +121,7 @@ DistributedCounts counts_of(const dist::Comm& comm, const DistributedSurface& su
     counts.skipped_lines = surface.skipped_lines;
     counts.vertices = surface.merged.total_vertices;
     counts.crossings = surface.crossings;
+    counts.removed_triangles = surface.removed_triangles;
     counts.triangles = surface.triangles;
     return counts;
 }

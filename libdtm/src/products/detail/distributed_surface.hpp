@@ -22,9 +22,10 @@ struct DistributedSurface {
     std::string crs_wkt;
     std::uint64_t points = 0;  ///< input points
     std::uint64_t skipped_lines = 0;
-    std::uint64_t triangles = 0;  ///< real triangles over all ranks
-    std::uint64_t segments = 0;   ///< breakline segments after the split
-    std::uint64_t crossings = 0;  ///< vertices added where breaklines cross
+    std::uint64_t triangles = 0;          ///< of the TIN (after the domain) over all ranks
+    std::uint64_t segments = 0;           ///< breakline segments after the split
+    std::uint64_t crossings = 0;          ///< vertices added where breaklines cross
+    std::uint64_t removed_triangles = 0;  ///< outside the boundary or inside holes
 };
 
 /// Collective. @throws InputError (the serial reader's and triangulation's messages) or Error on

@@ -17,8 +17,10 @@
 #include <cstring>
 #include <limits>
 #include <string>
+#include <unordered_set>
 
 #include "algo/detail/tin_build.hpp"
+#include "dist/domain.hpp"
 #include "dist/mesh_vertices.hpp"
 #include "dtm/core/error.hpp"
 #include "dtm/io/formats/ply.hpp"
@@ -37,24 +39,34 @@ struct EdgeRecord {
 };
 
 /// Rank 0: the PLY `edge` element's bytes (empty elsewhere). As finish_tin lists them: every
-/// constrained edge once (from the side where a < b, or from its only real triangle), sorted by
-/// (a, b), with the strongest kind of its bits.
+/// constrained edge of a kept triangle once (from the side where a < b, or from its only kept
+/// triangle), sorted by (a, b), with the strongest kind of its bits.
 template <class Number>
 std::vector<std::byte> constrained_edges(dist::Comm& comm,
                                          const dist::LocalMesh& mesh,
                                          const std::vector<std::uint64_t>& ghosts,
-                                         const Number& number) {
+                                         const Number& number,
+                                         bool trimmed) {
+    // A removed neighbour leaves the edge on the border, as a hull ghost does.
+    const std::unordered_set<std::uint64_t> removed_next_door =
+        trimmed ? dist::foreign_removed(comm, mesh) : std::unordered_set<std::uint64_t>{};
+    const auto outside = [&](std::uint64_t slot) {
+        if (std::binary_search(ghosts.begin(), ghosts.end(), slot)) return true;
+        if (!trimmed) return false;
+        return mesh.owns(slot) ? mesh.removed[slot - mesh.first_slot] != 0
+                               : removed_next_door.contains(slot);
+    };
     std::vector<dist::Bytes> out(static_cast<std::size_t>(comm.size()));
     for (std::uint64_t s = 0; s < mesh.bits.size(); ++s) {
         const Triangle& t = mesh.tris[s];
-        if (detail::is_ghost_triangle(t)) continue;
+        if (!mesh.kept(s)) continue;
         for (unsigned i = 0; i < 3; ++i) {
             const std::uint8_t bits = mesh.bits[s][i];
             if (bits == 0) continue;
             const std::int32_t a = number(t.v[i]);
             const std::int32_t c = number(t.v[(i + 1) % 3]);
             const std::uint64_t twin = mesh.at(mesh.first_slot + s).n[i] >> 2;
-            if (a < c || std::binary_search(ghosts.begin(), ghosts.end(), twin)) {
+            if (a < c || outside(twin)) {
                 dist::append_value(
                     out[0],
                     EdgeRecord{std::min(a, c), std::max(a, c),
@@ -88,7 +100,17 @@ std::uint64_t write_distributed_ply(dist::Comm& comm,
     const auto ghosts = dist::all_ghost_slots(comm, mesh);
     const std::uint64_t slots = static_cast<std::uint64_t>(
         comm.allreduce(static_cast<std::int64_t>(mesh.tris.size()), dist::Reduce::sum));
-    const std::uint64_t faces = slots - ghosts.size();
+    const std::uint64_t real = slots - ghosts.size();
+    // With a domain (dist/domain.hpp) the face numbers leave the removed triangles out.
+    const bool trimmed = !mesh.removed.empty();
+    const dist::FaceNumbers kept =
+        trimmed ? dist::kept_face_numbers(comm, mesh, ghosts) : dist::FaceNumbers{};
+    const std::uint64_t faces = trimmed ? kept.count : real;
+    const auto face_of = [&](std::uint64_t s) {
+        if (trimmed) return kept.face[s];
+        if (detail::is_ghost_triangle(mesh.tris[s])) return dist::FaceNumbers::none;
+        return dist::serial_face(mesh.first_slot + s, ghosts, real);
+    };
     const std::uint64_t vertices = merged.total_vertices;
     constexpr auto max_int = static_cast<std::uint64_t>(std::numeric_limits<std::int32_t>::max());
     if (vertices > max_int || faces > max_int) {
@@ -104,7 +126,7 @@ std::uint64_t write_distributed_ply(dist::Comm& comm,
         return static_cast<std::int32_t>(v);
     };
 
-    const std::vector<std::byte> edges = constrained_edges(comm, mesh, ghosts, number);
+    const std::vector<std::byte> edges = constrained_edges(comm, mesh, ghosts, number, trimmed);
     const auto edge_count = static_cast<std::uint64_t>(
         comm.allreduce(static_cast<std::int64_t>(edges.size() / 9), dist::Reduce::max));
 
@@ -133,31 +155,21 @@ std::uint64_t write_distributed_ply(dist::Comm& comm,
             dist::append_value(block, v.p.z);
         }
         file->write_at(header.size() + 24 * merged.first_vertex, block);
-        // Faces: runs of slots below R in place, the movers one by one into the holes.
-        const std::uint64_t real_end = faces;  // R
+        // Faces: runs of consecutive face numbers (slots below R in place, the movers one by one
+        // into the holes; with a domain, the removed ones left out).
         block.clear();
         std::uint64_t run_start = 0;
         const auto flush = [&] {
             if (!block.empty()) file->write_at(face_start + 13 * run_start, block);
             block.clear();
         };
-        std::vector<std::byte> one;
         for (std::uint64_t s = 0; s < mesh.tris.size(); ++s) {
-            const Triangle& t = mesh.tris[s];
-            const std::uint64_t slot = mesh.first_slot + s;
-            if (detail::is_ghost_triangle(t)) {
-                flush();
-                continue;
-            }
-            std::vector<std::byte>& out = slot < real_end ? block : one;
-            if (slot < real_end && block.empty()) run_start = slot;
-            out.push_back(std::byte{3});
-            for (const std::uint32_t v : t.v) dist::append_value(out, number(v));
-            if (slot >= real_end) {
-                flush();
-                file->write_at(face_start + 13 * dist::serial_face(slot, ghosts, real_end), one);
-                one.clear();
-            }
+            const std::uint64_t face = face_of(s);
+            if (face == dist::FaceNumbers::none) continue;
+            if (!block.empty() && face != run_start + block.size() / 13) flush();
+            if (block.empty()) run_start = face;
+            block.push_back(std::byte{3});
+            for (const std::uint32_t v : mesh.tris[s].v) dist::append_value(block, number(v));
         }
         flush();
         if (comm.rank() == 0 && !edges.empty()) file->write_at(face_start + 13 * faces, edges);

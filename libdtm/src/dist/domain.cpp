@@ -1,0 +1,201 @@
+// SPDX-License-Identifier: MIT
+//
+// The domain as a distributed fixpoint (R-B3). Serially (algo/detail/tin_build_domain.cpp) a
+// 0-1 breadth-first search from the hull gives every triangle the least number of boundary or
+// hole edges to cross from the outside; odd depths are kept. Least depths are the unique
+// fixpoint of d(t) = min(seed(t), min over neighbours n of d(n) + w(t, n)), whatever the order
+// of relaxations: each rank relaxes its own triangles with a bucket queue, sends the labels that
+// cross to other ranks' triangles, and the rounds stop when an allreduce counts no improvement.
+#include "dist/domain.hpp"
+
+#include <algorithm>
+#include <vector>
+
+#include "algo/detail/ghost_mesh.hpp"
+#include "dist/mesh_vertices.hpp"
+
+namespace dtm::dist {
+namespace {
+
+constexpr std::uint8_t ring_bits = detail::constraint_boundary | detail::constraint_hole;
+constexpr std::uint32_t unreached = 0xffffffffu;
+
+struct Label {
+    std::uint64_t slot;
+    std::uint32_t depth;
+    std::uint32_t pad = 0;
+};
+
+/// Which rank holds a slot: ranks hold ascending contiguous ranges.
+class SlotOwners {
+public:
+    SlotOwners(Comm& comm, const LocalMesh& mesh) {
+        const std::uint64_t end = mesh.first_slot + mesh.tris.size();
+        std::uint64_t running = 0;
+        for (const std::uint64_t e : concatenated<std::uint64_t>(
+                 comm.allgatherv(to_bytes(std::span<const std::uint64_t>(&end, 1))))) {
+            running = std::max(running, e);
+            ends_.push_back(running);
+        }
+    }
+    [[nodiscard]] std::size_t of(std::uint64_t slot) const {
+        return static_cast<std::size_t>(std::upper_bound(ends_.begin(), ends_.end(), slot) -
+                                        ends_.begin());
+    }
+
+private:
+    std::vector<std::uint64_t> ends_;
+};
+
+}  // namespace
+
+DomainStats apply_distributed_domain(Comm& comm,
+                                     DistributedMesh& distributed,
+                                     bool has_boundary,
+                                     const Progress& progress) {
+    LocalMesh& mesh = distributed.mesh;
+    DomainStats stats;
+    std::int64_t rings = 0;
+    for (const auto& b : mesh.bits) rings |= ((b[0] | b[1] | b[2]) & ring_bits) != 0 ? 1 : 0;
+    if (!has_boundary && comm.allreduce(rings, Reduce::max) == 0) return stats;
+    comm.set_phase("domain");
+    const auto ghosts = all_ghost_slots(comm, mesh);
+    const SlotOwners owners(comm, mesh);
+    const std::size_t n = mesh.tris.size();
+    std::vector<std::uint32_t> depth(n, unreached);
+    std::vector<std::vector<std::uint32_t>> buckets;
+    const auto push = [&](std::uint64_t s, std::uint32_t d) {
+        if (d >= depth[s]) return false;
+        depth[s] = d;
+        if (buckets.size() <= d) buckets.resize(d + 1);
+        buckets[d].push_back(static_cast<std::uint32_t>(s));
+        return true;
+    };
+    const auto weight = [&](std::uint64_t s, unsigned i) -> std::uint32_t {
+        return !mesh.bits.empty() && (mesh.bits[s][i] & ring_bits) != 0 ? 1 : 0;
+    };
+    const std::uint32_t outside = has_boundary ? 0 : 1;
+    for (std::uint64_t s = 0; s < n; ++s) {
+        if (detail::is_ghost_triangle(mesh.tris[s])) continue;
+        const GlobalTriangle g = mesh.at(mesh.first_slot + s);
+        for (unsigned i = 0; i < 3; ++i) {
+            if (std::binary_search(ghosts.begin(), ghosts.end(), g.n[i] >> 2))
+                push(s, outside + weight(s, i));
+        }
+    }
+    for (;;) {
+        ++stats.rounds;
+        std::vector<Bytes> out(static_cast<std::size_t>(comm.size()));
+        for (std::uint32_t d = 0; d < buckets.size(); ++d) {
+            for (std::size_t k = 0; k < buckets[d].size(); ++k) {  // the bucket may grow
+                const std::uint32_t s = buckets[d][k];
+                if (depth[s] != d) continue;
+                const GlobalTriangle g = mesh.at(mesh.first_slot + s);
+                for (unsigned i = 0; i < 3; ++i) {
+                    const std::uint64_t twin = g.n[i] >> 2;
+                    if (std::binary_search(ghosts.begin(), ghosts.end(), twin)) continue;
+                    const std::uint32_t next = d + weight(s, i);
+                    if (mesh.owns(twin)) {
+                        push(twin - mesh.first_slot, next);
+                    } else {
+                        append_value(out[owners.of(twin)], Label{twin, next});
+                    }
+                }
+            }
+            buckets[d].clear();
+        }
+        std::int64_t improved = 0;
+        for (const Label& l : concatenated<Label>(comm.alltoallv(std::move(out)))) {
+            improved += push(l.slot - mesh.first_slot, l.depth) ? 1 : 0;
+        }
+        check_stop_everywhere(comm, progress);
+        if (comm.allreduce(improved, Reduce::sum) == 0) break;
+    }
+    mesh.removed.assign(n, 0);
+    std::int64_t removed = 0;
+    for (std::uint64_t s = 0; s < n; ++s) {
+        if (detail::is_ghost_triangle(mesh.tris[s]) || depth[s] % 2 == 1) continue;
+        mesh.removed[s] = 1;
+        ++removed;
+    }
+    stats.removed = static_cast<std::uint64_t>(comm.allreduce(removed, Reduce::sum));
+    return stats;
+}
+
+std::unordered_set<std::uint64_t> foreign_removed(Comm& comm, const LocalMesh& mesh) {
+    const SlotOwners owners(comm, mesh);
+    std::vector<Bytes> out(static_cast<std::size_t>(comm.size()));
+    for (std::uint64_t s = 0; s < mesh.removed.size(); ++s) {
+        if (mesh.removed[s] == 0) continue;
+        const GlobalTriangle g = mesh.at(mesh.first_slot + s);
+        for (const std::uint64_t h : g.n) {
+            if (h != global_ghost && !mesh.owns(h >> 2)) {
+                append_value(out[owners.of(h >> 2)], mesh.first_slot + s);
+            }
+        }
+    }
+    std::unordered_set<std::uint64_t> set;
+    for (const std::uint64_t s : concatenated<std::uint64_t>(comm.alltoallv(std::move(out)))) {
+        set.insert(s);
+    }
+    return set;
+}
+
+FaceNumbers kept_face_numbers(Comm& comm,
+                              const LocalMesh& mesh,
+                              const std::vector<std::uint64_t>& ghosts) {
+    const SlotOwners owners(comm, mesh);
+    const auto slots = static_cast<std::uint64_t>(
+        comm.allreduce(static_cast<std::int64_t>(mesh.tris.size()), Reduce::sum));
+    const std::uint64_t real = slots - ghosts.size();
+    const std::size_t n = mesh.tris.size();
+    FaceNumbers out;
+    out.face.assign(n, FaceNumbers::none);
+    // Removal flags by serial index, at the rank whose slot range holds the index.
+    std::vector<std::uint8_t> removed_at(n, 0);
+    std::vector<Bytes> movers(static_cast<std::size_t>(comm.size()));
+    std::vector<std::uint64_t> mover_slots;
+    for (std::uint64_t s = 0; s < n; ++s) {
+        if (detail::is_ghost_triangle(mesh.tris[s])) continue;
+        const std::uint64_t slot = mesh.first_slot + s;
+        const std::uint64_t k = serial_face(slot, ghosts, real);
+        const std::uint8_t removed = mesh.removed.empty() ? 0 : mesh.removed[s];
+        if (slot < real) {
+            removed_at[s] = removed;
+            out.face[s] = k;
+        } else {
+            append_value(movers[owners.of(k)], Label{k, removed});
+            mover_slots.push_back(s);
+        }
+    }
+    const std::vector<Bytes> arrived = comm.alltoallv(std::move(movers));
+    for (const Bytes& b : arrived) {
+        for (const Label& l : from_bytes<Label>(b))
+            removed_at[l.slot - mesh.first_slot] = l.depth != 0;
+    }
+    std::vector<std::uint64_t> before(n + 1, 0);  // removed indices of this range before each
+    for (std::size_t j = 0; j < n; ++j) before[j + 1] = before[j] + removed_at[j];
+    const auto base =
+        static_cast<std::uint64_t>(comm.exscan_sum(static_cast<std::int64_t>(before[n])));
+    const auto removed_total = static_cast<std::uint64_t>(
+        comm.allreduce(static_cast<std::int64_t>(before[n]), Reduce::sum));
+    out.count = real - removed_total;
+    const auto final_of = [&](std::uint64_t k) { return k - base - before[k - mesh.first_slot]; };
+    for (std::uint64_t s = 0; s < n; ++s) {
+        if (out.face[s] == FaceNumbers::none) continue;
+        out.face[s] = removed_at[s] != 0 ? FaceNumbers::none : final_of(out.face[s]);
+    }
+    std::vector<Bytes> answers(arrived.size());
+    for (std::size_t r = 0; r < arrived.size(); ++r) {
+        for (const Label& l : from_bytes<Label>(arrived[r])) {
+            append_value(answers[r], l.depth != 0 ? FaceNumbers::none : final_of(l.slot));
+        }
+    }
+    // Answers come back in source order, each in the order asked: mover_slots' order, since
+    // the movers were asked in slot order and owners hold ascending ranges.
+    const auto finals = concatenated<std::uint64_t>(comm.alltoallv(std::move(answers)));
+    for (std::size_t m = 0; m < mover_slots.size(); ++m) out.face[mover_slots[m]] = finals[m];
+    return out;
+}
+
+}  // namespace dtm::dist
