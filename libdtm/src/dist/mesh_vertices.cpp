@@ -125,8 +125,7 @@ SurfaceMesh surface_mesh(Comm& comm, const MergedShare& merged, const Distribute
             corners.emplace_back(number(t.v[i]), 3 * out.faces.size() + i);
             // Kernel half-edge i runs v[i] -> v[i + 1], opposite corner i + 2
             // (tin_build_triangles).
-            if (g.n[i] == global_ghost || outside(g.n[i] >> 2))
-                f.border |= 1U << ((i + 2) % 3);
+            if (g.n[i] == global_ghost || outside(g.n[i] >> 2)) f.border |= 1U << ((i + 2) % 3);
         }
         out.faces.push_back(f);
     }
