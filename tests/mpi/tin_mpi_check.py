@@ -77,6 +77,14 @@ with tempfile.TemporaryDirectory() as tmp:
         check(a["removed_triangles"] > 1000 and a["removed_triangles"] == b["removed_triangles"],
               f"boundary and hole: removed {a['removed_triangles']} serial, {b['removed_triangles']} distributed")
 
+    serial = run(["tin", points, "-o", os.path.join(tmp, "serial-m.ply"), "--max-edge", "25", "-q"], False)
+    dist = run(["tin", points, "-o", os.path.join(tmp, "dist-m.ply"), "--max-edge", "25", "-q"], True)
+    check(serial.returncode == 0 and dist.returncode == 0,
+          f"--max-edge: exit {serial.returncode} / {dist.returncode}: {serial.stderr} {dist.stderr}")
+    if serial.returncode == 0 and dist.returncode == 0:
+        with open(os.path.join(tmp, "serial-m.ply"), "rb") as a, open(os.path.join(tmp, "dist-m.ply"), "rb") as b:
+            check(a.read() == b.read(), "--max-edge: the PLY differs from the serial one")
+
     stats = run(["tin", points, "-o", os.path.join(tmp, "stats.ply"), "--stats"], True)
     check(stats.returncode == 0, f"--stats: {stats.stderr}")
     if stats.returncode == 0:

@@ -32,9 +32,8 @@ void check_distributed_input(const char* command,
     }
     if (!in.crs.target_crs.empty()) refuse("`target_crs`");
     if (in.dem.clip_radius > 0.0 || in.dem.max_error > 0.0) refuse("DEM thinning");
-    if (triangulate.snap_distance > 0.0 || triangulate.max_edge > 0.0 ||
-        triangulate.optimize != Criterion::delaunay) {
-        refuse("`snap`, `max_edge` or `optimize`");
+    if (triangulate.snap_distance > 0.0 || triangulate.optimize != Criterion::delaunay) {
+        refuse("`snap` or `optimize`");
     }
 }
 
@@ -50,6 +49,7 @@ products::DistributedSource distributed_source(const InputArgs& in,
     for (const std::string& f : in.boundaries) source.lines.push_back({f, io::InputRole::boundary});
     for (const std::string& f : in.holes) source.lines.push_back({f, io::InputRole::holes});
     source.z_tolerance = triangulate.z_tolerance;
+    source.max_edge = triangulate.max_edge;
     return source;
 }
 

@@ -9,10 +9,12 @@
 #include "dist/domain.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <vector>
 
 #include "algo/detail/ghost_mesh.hpp"
 #include "dist/mesh_vertices.hpp"
+#include "dtm/geom/predicates.hpp"
 
 namespace dtm::dist {
 namespace {
@@ -139,6 +141,152 @@ std::unordered_set<std::uint64_t> foreign_removed(Comm& comm, const LocalMesh& m
         set.insert(s);
     }
     return set;
+}
+
+std::uint64_t remove_hole_seeds(Comm& comm,
+                                DistributedMesh& distributed,
+                                const std::vector<Point2>& seeds,
+                                const Progress& progress) {
+    LocalMesh& mesh = distributed.mesh;
+    if (seeds.empty()) return 0;
+    comm.set_phase("domain");
+    const std::size_t n = mesh.tris.size();
+    if (mesh.removed.empty()) mesh.removed.assign(n, 0);
+    const auto ghosts = all_ghost_slots(comm, mesh);
+    const SlotOwners owners(comm, mesh);
+    const auto slots =
+        static_cast<std::uint64_t>(comm.allreduce(static_cast<std::int64_t>(n), Reduce::sum));
+    const std::uint64_t real = slots - ghosts.size();
+    // Per seed, the smallest serial index of an own triangle holding it.
+    constexpr auto nowhere = std::numeric_limits<std::int64_t>::max();
+    std::vector<std::int64_t> first(seeds.size(), nowhere);
+    std::vector<std::uint64_t> mine(seeds.size(), 0);
+    for (std::uint64_t s = 0; s < n; ++s) {
+        if (detail::is_ghost_triangle(mesh.tris[s])) continue;
+        const GlobalTriangle g = mesh.at(mesh.first_slot + s);
+        const XY a = mesh.point(g.v[0]), b = mesh.point(g.v[1]), c = mesh.point(g.v[2]);
+        const double x0 = std::min({a.x, b.x, c.x}), x1 = std::max({a.x, b.x, c.x});
+        const double y0 = std::min({a.y, b.y, c.y}), y1 = std::max({a.y, b.y, c.y});
+        for (std::size_t k = 0; k < seeds.size(); ++k) {
+            const Point2 p = seeds[k];
+            if (p.x < x0 || p.x > x1 || p.y < y0 || p.y > y1) continue;
+            if (geom::orient2d(a.x, a.y, b.x, b.y, p.x, p.y) < 0 ||
+                geom::orient2d(b.x, b.y, c.x, c.y, p.x, p.y) < 0 ||
+                geom::orient2d(c.x, c.y, a.x, a.y, p.x, p.y) < 0) {
+                continue;
+            }
+            const auto face =
+                static_cast<std::int64_t>(serial_face(mesh.first_slot + s, ghosts, real));
+            if (face < first[k]) {
+                first[k] = face;
+                mine[k] = s;
+            }
+        }
+    }
+    std::vector<std::int64_t> least = first;
+    comm.allreduce(least, Reduce::min);
+    std::vector<std::uint64_t> stack;
+    for (std::size_t k = 0; k < seeds.size(); ++k) {
+        if (first[k] != nowhere && first[k] == least[k] && mesh.removed[mine[k]] == 0) {
+            stack.push_back(mine[k]);
+        }
+    }
+    std::int64_t removed = 0;
+    for (;;) {
+        std::vector<Bytes> out(static_cast<std::size_t>(comm.size()));
+        while (!stack.empty()) {
+            const std::uint64_t s = stack.back();
+            stack.pop_back();
+            if (!mesh.kept(s)) continue;
+            mesh.removed[s] = 1;
+            ++removed;
+            const GlobalTriangle g = mesh.at(mesh.first_slot + s);
+            for (unsigned i = 0; i < 3; ++i) {
+                const std::uint64_t twin = g.n[i] >> 2;
+                if ((!mesh.bits.empty() && mesh.bits[s][i] != 0) ||
+                    std::binary_search(ghosts.begin(), ghosts.end(), twin)) {
+                    continue;
+                }
+                if (mesh.owns(twin)) {
+                    stack.push_back(twin - mesh.first_slot);
+                } else {
+                    append_value(out[owners.of(twin)], twin);
+                }
+            }
+        }
+        const auto notices = concatenated<std::uint64_t>(comm.alltoallv(std::move(out)));
+        for (const std::uint64_t slot : notices) stack.push_back(slot - mesh.first_slot);
+        check_stop_everywhere(comm, progress);
+        if (comm.allreduce(static_cast<std::int64_t>(notices.size()), Reduce::sum) == 0) break;
+    }
+    return static_cast<std::uint64_t>(comm.allreduce(removed, Reduce::sum));
+}
+
+std::uint64_t trim_distributed_long_edges(Comm& comm,
+                                          DistributedMesh& distributed,
+                                          double max_edge,
+                                          const Progress& progress) {
+    LocalMesh& mesh = distributed.mesh;
+    comm.set_phase("domain");
+    const std::size_t n = mesh.tris.size();
+    if (mesh.removed.empty()) mesh.removed.assign(n, 0);
+    const auto ghosts = all_ghost_slots(comm, mesh);
+    const SlotOwners owners(comm, mesh);
+    std::unordered_set<std::uint64_t> gone = foreign_removed(comm, mesh);
+    const auto outside = [&](std::uint64_t slot) {
+        if (std::binary_search(ghosts.begin(), ghosts.end(), slot)) return true;
+        return mesh.owns(slot) ? mesh.removed[slot - mesh.first_slot] != 0 : gone.contains(slot);
+    };
+    const double limit2 = max_edge * max_edge;
+    const auto removable = [&](std::uint64_t s) {
+        const GlobalTriangle g = mesh.at(mesh.first_slot + s);
+        for (unsigned i = 0; i < 3; ++i) {
+            if (!outside(g.n[i] >> 2) || (!mesh.bits.empty() && mesh.bits[s][i] != 0)) continue;
+            const XY a = mesh.point(g.v[i]);
+            const XY b = mesh.point(g.v[(i + 1) % 3]);
+            const double dx = a.x - b.x;
+            const double dy = a.y - b.y;
+            if (dx * dx + dy * dy > limit2) return true;
+        }
+        return false;
+    };
+    std::vector<std::uint64_t> stack;
+    for (std::uint64_t s = 0; s < n; ++s) {
+        if (!mesh.kept(s)) continue;
+        const GlobalTriangle g = mesh.at(mesh.first_slot + s);
+        if (outside(g.n[0] >> 2) || outside(g.n[1] >> 2) || outside(g.n[2] >> 2))
+            stack.push_back(s);
+    }
+    std::int64_t removed = 0;
+    for (;;) {
+        std::vector<Bytes> out(static_cast<std::size_t>(comm.size()));
+        while (!stack.empty()) {
+            const std::uint64_t s = stack.back();
+            stack.pop_back();
+            if (!mesh.kept(s) || !removable(s)) continue;
+            mesh.removed[s] = 1;
+            ++removed;
+            const GlobalTriangle g = mesh.at(mesh.first_slot + s);
+            for (const std::uint64_t h : g.n) {
+                const std::uint64_t twin = h >> 2;
+                if (std::binary_search(ghosts.begin(), ghosts.end(), twin)) continue;
+                if (mesh.owns(twin)) {
+                    stack.push_back(twin - mesh.first_slot);
+                } else {
+                    append_value(out[owners.of(twin)], Label{twin, 0});
+                    append_value(out[owners.of(twin)], Label{mesh.first_slot + s, 0});
+                }
+            }
+        }
+        const auto notices = concatenated<Label>(comm.alltoallv(std::move(out)));
+        for (std::size_t k = 0; k + 1 < notices.size(); k += 2) {  // (my slot, removed neighbour)
+            gone.insert(notices[k + 1].slot);
+            stack.push_back(notices[k].slot - mesh.first_slot);
+        }
+        check_stop_everywhere(comm, progress);
+        if (comm.allreduce(static_cast<std::int64_t>(notices.size()), Reduce::sum) == 0) break;
+    }
+    return static_cast<std::uint64_t>(comm.allreduce(removed, Reduce::sum));
 }
 
 FaceNumbers kept_face_numbers(Comm& comm,

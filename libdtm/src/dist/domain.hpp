@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "dist/kernel.hpp"
+#include "dtm/core/point.hpp"
 #include "dtm/core/progress.hpp"
 #include "dtm/dist/comm.hpp"
 
@@ -30,6 +31,26 @@ DomainStats apply_distributed_domain(Comm& comm,
                                      DistributedMesh& mesh,
                                      bool has_boundary,
                                      const Progress& progress);
+
+/// Collective, after apply_distributed_domain: the hole seeds as the serial apply_domain takes
+/// them (Shewchuk's Triangle): the first triangle of the serial TIN order that holds the seed
+/// (exact orient2d; an integer min over the ranks), if still kept, and everything reachable
+/// from it without crossing a constrained edge is removed; the flood crosses ranks by notices.
+/// Returns the triangles it removed on all ranks.
+std::uint64_t remove_hole_seeds(Comm& comm,
+                                DistributedMesh& mesh,
+                                const std::vector<Point2>& seeds,
+                                const Progress& progress);
+
+/// Collective, after apply_distributed_domain: peels border triangles whose border edge is longer
+/// than @p max_edge and not constrained, as the serial trim_long_edges does, from the outside
+/// inwards: the result is the least fixpoint of that rule (removing a triangle only makes
+/// more edges border), reached by local peeling and notices to the ranks across. Returns the
+/// triangles it removed on all ranks.
+std::uint64_t trim_distributed_long_edges(Comm& comm,
+                                          DistributedMesh& mesh,
+                                          double max_edge,
+                                          const Progress& progress);
 
 /// The TIN's face numbers of a rank's slots: the serial TIN's order (dist::serial_face) with the
 /// removed triangles left out, as apply_domain's compaction leaves them out.

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // products::distributed_tin with hard breaklines, a boundary cut by every seam and a hole
-// straddling seams on 1 to 64 in-process ranks (R-B2, R-B3, R-P1): the
+// straddling seams, a hole seed inside a closed breakline, and `max_edge`, on 1 to 64 in-process
+// ranks (R-B2, R-B3, R-P1): the
 // PLY bytes, with the constrained-edge element, of the serial load_inputs -> triangulate ->
 // write_tin_ply path. Lines along the first seam, across every rank, a diagonal longer than any
 // rank's region, lines crossing each other (split first), a line through survey points (its
@@ -122,7 +123,7 @@ std::string ring_csv(double cx, double cy, double r, double z) {
     return text;
 }
 
-TEST(DistributedTin, BreaklinesBoundaryAndHolesGiveTheSerialPlyBytesOnAnyRankCount) {
+TEST(DistributedTin, BreaklinesBoundaryHolesAndSeedsGiveTheSerialPlyBytesOnAnyRankCount) {
     for (const Case& c : cases()) {
         const dtm::test::ScratchDir dir;
         dtm::test::write_file(dir / "points.csv", points_csv(c));
@@ -133,10 +134,20 @@ TEST(DistributedTin, BreaklinesBoundaryAndHolesGiveTheSerialPlyBytesOnAnyRankCou
                               ring_csv(c.x0 + mid, c.y0 + mid, 0.44 * c.size, 270.0));
         dtm::test::write_file(dir / "hole.csv",
                               ring_csv(c.x0 + mid, c.y0 + 0.55 * c.size, 0.12 * c.size, 265.0));
+        // A closed breakline around a pond whose inside a hole seed removes; a second seed in
+        // the hole, already removed.
+        dtm::test::write_file(dir / "pond.csv", ring_csv(c.x0 + 0.27 * c.size, c.y0 + 0.72 * c.size,
+                                                         0.07 * c.size, 268.0));
+        char seeds[200];
+        std::snprintf(seeds, sizeof seeds, "x,y,z\n%.17g,%.17g,0\n%.17g,%.17g,0\n",
+                      c.x0 + 0.27 * c.size, c.y0 + 0.72 * c.size, c.x0 + mid, c.y0 + 0.55 * c.size);
+        dtm::test::write_file(dir / "seeds.csv", seeds);
         const std::vector<dtm::io::InputFile> lines{
             {dir / "lines.csv", dtm::io::InputRole::breaklines},
+            {dir / "pond.csv", dtm::io::InputRole::breaklines},
             {dir / "boundary.csv", dtm::io::InputRole::boundary},
-            {dir / "hole.csv", dtm::io::InputRole::holes}};
+            {dir / "hole.csv", dtm::io::InputRole::holes},
+            {dir / "seeds.csv", dtm::io::InputRole::holes}};
         dtm::io::LoadOptions load;
         load.files = {{dir / "points.csv", dtm::io::InputRole::points}};
         load.files.insert(load.files.end(), lines.begin(), lines.end());
@@ -157,6 +168,39 @@ TEST(DistributedTin, BreaklinesBoundaryAndHolesGiveTheSerialPlyBytesOnAnyRankCou
                 ranks,
                 [&](dtm::dist::Comm& comm) { dtm::products::distributed_tin(comm, options, {}); },
                 {jitter, 3});
+            EXPECT_TRUE(dtm::test::read_file(options.output) == expected)
+                << c.name << " on " << ranks << " ranks";
+        }
+    }
+}
+
+TEST(DistributedTin, MaxEdgePeelsTheSerialBorderOnAnyRankCount) {
+    for (const Case& c : cases()) {
+        const dtm::test::ScratchDir dir;
+        dtm::test::write_file(dir / "points.csv", points_csv(c));
+        dtm::test::write_file(dir / "lines.csv", lines_csv(c));
+        const double max_edge = c.size * 0.015;
+        dtm::io::LoadOptions load;
+        load.files = {{dir / "points.csv", dtm::io::InputRole::points},
+                      {dir / "lines.csv", dtm::io::InputRole::breaklines}};
+        dtm::TriangulateOptions triangulate;
+        triangulate.max_edge = max_edge;
+        const dtm::TriangulateResult serial =
+            dtm::triangulate(dtm::io::load_inputs(load).terrain, triangulate);
+        if (c.name != "lattice") {
+            EXPECT_GT(serial.stats.removed_triangles, 20U) << c.name;
+        }
+        dtm::io::write_tin_ply(serial.tin, dir / "serial.ply", {});
+        const std::string expected = dtm::test::read_file(dir / "serial.ply");
+        for (const int ranks : {1, 2, 3, 7, 16, 64}) {
+            dtm::products::DistributedTinOptions options;
+            options.source.input = {dir / "points.csv", dtm::io::InputRole::points};
+            options.source.lines = {{dir / "lines.csv", dtm::io::InputRole::breaklines}};
+            options.source.max_edge = max_edge;
+            options.output = dir / ("dist-" + std::to_string(ranks) + ".ply");
+            dtm::dist::run_in_process(ranks, [&](dtm::dist::Comm& comm) {
+                dtm::products::distributed_tin(comm, options, {});
+            });
             EXPECT_TRUE(dtm::test::read_file(options.output) == expected)
                 << c.name << " on " << ranks << " ranks";
         }

@@ -27,6 +27,7 @@ struct DistributedSource {
     /// whole by every rank.
     std::vector<io::InputFile> lines;
     double z_tolerance = TriangulateOptions{}.z_tolerance;  ///< at breakline crossings
+    double max_edge = 0.0;  ///< border triangles with longer unconstrained edges peeled; 0: none
 };
 
 struct DistributedTinOptions {

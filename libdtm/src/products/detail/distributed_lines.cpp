@@ -52,10 +52,10 @@ DistributedLines load_distributed_lines(const DistributedSource& source,
     load.crs = {source.default_crs, crs_wkt};
     const io::LoadedInputs loaded = io::load_inputs(load);
     const TerrainInput& t = loaded.terrain;
-    if (!t.points.empty() || !t.soft_breaklines.empty() || !t.hole_seeds.empty()) {
+    if (!t.points.empty() || !t.soft_breaklines.empty()) {
         throw UsageError(
             "a distributed run takes lines only from breakline, boundary and hole files (no "
-            "points, soft lines or hole seeds in them yet)");
+            "points or soft lines in them yet)");
     }
     for (const auto* kind : {&t.breaklines, &t.boundaries, &t.holes}) {
         for (const Polyline& line : *kind) {
@@ -71,6 +71,7 @@ DistributedLines load_distributed_lines(const DistributedSource& source,
     }
     ::dtm::detail::add_lines(t, lines.combined);
     lines.has_boundary = !t.boundaries.empty();
+    lines.hole_seeds = t.hole_seeds;
     return lines;
 }
 

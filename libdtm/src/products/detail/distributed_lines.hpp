@@ -19,13 +19,14 @@ namespace dtm::products::detail {
 struct DistributedLines {
     ::dtm::detail::CombinedInput combined;
     bool has_boundary = false;
+    std::vector<Point2> hole_seeds;  ///< points of the hole files
 };
 
 /// Every rank: the breakline, boundary and hole files read by the serial readers into @p crs_wkt
 /// (the points' CRS; empty: as they come), their vertices and segments numbered from 0 in the
 /// serial order. @throws InputError (the readers' messages); UsageError for what a distributed
-/// run does not take yet (2-D lines, which take heights from the surface; points, soft lines or
-/// hole seeds in those files)
+/// run does not take yet (2-D lines, which take heights from the surface; points or soft lines in
+/// those files)
 [[nodiscard]] DistributedLines load_distributed_lines(const DistributedSource& source,
                                                       const std::string& crs_wkt);
 

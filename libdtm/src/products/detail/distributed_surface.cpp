@@ -107,6 +107,11 @@ DistributedSurface distributed_surface(dist::Comm& comm,
     }
     out.removed_triangles =
         dist::apply_distributed_domain(comm, out.kernel, loaded.has_boundary, progress).removed;
+    out.removed_triangles += dist::remove_hole_seeds(comm, out.kernel, loaded.hole_seeds, progress);
+    if (source.max_edge > 0.0) {
+        out.removed_triangles +=
+            dist::trim_distributed_long_edges(comm, out.kernel, source.max_edge, progress);
+    }
     if (out.removed_triangles == out.triangles) {
         throw InputError("no triangle is left inside the boundary and outside the holes");
     }
