@@ -49,6 +49,54 @@ private:
     std::vector<std::uint64_t> ends_;
 };
 
+/// Removes, from @p stack outwards, every triangle @p removable accepts, going on across the
+/// edges @p spreads allows: to own neighbours at once, to other ranks' ones by notices (the
+/// neighbour's slot and the removed slot, which @p told hears of), until no rank sends any.
+/// Returns the triangles removed here.
+template <class Removable, class Spreads, class Told>
+std::int64_t remove_spreading(Comm& comm,
+                              LocalMesh& mesh,
+                              const std::vector<std::uint64_t>& ghosts,
+                              const SlotOwners& owners,
+                              std::vector<std::uint64_t> stack,
+                              const Removable& removable,
+                              const Spreads& spreads,
+                              const Told& told,
+                              const Progress& progress) {
+    std::int64_t removed = 0;
+    for (;;) {
+        std::vector<Bytes> out(static_cast<std::size_t>(comm.size()));
+        while (!stack.empty()) {
+            const std::uint64_t s = stack.back();
+            stack.pop_back();
+            if (!removable(s)) continue;
+            mesh.removed[s] = 1;
+            ++removed;
+            const GlobalTriangle g = mesh.at(mesh.first_slot + s);
+            for (unsigned i = 0; i < 3; ++i) {
+                const std::uint64_t twin = g.n[i] >> 2;
+                if (!spreads(s, i) || std::binary_search(ghosts.begin(), ghosts.end(), twin)) {
+                    continue;
+                }
+                if (mesh.owns(twin)) {
+                    stack.push_back(twin - mesh.first_slot);
+                } else {
+                    append_value(out[owners.of(twin)], Label{twin, 0});
+                    append_value(out[owners.of(twin)], Label{mesh.first_slot + s, 0});
+                }
+            }
+        }
+        const auto notices = concatenated<Label>(comm.alltoallv(std::move(out)));
+        for (std::size_t k = 0; k + 1 < notices.size(); k += 2) {  // (my slot, removed neighbour)
+            told(notices[k + 1].slot);
+            stack.push_back(notices[k].slot - mesh.first_slot);
+        }
+        check_stop_everywhere(comm, progress);
+        if (comm.allreduce(static_cast<std::int64_t>(notices.size()), Reduce::sum) == 0) break;
+    }
+    return removed;
+}
+
 }  // namespace
 
 DomainStats apply_distributed_domain(Comm& comm,
@@ -191,34 +239,10 @@ std::uint64_t remove_hole_seeds(Comm& comm,
             stack.push_back(mine[k]);
         }
     }
-    std::int64_t removed = 0;
-    for (;;) {
-        std::vector<Bytes> out(static_cast<std::size_t>(comm.size()));
-        while (!stack.empty()) {
-            const std::uint64_t s = stack.back();
-            stack.pop_back();
-            if (!mesh.kept(s)) continue;
-            mesh.removed[s] = 1;
-            ++removed;
-            const GlobalTriangle g = mesh.at(mesh.first_slot + s);
-            for (unsigned i = 0; i < 3; ++i) {
-                const std::uint64_t twin = g.n[i] >> 2;
-                if ((!mesh.bits.empty() && mesh.bits[s][i] != 0) ||
-                    std::binary_search(ghosts.begin(), ghosts.end(), twin)) {
-                    continue;
-                }
-                if (mesh.owns(twin)) {
-                    stack.push_back(twin - mesh.first_slot);
-                } else {
-                    append_value(out[owners.of(twin)], twin);
-                }
-            }
-        }
-        const auto notices = concatenated<std::uint64_t>(comm.alltoallv(std::move(out)));
-        for (const std::uint64_t slot : notices) stack.push_back(slot - mesh.first_slot);
-        check_stop_everywhere(comm, progress);
-        if (comm.allreduce(static_cast<std::int64_t>(notices.size()), Reduce::sum) == 0) break;
-    }
+    const std::int64_t removed = remove_spreading(
+        comm, mesh, ghosts, owners, std::move(stack), [&](std::uint64_t t) { return mesh.kept(t); },
+        [&](std::uint64_t t, unsigned i) { return mesh.bits.empty() || mesh.bits[t][i] == 0; },
+        [](std::uint64_t) {}, progress);
     return static_cast<std::uint64_t>(comm.allreduce(removed, Reduce::sum));
 }
 
@@ -257,35 +281,11 @@ std::uint64_t trim_distributed_long_edges(Comm& comm,
         if (outside(g.n[0] >> 2) || outside(g.n[1] >> 2) || outside(g.n[2] >> 2))
             stack.push_back(s);
     }
-    std::int64_t removed = 0;
-    for (;;) {
-        std::vector<Bytes> out(static_cast<std::size_t>(comm.size()));
-        while (!stack.empty()) {
-            const std::uint64_t s = stack.back();
-            stack.pop_back();
-            if (!mesh.kept(s) || !removable(s)) continue;
-            mesh.removed[s] = 1;
-            ++removed;
-            const GlobalTriangle g = mesh.at(mesh.first_slot + s);
-            for (const std::uint64_t h : g.n) {
-                const std::uint64_t twin = h >> 2;
-                if (std::binary_search(ghosts.begin(), ghosts.end(), twin)) continue;
-                if (mesh.owns(twin)) {
-                    stack.push_back(twin - mesh.first_slot);
-                } else {
-                    append_value(out[owners.of(twin)], Label{twin, 0});
-                    append_value(out[owners.of(twin)], Label{mesh.first_slot + s, 0});
-                }
-            }
-        }
-        const auto notices = concatenated<Label>(comm.alltoallv(std::move(out)));
-        for (std::size_t k = 0; k + 1 < notices.size(); k += 2) {  // (my slot, removed neighbour)
-            gone.insert(notices[k + 1].slot);
-            stack.push_back(notices[k].slot - mesh.first_slot);
-        }
-        check_stop_everywhere(comm, progress);
-        if (comm.allreduce(static_cast<std::int64_t>(notices.size()), Reduce::sum) == 0) break;
-    }
+    const std::int64_t removed = remove_spreading(
+        comm, mesh, ghosts, owners, std::move(stack),
+        [&](std::uint64_t t) { return mesh.kept(t) && removable(t); },
+        [](std::uint64_t, unsigned) { return true; },
+        [&](std::uint64_t from) { gone.insert(from); }, progress);
     return static_cast<std::uint64_t>(comm.allreduce(removed, Reduce::sum));
 }
 
