@@ -85,6 +85,22 @@ with tempfile.TemporaryDirectory() as tmp:
         with open(os.path.join(tmp, "serial-m.ply"), "rb") as a, open(os.path.join(tmp, "dist-m.ply"), "rb") as b:
             check(a.read() == b.read(), "--max-edge: the PLY differs from the serial one")
 
+    # The real river survey of ../shared/data (157 3-D breaklines, 16 hole seeds), when present.
+    river = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "shared", "data",
+                         "points-breaklines-pputils-hurdville")
+    if os.path.isdir(river):
+        real = [os.path.join(river, "nodes.csv"), "--breaklines", os.path.join(river, "lines3d.csv"),
+                "--holes", os.path.join(river, "holes.csv")]
+        serial = run(["tin"] + real + ["-o", os.path.join(tmp, "serial-r.ply"), "-q"], False)
+        dist = run(["tin"] + real + ["-o", os.path.join(tmp, "dist-r.ply"), "-q"], True)
+        check(serial.returncode == 0 and dist.returncode == 0,
+              f"river survey: exit {serial.returncode} / {dist.returncode}: {serial.stderr} {dist.stderr}")
+        if serial.returncode == 0 and dist.returncode == 0:
+            with open(os.path.join(tmp, "serial-r.ply"), "rb") as a, open(os.path.join(tmp, "dist-r.ply"), "rb") as b:
+                check(a.read() == b.read(), "river survey: the PLY differs from the serial one")
+    else:
+        print("river survey: ../shared/data absent, skipped")
+
     stats = run(["tin", points, "-o", os.path.join(tmp, "stats.ply"), "--stats"], True)
     check(stats.returncode == 0, f"--stats: {stats.stderr}")
     if stats.returncode == 0:
