@@ -109,6 +109,15 @@ with tempfile.TemporaryDirectory() as tmp:
         report = json.loads(lines[0])
         check(report.get("ranks") == ranks and report.get("points_in") == 20400, f"--stats: {report}")
 
+    bad_lines = os.path.join(tmp, "bad-lines.csv")  # a breakline file with a bad row
+    with open(bad_lines, "w") as out:
+        out.write("shapeid,x,y,z\n1,-751000,-1051000,250\n1,-750990,oops,251\n")
+    serial = run(["tin", points, "--breaklines", bad_lines, "-o", os.path.join(tmp, "x.ply"), "-q"], False)
+    dist = run(["tin", points, "--breaklines", bad_lines, "-o", os.path.join(tmp, "y.ply"), "-q"], True)
+    message = serial.stderr.strip().splitlines()[-1] if serial.stderr.strip() else ""
+    check(serial.returncode == 2 and dist.returncode == 2 and dist.stderr.count(message) == 1,
+          f"bad breakline row: exit {serial.returncode} / {dist.returncode}, {message!r} in {dist.stderr!r}")
+
     bad = os.path.join(tmp, "bad.csv")
     write_points(bad, 20000, bad_line=True)
     serial = run(["tin", bad, "-o", os.path.join(tmp, "x.ply"), "-q"], False)

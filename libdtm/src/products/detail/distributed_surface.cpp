@@ -7,6 +7,8 @@
 //   ranks (dist/kernel) -> the serial degeneracy checks.
 #include "products/detail/distributed_surface.hpp"
 
+#include <cstdint>
+
 #include "dist/constraints.hpp"
 #include "dist/domain.hpp"
 #include "dtm/core/error.hpp"
@@ -132,16 +134,39 @@ DistributedCounts counts_of(const dist::Comm& comm, const DistributedSurface& su
 }
 
 void on_ranks(dist::Comm& comm, bool here, const std::function<void()>& step) {
-    std::string error;
+    enum Kind : std::int64_t { none, error, usage, input, cancelled };
+    std::string message;
+    std::int64_t kind = none;
     if (here) {
         try {
             step();
+        } catch (const Cancelled& e) {
+            kind = cancelled;
+            message = e.what();
+        } catch (const InputError& e) {
+            kind = input;
+            message = e.what();
+        } catch (const UsageError& e) {
+            kind = usage;
+            message = e.what();
         } catch (const Error& e) {
-            error = e.what();
+            kind = error;
+            message = e.what();
         }
     }
-    if (comm.allreduce(error.empty() ? 0 : 1, dist::Reduce::max) != 0) {
-        dist::throw_first_error(comm, error);
+    if (comm.allreduce(kind != none ? 1 : 0, dist::Reduce::max) == 0) return;
+    // The lowest failing rank's message and kind (its exit code) on every rank.
+    const std::int64_t first =
+        comm.allreduce(kind != none ? comm.rank() : INT64_MAX, dist::Reduce::min);
+    const std::int64_t first_kind =
+        comm.allreduce(comm.rank() == first ? kind : none, dist::Reduce::max);
+    try {
+        dist::throw_first_error(comm, message);
+    } catch (const Error& e) {
+        if (first_kind == cancelled) throw Cancelled();
+        if (first_kind == input) throw InputError(e.what());
+        if (first_kind == usage) throw UsageError(e.what());
+        throw;
     }
 }
 

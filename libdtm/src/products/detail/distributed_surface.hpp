@@ -39,7 +39,8 @@ DistributedSurface distributed_surface(dist::Comm& comm,
                                           const DistributedSurface& surface);
 
 /// Collective: runs @p step where @p here is true; an Error on any rank is then thrown on every
-/// rank with the message of the lowest rank that failed (dist::throw_first_error).
+/// rank with the message and the kind (InputError, UsageError, Cancelled or Error: the exit
+/// code) of the lowest rank that failed.
 void on_ranks(dist::Comm& comm, bool here, const std::function<void()>& step);
 
 /// Progress on the ranks that show it; a stop request is agreed on by the steps' reductions.
