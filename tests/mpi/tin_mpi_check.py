@@ -134,7 +134,7 @@ with tempfile.TemporaryDirectory() as tmp:
         check(refused.returncode == 2 and refused.stderr.count("does not take") == 1,
               f"soft breaklines refused: exit {refused.returncode}: {refused.stderr!r}")
         other = run(["info", points], True)
-        check(other.returncode == 2 and "only `dtm tin`, `dtm grid` and `dtm contour`" in other.stderr,
+        check(other.returncode == 2 and "only `dtm tin`, `dtm grid`, `dtm contour` and `dtm build`" in other.stderr,
               f"dtm info under mpirun: {other.stderr!r}")
 
 finish("tin")

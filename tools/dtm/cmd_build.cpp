@@ -9,7 +9,10 @@
 
 #include "command.hpp"
 #include "contour_flats_args.hpp"
+#include "distributed.hpp"
+#include "dtm/core/error.hpp"
 #include "dtm/products/build.hpp"
+#include "dtm/products/distributed_build.hpp"
 #include "input_args.hpp"
 #include "interpolation_args.hpp"
 #include "option_names.hpp"
@@ -51,7 +54,54 @@ void print_summary(const products::BuildReport& r, const std::string& out_dir) {
     std::printf("dtm build: products and report.json in %s\n", out_dir.c_str());
 }
 
+/// The main job on the ranks of an MPI job: what it covers (docs/distributed.md), or a refusal.
+int run_build_distributed(BuildArgs& args, dist::Comm& comm) {
+    check_distributed_input("build", args.input, args.build.triangulate);
+    const auto refuse = [](const std::string& what) {
+        throw UsageError("build: a distributed run (mpirun) does not take " + what + " yet");
+    };
+    if (!args.base.inputs.empty()) refuse("`base` (volumes)");
+    if (args.build.map_scale > 0.0) refuse("`map_scale` (it makes no map.pdf)");
+    if (args.build.interpolation != Interpolation::linear) {
+        refuse("`interpolation` other than linear");
+    }
+    if (!args.input.read.z_field.empty()) refuse("contour lines (`z_field`)");
+    products::DistributedBuildOptions options{
+        .source = distributed_source(args.input, args.build.triangulate),
+        .out_dir = args.out_dir,
+        .cell = args.build.cell,
+        .interval = args.build.interval,
+        .index_every = args.build.index_every,
+        .wording = cli_text};
+    const products::BuildReport report = products::distributed_build(
+        comm, options, prints() ? terminal_progress("build", args.quiet) : Progress{});
+    if (!prints()) return 0;
+    if (!args.quiet) {
+        const products::DistributedRun& run = *report.distributed;
+        std::printf(
+            "dtm build: %d ranks; %llu points and %llu line vertices read, %llu merged "
+            "duplicates, %zu bad lines skipped\n",
+            run.ranks, static_cast<unsigned long long>(run.survey_points),
+            static_cast<unsigned long long>(run.line_vertices),
+            static_cast<unsigned long long>(run.merged), report.skipped_lines);
+        std::printf(
+            "dtm build: TIN %zu vertices, %zu triangles, %zu constrained edges; DEM %zu x %zu "
+            "cells of %g (dem.vrt); %zu contour lines every %g (contours.vrt)\n",
+            report.surface.vertex_count, report.surface.triangle_count,
+            report.surface.constraint_count, report.dem.cols, report.dem.rows, report.dem.cell,
+            report.contour_lines, report.contour_interval);
+        std::printf("dtm build: products and report.json in %s\n", args.out_dir.c_str());
+    }
+    if (report.crs_wkt.empty()) {
+        std::fprintf(stderr,
+                     "dtm build: warning: the inputs carry no CRS (give --crs): the products and "
+                     "the QGIS project have none\n");
+    }
+    return 0;
+}
+
 int run_build(BuildArgs& args) {
+    if (dist::Comm* comm = distributed_comm()) return run_build_distributed(args, *comm);
     const Progress progress = terminal_progress("build", args.quiet);
     args.build.wording = cli_text;
     args.build.flat_areas.assign(args.input.flat_areas.begin(), args.input.flat_areas.end());

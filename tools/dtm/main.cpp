@@ -81,8 +81,9 @@ int main(int argc, char** argv) {
         return 2;
     }
     if (distributed_comm() != nullptr && chosen != "tin" && chosen != "grid" &&
-        chosen != "contour") {
-        say("only `dtm tin`, `dtm grid` and `dtm contour` run distributed (under mpirun) yet; "
+        chosen != "contour" && chosen != "build") {
+        say("only `dtm tin`, `dtm grid`, `dtm contour` and `dtm build` run distributed (under "
+            "mpirun) yet; "
             "run `dtm " +
             std::string(chosen) + "` on one machine");
         return 2;

@@ -7,20 +7,22 @@
 // so the 3-D area is never smaller than the planimetric one, and their ratio on a plane tilted by
 // angle a is 1 / cos(a). Coordinates are taken relative to the first vertex before subtracting, so
 // that the differences of large projected coordinates (about -750 000 / -1 050 000 in S-JTSK) are
-// exact in double precision for survey-sized triangles. The sums use Neumaier's compensated
-// summation (Neumaier 1974, "Rundungsfehleranalyse einiger Verfahren zur Summation endlicher
-// Summen"), so the result does not depend on the triangle count in any visible digit.
+// exact in double precision for survey-sized triangles. The sums are exact (a long accumulator,
+// algo/detail/long_sum.hpp) and rounded once, so they depend neither on the order of the
+// triangles nor on how they are split over the ranks of a distributed run.
 #include "dtm/algo/surface_stats.hpp"
 
 #include <cmath>
 #include <vector>
 
-#include "algo/detail/compensated_sum.hpp"
+#include "algo/detail/area_terms.hpp"
+#include "algo/detail/long_sum.hpp"
 
 namespace dtm {
 namespace {
 
-using detail::CompensatedSum;
+using detail::AreaTerms;
+using detail::LongSum;
 
 }  // namespace
 
@@ -35,23 +37,13 @@ SurfaceStats surface_stats(const Tin& tin) {
 
     const Point3 origin = tin.vertices[tin.triangles.front().v[0]];
     std::vector<bool> used(tin.vertices.size(), false);
-    CompensatedSum planimetric;
-    CompensatedSum surface;
+    LongSum planimetric;
+    LongSum surface;
     for (const Triangle& t : tin.triangles) {
-        const Point3& p0 = tin.vertices[t.v[0]];
-        const Point3& p1 = tin.vertices[t.v[1]];
-        const Point3& p2 = tin.vertices[t.v[2]];
-        const double ux = (p1.x - origin.x) - (p0.x - origin.x);
-        const double uy = (p1.y - origin.y) - (p0.y - origin.y);
-        const double uz = p1.z - p0.z;
-        const double vx = (p2.x - origin.x) - (p0.x - origin.x);
-        const double vy = (p2.y - origin.y) - (p0.y - origin.y);
-        const double vz = p2.z - p0.z;
-        const double cx = uy * vz - uz * vy;
-        const double cy = uz * vx - ux * vz;
-        const double cz = ux * vy - uy * vx;
-        planimetric.add(0.5 * std::fabs(cz));
-        surface.add(0.5 * std::sqrt(cx * cx + cy * cy + cz * cz));
+        const AreaTerms terms = detail::area_terms(origin, tin.vertices[t.v[0]],
+                                                   tin.vertices[t.v[1]], tin.vertices[t.v[2]]);
+        planimetric.add(terms.planimetric);
+        surface.add(terms.surface);
         for (const VertexIndex v : t.v) {
             used[v] = true;
         }

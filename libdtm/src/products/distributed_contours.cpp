@@ -27,6 +27,7 @@
 #include "dist/mesh_vertices.hpp"
 #include "dtm/core/error.hpp"
 #include "dtm/io/contour_writer.hpp"
+#include "products/detail/distributed_pieces.hpp"
 #include "products/detail/distributed_surface.hpp"
 #include "products/detail/surface_routing.hpp"
 
@@ -81,26 +82,6 @@ std::vector<std::size_t> level_ranges(dist::Comm& comm,
     return starts;
 }
 
-/// The exact minimum and maximum height of the TIN's vertices over all ranks.
-std::pair<double, double> height_range(dist::Comm& comm, const dist::SurfaceMesh& surface) {
-    const double inf = std::numeric_limits<double>::infinity();
-    double lo = inf, hi = -inf;
-    for (const dist::SurfaceVertex& v : surface.vertices) {
-        lo = std::min(lo, v.p.z);
-        hi = std::max(hi, v.p.z);
-    }
-    std::vector<double> mine;
-    if (!surface.vertices.empty()) mine = {lo, hi};
-    const auto all =
-        dist::concatenated<double>(comm.allgatherv(dist::to_bytes(std::span<const double>(mine))));
-    lo = inf, hi = -inf;
-    for (std::size_t i = 0; i + 1 < all.size(); i += 2) {
-        lo = std::min(lo, all[i]);
-        hi = std::max(hi, all[i + 1]);
-    }
-    return {lo, hi};
-}
-
 /// Every face goes to the ranks owning a level that crosses it.
 Tin route_to_level_ranges(dist::Comm& comm,
                           const std::vector<double>& values,
@@ -127,6 +108,65 @@ std::filesystem::path contour_piece_path(const std::filesystem::path& vrt, int r
     return detail::piece_path(vrt, rank, ranks, "gpkg");
 }
 
+namespace detail {
+
+std::pair<double, double> height_range(dist::Comm& comm, const dist::SurfaceMesh& mine) {
+    const double inf = std::numeric_limits<double>::infinity();
+    double lo = inf, hi = -inf;
+    for (const dist::SurfaceVertex& v : mine.vertices) {
+        lo = std::min(lo, v.p.z);
+        hi = std::max(hi, v.p.z);
+    }
+    std::vector<double> values;
+    if (!mine.vertices.empty()) values = {lo, hi};
+    const auto all = dist::concatenated<double>(
+        comm.allgatherv(dist::to_bytes(std::span<const double>(values))));
+    lo = inf, hi = -inf;
+    for (std::size_t i = 0; i + 1 < all.size(); i += 2) {
+        lo = std::min(lo, all[i]);
+        hi = std::max(hi, all[i + 1]);
+    }
+    return {lo, hi};
+}
+
+ContourPieces write_contour_pieces(dist::Comm& comm,
+                                   dist::SurfaceMesh mine,
+                                   const std::vector<ContourLevel>& levels,
+                                   const ContourOptions& options,
+                                   const std::filesystem::path& vrt,
+                                   const io::ContourWriteOptions& write,
+                                   const Progress& progress) {
+    std::vector<double> values;
+    for (const ContourLevel& l : levels) values.push_back(l.value);
+    const std::vector<std::size_t> starts = level_ranges(comm, values, mine);
+    const Tin tin = route_to_level_ranges(comm, values, starts, std::move(mine));
+
+    const int rank = comm.rank(), ranks = comm.size();
+    const auto at = [](int r) { return static_cast<std::size_t>(r); };
+    const std::size_t first = starts[at(rank)], last = starts[at(rank) + 1];
+    // Ranks with levels write a piece; with no level at all, rank 0 writes the empty layer.
+    const auto writes = [&](int r) {
+        return starts[at(r)] < starts[at(r) + 1] || (levels.empty() && r == 0);
+    };
+    std::uint64_t lines = 0;
+    on_ranks(comm, writes(rank), [&] {
+        io::ContourWriter writer(contour_piece_path(vrt, rank, ranks), write);
+        contour_level_range(tin, levels, first, last, options, writer, progress);
+        writer.commit();
+        lines = writer.feature_count();
+    });
+    ContourPieces result;
+    result.lines = static_cast<std::uint64_t>(
+        comm.allreduce(static_cast<std::int64_t>(lines), dist::Reduce::sum));
+    for (int r = 0; r < ranks; ++r) {
+        if (writes(r)) result.pieces.push_back(contour_piece_path(vrt, r, ranks));
+    }
+    on_ranks(comm, rank == 0, [&] { io::write_contour_vrt(vrt, result.pieces, write); });
+    return result;
+}
+
+}  // namespace detail
+
 DistributedContourResult distributed_contours(dist::Comm& comm,
                                               const DistributedContourOptions& options,
                                               const Progress& progress) {
@@ -141,39 +181,17 @@ DistributedContourResult distributed_contours(dist::Comm& comm,
     detail::report_progress(progress, 0.6, "tracing");
     comm.set_phase("contour vertices");
     dist::SurfaceMesh mine = dist::surface_mesh(comm, surface.merged, surface.kernel);
-    const std::string crs_wkt = std::move(surface.crs_wkt);
+    const io::ContourWriteOptions write{.crs_wkt = std::move(surface.crs_wkt),
+                                        .layer = options.layer};
     surface = {};  // the kernel's mesh is no longer needed
-    const auto [zmin, zmax] = height_range(comm, mine);
+    const auto [zmin, zmax] = detail::height_range(comm, mine);
     const std::vector<ContourLevel> levels = contour_levels(zmin, zmax, options.contour);
     result.levels = levels.size();
-    std::vector<double> values;
-    for (const ContourLevel& l : levels) values.push_back(l.value);
-    const std::vector<std::size_t> starts = level_ranges(comm, values, mine);
-    const Tin tin = route_to_level_ranges(comm, values, starts, std::move(mine));
-
-    const int rank = comm.rank(), ranks = comm.size();
-    const auto at = [](int r) { return static_cast<std::size_t>(r); };
-    const std::size_t first = starts[at(rank)], last = starts[at(rank) + 1];
-    // Ranks with levels write a piece; with no level at all, rank 0 writes the empty layer.
-    const auto writes = [&](int r) {
-        return starts[at(r)] < starts[at(r) + 1] || (levels.empty() && r == 0);
-    };
-    const io::ContourWriteOptions write{.crs_wkt = crs_wkt, .layer = options.layer};
-    std::uint64_t lines = 0;
-    detail::on_ranks(comm, writes(rank), [&] {
-        io::ContourWriter writer(contour_piece_path(options.output, rank, ranks), write);
-        contour_level_range(tin, levels, first, last, options.contour, writer,
-                            rank == 0 ? progress.sub(0.7, 0.95) : Progress{});
-        writer.commit();
-        lines = writer.feature_count();
-    });
-    result.lines = static_cast<std::uint64_t>(
-        comm.allreduce(static_cast<std::int64_t>(lines), dist::Reduce::sum));
-    for (int r = 0; r < ranks; ++r) {
-        if (writes(r)) result.pieces.push_back(contour_piece_path(options.output, r, ranks));
-    }
-    detail::on_ranks(comm, rank == 0,
-                     [&] { io::write_contour_vrt(options.output, result.pieces, write); });
+    detail::ContourPieces pieces = detail::write_contour_pieces(
+        comm, std::move(mine), levels, options.contour, options.output, write,
+        comm.rank() == 0 ? progress.sub(0.7, 0.95) : Progress{});
+    result.lines = pieces.lines;
+    result.pieces = std::move(pieces.pieces);
     result.bytes_sent = detail::bytes_sent(comm);
     detail::report_progress(progress, 1.0, "done");
     return result;

@@ -22,6 +22,7 @@
 #include "dtm/algo/rasterize.hpp"
 #include "dtm/core/error.hpp"
 #include "dtm/io/grid_writer.hpp"
+#include "products/detail/distributed_pieces.hpp"
 #include "products/detail/distributed_surface.hpp"
 #include "products/detail/surface_routing.hpp"
 
@@ -39,18 +40,7 @@ GridSpec grid_of(dist::Comm& comm,
                  const dist::SurfaceMesh& surface,
                  const DistributedDemOptions& options) {
     if (options.extent) return extent_grid_spec(*options.extent, options.cell);
-    Box2 box;
-    for (const dist::SurfaceVertex& v : surface.vertices) box.add(v.p);
-    std::vector<double> mine;
-    if (!surface.vertices.empty()) mine = {box.xmin, box.ymin, box.xmax, box.ymax};
-    const auto all =
-        dist::concatenated<double>(comm.allgatherv(dist::to_bytes(std::span<const double>(mine))));
-    Box2 whole;
-    for (std::size_t i = 0; i + 3 < all.size(); i += 4) {
-        whole.add(Point3{all[i], all[i + 1], 0.0});
-        whole.add(Point3{all[i + 2], all[i + 3], 0.0});
-    }
-    return snapped_grid_spec(whole, options.cell);
+    return snapped_grid_spec(detail::mesh_box(comm, surface), options.cell);
 }
 
 /// Every face goes to the ranks whose row blocks its rows may reach.
@@ -105,6 +95,68 @@ std::filesystem::path dem_tile_path(const std::filesystem::path& vrt, int rank, 
     return detail::piece_path(vrt, rank, ranks, "tif");
 }
 
+namespace detail {
+
+Box2 mesh_box(dist::Comm& comm, const dist::SurfaceMesh& mine) {
+    Box2 box;
+    for (const dist::SurfaceVertex& v : mine.vertices) box.add(v.p);
+    std::vector<double> values;
+    if (!mine.vertices.empty()) values = {box.xmin, box.ymin, box.xmax, box.ymax};
+    const auto all = dist::concatenated<double>(
+        comm.allgatherv(dist::to_bytes(std::span<const double>(values))));
+    Box2 whole;
+    for (std::size_t i = 0; i + 3 < all.size(); i += 4) {
+        whole.add(Point3{all[i], all[i + 1], 0.0});
+        whole.add(Point3{all[i + 2], all[i + 3], 0.0});
+    }
+    return whole;
+}
+
+DemTiles write_dem_tiles(dist::Comm& comm,
+                         const GridSpec& spec,
+                         dist::SurfaceMesh mine,
+                         const std::filesystem::path& vrt,
+                         const io::GridWriteOptions& write,
+                         const Progress& progress) {
+    if (static_cast<double>(spec.cols) * static_cast<double>(spec.rows) > max_cells) {
+        throw UsageError(
+            "grid: " + std::to_string(spec.cols) + " x " + std::to_string(spec.rows) +
+            " cells is too many (at most 2^36); use a larger cell or a smaller extent");
+    }
+    const Tin tin = route_to_row_blocks(comm, spec, std::move(mine));
+
+    const int rank = comm.rank(), ranks = comm.size();
+    const std::size_t first = block_start(spec, rank, ranks);
+    const std::size_t rows = block_start(spec, rank + 1, ranks) - first;
+    std::uint64_t filled = 0;
+    on_ranks(comm, rows > 0, [&] {
+        GridSpec tile = spec;
+        tile.rows = rows;
+        tile.ymax = spec.ymax - static_cast<double>(first) * spec.cell;
+        io::GridWriter writer(dem_tile_path(vrt, rank, ranks), tile, write);
+        TileSink sink(writer, first, write.nodata);
+        rasterize(tin, spec,
+                  {.nodata = write.nodata, .threads = 0, .first_row = first, .row_count = rows},
+                  sink, progress);
+        writer.commit();
+        filled = sink.filled;
+    });
+    DemTiles result;
+    result.filled = static_cast<std::uint64_t>(
+        comm.allreduce(static_cast<std::int64_t>(filled), dist::Reduce::sum));
+    std::vector<io::DemTile> tiles;
+    for (int r = 0; r < ranks; ++r) {
+        const std::size_t lo = block_start(spec, r, ranks), hi = block_start(spec, r + 1, ranks);
+        if (hi == lo) continue;
+        tiles.push_back({dem_tile_path(vrt, r, ranks), lo, hi - lo});
+        result.tiles.push_back(tiles.back().file);
+    }
+    on_ranks(comm, rank == 0, [&] { io::write_dem_vrt(vrt, spec, tiles, write); });
+    return result;
+}
+
+}  // namespace detail
+
 DistributedDemResult distributed_dem(dist::Comm& comm,
                                      const DistributedDemOptions& options,
                                      const Progress& progress) {
@@ -116,45 +168,15 @@ DistributedDemResult distributed_dem(dist::Comm& comm,
     detail::report_progress(progress, 0.6, "rasterize");
     comm.set_phase("dem vertices");
     dist::SurfaceMesh mine = dist::surface_mesh(comm, surface.merged, surface.kernel);
-    const std::string crs_wkt = std::move(surface.crs_wkt);
+    const io::GridWriteOptions write{.crs_wkt = std::move(surface.crs_wkt),
+                                     .nodata = options.nodata};
     surface = {};  // the kernel's mesh is no longer needed
     result.spec = grid_of(comm, mine, options);
-    const GridSpec& spec = result.spec;
-    if (static_cast<double>(spec.cols) * static_cast<double>(spec.rows) > max_cells) {
-        throw UsageError(
-            "grid: " + std::to_string(spec.cols) + " x " + std::to_string(spec.rows) +
-            " cells is too many (at most 2^36); use a larger cell or a smaller extent");
-    }
-    const Tin tin = route_to_row_blocks(comm, spec, std::move(mine));
-
-    const int rank = comm.rank(), ranks = comm.size();
-    const std::size_t first = block_start(spec, rank, ranks);
-    const std::size_t rows = block_start(spec, rank + 1, ranks) - first;
-    const io::GridWriteOptions write{.crs_wkt = crs_wkt, .nodata = options.nodata};
-    std::uint64_t filled = 0;
-    detail::on_ranks(comm, rows > 0, [&] {
-        GridSpec tile = spec;
-        tile.rows = rows;
-        tile.ymax = spec.ymax - static_cast<double>(first) * spec.cell;
-        io::GridWriter writer(dem_tile_path(options.output, rank, ranks), tile, write);
-        TileSink sink(writer, first, options.nodata);
-        rasterize(tin, spec,
-                  {.nodata = options.nodata, .threads = 0, .first_row = first, .row_count = rows},
-                  sink, rank == 0 ? progress.sub(0.7, 0.95) : Progress{});
-        writer.commit();
-        filled = sink.filled;
-    });
-    result.filled = static_cast<std::uint64_t>(
-        comm.allreduce(static_cast<std::int64_t>(filled), dist::Reduce::sum));
-    std::vector<io::DemTile> tiles;
-    for (int r = 0; r < ranks; ++r) {
-        const std::size_t lo = block_start(spec, r, ranks), hi = block_start(spec, r + 1, ranks);
-        if (hi == lo) continue;
-        tiles.push_back({dem_tile_path(options.output, r, ranks), lo, hi - lo});
-        result.tiles.push_back(tiles.back().file);
-    }
-    detail::on_ranks(comm, rank == 0,
-                     [&] { io::write_dem_vrt(options.output, spec, tiles, write); });
+    detail::DemTiles tiles =
+        detail::write_dem_tiles(comm, result.spec, std::move(mine), options.output, write,
+                                comm.rank() == 0 ? progress.sub(0.7, 0.95) : Progress{});
+    result.filled = tiles.filled;
+    result.tiles = std::move(tiles.tiles);
     result.bytes_sent = detail::bytes_sent(comm);
     detail::report_progress(progress, 1.0, "done");
     return result;

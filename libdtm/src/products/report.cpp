@@ -84,7 +84,34 @@ void write_fate(io::JsonWriter& json, std::string_view key, const PointFate& fat
     json.end();
 }
 
+/// A distributed build knows the fate of the vertices, not of each input point.
+void write_distributed_points(io::JsonWriter& json, const BuildReport& report) {
+    const DistributedRun& d = *report.distributed;
+    json.begin_object("points");
+    json.value("survey_points", d.survey_points);
+    json.value("line_vertices", d.line_vertices);
+    json.value("merged_duplicates", d.merged);
+    json.value("breakline_crossing_vertices", d.crossing_vertices);
+    json.value("vertices_in_no_triangle", d.unused_vertices);
+    json.value("skipped_bad_lines", report.skipped_lines);
+    json.value("total_accounted", d.survey_points + d.line_vertices + report.skipped_lines);
+    json.end();
+    json.begin_object("distributed");
+    json.value("ranks", static_cast<std::size_t>(d.ranks));
+    json.value("band_triangles", d.band_triangles);
+    json.value("widenings", static_cast<std::size_t>(d.widenings));
+    json.value("bytes_sent", d.bytes_sent);
+    json.begin_object("bytes_sent_per_phase");
+    for (const auto& [phase, bytes] : d.phase_bytes) json.value(phase, bytes);
+    json.end();
+    json.end();
+}
+
 void write_points(io::JsonWriter& json, const BuildReport& report) {
+    if (report.distributed) {
+        write_distributed_points(json, report);
+        return;
+    }
     const InputAccounting& a = report.accounting;
     json.begin_object("points");
     write_fate(json, "survey_points", a.survey_points);

@@ -25,7 +25,7 @@ struct SurfaceStats {
     double surface_area = 0.0;      ///< sum of the true 3-D triangle areas (>= planimetric_area)
 };
 
-/// Measures @p tin. Areas use compensated (Kahan-Neumaier) summation and coordinates taken
+/// Measures @p tin. Areas are exact sums rounded once (order-free) with coordinates taken
 /// relative to the first vertex, so large projected offsets (S-JTSK, UTM) cost no precision.
 [[nodiscard]] SurfaceStats surface_stats(const Tin& tin);
 

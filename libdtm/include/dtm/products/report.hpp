@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "dtm/algo/contour_flats.hpp"
@@ -24,6 +25,20 @@ namespace dtm::products {
 struct StageTime {
     std::string stage;
     double seconds = 0.0;
+};
+
+/// What a distributed build (products::distributed_build) reports of its ranks.
+struct DistributedRun {
+    int ranks = 1;
+    std::uint64_t survey_points = 0;  ///< read from the point list
+    std::uint64_t line_vertices = 0;  ///< of breaklines, boundaries and holes
+    std::uint64_t merged = 0;         ///< merged into another input point (exact duplicates)
+    std::uint64_t crossing_vertices = 0;
+    std::uint64_t unused_vertices = 0;  ///< no triangle names them (outside, in holes, peeled)
+    std::uint64_t band_triangles = 0;   ///< merged across ranks, all merges
+    std::uint32_t widenings = 0;        ///< most band widenings of one merge
+    std::uint64_t bytes_sent = 0;       ///< by all ranks, every phase
+    std::vector<std::pair<std::string, std::uint64_t>> phase_bytes;  ///< all ranks, per phase
 };
 
 struct BuildReport {
@@ -64,6 +79,7 @@ struct BuildReport {
     VolumeResult volume;
     std::string volume_base;  ///< the base's files
     // the run
+    std::optional<DistributedRun> distributed;  ///< set by a distributed build
     std::vector<StageTime> timings;
     std::vector<std::string> outputs;  ///< file names written into the output folder
 };

@@ -18,6 +18,8 @@
 #include <vtkXMLPolyDataWriter.h>
 
 #include <cstring>
+#include <fstream>
+#include <string>
 
 #include "dtm/core/error.hpp"
 
@@ -109,6 +111,33 @@ void write_vtp(const Tin& tin, const std::filesystem::path& path, const TinWrite
                                              : std::string();
         throw Error("vtp: cannot write " + path.string() + why);
     }
+}
+
+void write_pvtp(const std::filesystem::path& path,
+                const std::vector<std::filesystem::path>& pieces) {
+    // The arrays of write_vtp's pieces: the summary must name each one with its type.
+    std::string text =
+        "<?xml version=\"1.0\"?>\n"
+        "<VTKFile type=\"PPolyData\" version=\"1.0\" byte_order=\"LittleEndian\" "
+        "header_type=\"UInt64\">\n"
+        "  <PPolyData GhostLevel=\"0\">\n"
+        "    <PPointData Scalars=\"elevation\">\n"
+        "      <PDataArray type=\"Float64\" Name=\"elevation\"/>\n"
+        "    </PPointData>\n"
+        "    <PCellData>\n"
+        "      <PDataArray type=\"Int32\" Name=\"constraint_kind\"/>\n"
+        "    </PCellData>\n"
+        "    <PPoints>\n"
+        "      <PDataArray type=\"Float64\" Name=\"Points\" NumberOfComponents=\"3\"/>\n"
+        "    </PPoints>\n";
+    for (const std::filesystem::path& piece : pieces) {
+        text += "    <Piece Source=\"" + piece.filename().string() + "\"/>\n";
+    }
+    text += "  </PPolyData>\n</VTKFile>\n";
+    std::ofstream out(path, std::ios::binary | std::ios::trunc);
+    out << text;
+    out.close();
+    if (!out) throw Error("pvtp: cannot write " + path.string());
 }
 
 }  // namespace dtm::io

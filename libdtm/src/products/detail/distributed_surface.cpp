@@ -93,10 +93,9 @@ DistributedSurface distributed_surface(dist::Comm& comm,
         place_lines(comm, out.merged, lines, first_line_input, source.z_tolerance);
     out.segments = placed.segments.size();
     out.crossings = placed.crossings;
-    out.points += lines.points.size();  // every rank holds the lines
+    out.line_vertices = lines.points.size();  // every rank holds the lines
+    out.points += out.line_vertices;
     lines = {};
-    out.segments = placed.segments.size();
-    out.crossings = placed.crossings;
     std::vector<dist::Point> points;
     points.reserve(out.merged.vertices.size());
     for (const dist::Vertex& v : out.merged.vertices) points.push_back({v.p.x, v.p.y, v.id});

@@ -20,7 +20,8 @@ struct DistributedSurface {
     dist::MergedShare merged;
     dist::DistributedMesh kernel;
     std::string crs_wkt;
-    std::uint64_t points = 0;  ///< input points
+    std::uint64_t points = 0;         ///< input points and line vertices
+    std::uint64_t line_vertices = 0;  ///< of breaklines, boundaries and holes
     std::uint64_t skipped_lines = 0;
     std::uint64_t triangles = 0;          ///< of the TIN (after the domain) over all ranks
     std::uint64_t segments = 0;           ///< breakline segments after the split

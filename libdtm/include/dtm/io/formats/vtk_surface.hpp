@@ -5,6 +5,7 @@
 #pragma once
 
 #include <filesystem>
+#include <vector>
 
 #include "dtm/core/tin.hpp"
 #include "dtm/io/tin_file.hpp"
@@ -21,5 +22,11 @@ namespace dtm::io {
 /// The CRS is stored in field data as the string array `crs_wkt` when options.crs_wkt is set.
 /// @throws Error if VTK fails to write the file.
 void write_vtp(const Tin& tin, const std::filesystem::path& path, const TinWriteOptions& options);
+
+/// Writes the parallel PolyData summary (.pvtp) of the pieces @p pieces, each a .vtp of
+/// write_vtp beside @p path (named by file name), to exactly @p path: ParaView and
+/// vtkXMLPPolyDataReader open the pieces as one surface. @throws Error if it cannot be written.
+void write_pvtp(const std::filesystem::path& path,
+                const std::vector<std::filesystem::path>& pieces);
 
 }  // namespace dtm::io
