@@ -54,6 +54,14 @@ void print_summary(const products::BuildReport& r, const std::string& out_dir) {
     std::printf("dtm build: products and report.json in %s\n", out_dir.c_str());
 }
 
+void warn_without_crs(const products::BuildReport& report) {
+    if (report.crs_wkt.empty()) {
+        std::fprintf(stderr,
+                     "dtm build: warning: the inputs carry no CRS (give --crs): the products and "
+                     "the QGIS project have none\n");
+    }
+}
+
 /// The main job on the ranks of an MPI job: what it covers (docs/distributed.md), or a refusal.
 int run_build_distributed(BuildArgs& args, dist::Comm& comm) {
     check_distributed_input("build", args.input, args.build.triangulate);
@@ -92,11 +100,7 @@ int run_build_distributed(BuildArgs& args, dist::Comm& comm) {
             report.contour_lines, report.contour_interval);
         std::printf("dtm build: products and report.json in %s\n", args.out_dir.c_str());
     }
-    if (report.crs_wkt.empty()) {
-        std::fprintf(stderr,
-                     "dtm build: warning: the inputs carry no CRS (give --crs): the products and "
-                     "the QGIS project have none\n");
-    }
+    warn_without_crs(report);
     return 0;
 }
 
@@ -117,11 +121,7 @@ int run_build(BuildArgs& args) {
     if (report.contour_flats && !args.quiet) print_contour_flats(*report.contour_flats, "build");
     if (report.dem_cells && !args.quiet) print_dem_report(*report.dem_cells, "build");
     if (!args.quiet) print_summary(report, args.out_dir);
-    if (report.crs_wkt.empty()) {
-        std::fprintf(stderr,
-                     "dtm build: warning: the inputs carry no CRS (give --crs): the products and "
-                     "the QGIS project have none\n");
-    }
+    warn_without_crs(report);
     return 0;
 }
 

@@ -59,5 +59,11 @@ bool wants_volume(const BuildOptions& options);
 void write_volume(BuildContext& context, const Progress& progress);
 /// dtm.qgs with a layer for each product written before it (project_step.cpp).
 void write_project(BuildContext& context, const Progress& progress);
+/// The project of a build without its layers: CRS, extent, colour range, the contour layer's
+/// name and fields, the index interval from report.contour_interval and index_every (also the
+/// distributed build's, products/distributed_build.cpp).
+[[nodiscard]] io::QgisProject build_project(const std::string& crs_wkt,
+                                            const SurfaceStats& surface,
+                                            const BuildReport& report);
 
 }  // namespace dtm::products::detail

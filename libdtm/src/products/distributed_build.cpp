@@ -26,6 +26,7 @@
 #include "dtm/io/output_check.hpp"
 #include "dtm/products/rules.hpp"
 #include "io/formats/ply/ply_dist_writer.hpp"
+#include "products/build_steps.hpp"
 #include "products/detail/distributed_measures.hpp"
 #include "products/detail/distributed_pieces.hpp"
 #include "products/detail/distributed_surface.hpp"
@@ -123,19 +124,10 @@ std::vector<fs::path> write_vtk_pieces(dist::Comm& comm,
 }
 
 void write_project(SharedStaging& out, const BuildReport& report) {
-    io::QgisProject project;
+    io::QgisProject project = detail::build_project(report.crs_wkt, report.surface, report);
     project.title = "dtm build (distributed)";
-    project.crs_wkt = report.crs_wkt;
-    project.extent = report.surface.extent;
-    project.z_min = report.surface.z_min;
-    project.z_max = report.surface.z_max;
     project.dem = "dem.vrt";
     project.contours = "contours.vrt";
-    project.contour_layer = "contours";
-    project.elevation_field = "elevation";
-    project.index_field = "index";
-    project.index_interval =
-        report.contour_interval * static_cast<double>(std::max<std::size_t>(report.index_every, 1));
     io::write_qgis_project(project, out.add("dtm.qgs"));
 }
 

@@ -7,26 +7,32 @@
 
 namespace dtm::products::detail {
 
+io::QgisProject build_project(const std::string& crs_wkt,
+                              const SurfaceStats& surface,
+                              const BuildReport& report) {
+    io::QgisProject project;
+    project.title = "dtm build";
+    project.crs_wkt = crs_wkt;
+    project.extent = surface.extent;
+    project.z_min = surface.z_min;
+    project.z_max = surface.z_max;
+    project.contour_layer = "contours";
+    project.elevation_field = "elevation";
+    project.index_field = "index";
+    project.index_interval =
+        report.contour_interval * static_cast<double>(std::max<std::size_t>(report.index_every, 1));
+    return project;
+}
+
 void write_project(BuildContext& context, const Progress&) {
     const io::AtomicDirectory& out = context.out;
     const auto layer = [&out](const char* name) {
         return out.contains(name) ? std::filesystem::path(name) : std::filesystem::path();
     };
-    io::QgisProject project;
-    project.title = "dtm build";
-    project.crs_wkt = context.crs_wkt;
-    project.extent = context.surface.extent;
-    project.z_min = context.surface.z_min;
-    project.z_max = context.surface.z_max;
+    io::QgisProject project = build_project(context.crs_wkt, context.surface, context.report);
     project.dem = layer("dem.tif");
     project.hillshade = layer("hillshade.tif");
     project.contours = layer("contours.gpkg");
-    project.contour_layer = "contours";
-    project.elevation_field = "elevation";
-    project.index_field = "index";
-    project.index_interval =
-        context.report.contour_interval *
-        static_cast<double>(std::max<std::size_t>(context.report.index_every, 1));
     if (!project.contours.empty() && context.report.contour_label_height > 0.0) {
         project.contour_label_layer = "contour_labels";
         project.spot_layer = "spot_heights";
