@@ -48,15 +48,22 @@ int run_tin_distributed(const TinArgs& a, dist::Comm& comm) {
     const auto refuse = [](const std::string& what) {
         throw UsageError("tin: a distributed run (mpirun) does not take " + what + " yet");
     };
-    if (io::lower_extension(a.output) != "ply" || a.ascii)
-        refuse("an output other than a binary .ply");
+    const bool tiled = io::lower_extension(a.output) == "json";
+    if ((io::lower_extension(a.output) != "ply" && !tiled) || a.ascii)
+        refuse("an output other than a binary .ply or a tiled TIN's .json");
     if (a.check || !a.report.empty()) refuse("`check` or `report`");
-    io::check_output(a.output, io::OutputKind::tin, "output");
+    io::check_output(a.output, tiled ? io::OutputKind::any_file : io::OutputKind::tin, "output");
     const auto start = std::chrono::steady_clock::now();
     const bool shows = prints() && !a.quiet && !a.stats;
     const products::DistributedTinResult r =
         products::distributed_tin(comm, {distributed_source(in, a.triangulate), a.output},
                                   shows ? terminal_progress(false) : Progress{});
+    if (r.written != a.output && prints()) {
+        std::cerr << "dtm tin: warning: " << r.vertices << " vertices and " << r.triangles
+                  << " triangles are more than one PLY indexes; wrote the tiled TIN "
+                  << r.written.string() << " (" << r.tiles.size() << " tiles) instead of "
+                  << a.output << "\n";
+    }
     if (a.stats && prints()) {
         std::cout << products::distributed_tin_stats_json(r, since(start)) << std::flush;
     }

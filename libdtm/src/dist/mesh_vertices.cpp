@@ -89,7 +89,10 @@ std::uint64_t serial_face(std::uint64_t slot,
     return ghosts[slot - real - between];
 }
 
-SurfaceMesh surface_mesh(Comm& comm, const MergedShare& merged, const DistributedMesh& k) {
+SurfaceMesh surface_mesh(Comm& comm,
+                         const MergedShare& merged,
+                         const DistributedMesh& k,
+                         const SurfaceMeshOptions& options) {
     const LocalMesh& mesh = k.mesh;
     const auto foreign = foreign_vertex_numbers(comm, k);
     const auto ghosts = all_ghost_slots(comm, mesh);
@@ -111,6 +114,7 @@ SurfaceMesh surface_mesh(Comm& comm, const MergedShare& merged, const Distribute
     const auto slots = static_cast<std::uint64_t>(
         comm.allreduce(static_cast<std::int64_t>(mesh.tris.size()), Reduce::sum));
     const std::uint64_t real = slots - ghosts.size();
+    const FaceNumbers kept = trimmed ? kept_face_numbers(comm, mesh, ghosts) : FaceNumbers{};
     SurfaceMesh out;
     out.faces.reserve(mesh.tris.size());
     std::vector<std::pair<std::uint64_t, std::uint64_t>> corners;  // (vertex id, 3 f + i)
@@ -120,7 +124,7 @@ SurfaceMesh surface_mesh(Comm& comm, const MergedShare& merged, const Distribute
         if (!mesh.kept(s)) continue;
         const GlobalTriangle g = mesh.at(mesh.first_slot + s);
         SurfaceFace f;
-        f.face = serial_face(mesh.first_slot + s, ghosts, real);
+        f.face = trimmed ? kept.face[s] : serial_face(mesh.first_slot + s, ghosts, real);
         for (unsigned i = 0; i < 3; ++i) {
             corners.emplace_back(number(t.v[i]), 3 * out.faces.size() + i);
             // Kernel half-edge i runs v[i] -> v[i + 1], opposite corner i + 2
@@ -130,10 +134,16 @@ SurfaceMesh surface_mesh(Comm& comm, const MergedShare& merged, const Distribute
         out.faces.push_back(f);
     }
     // Each vertex once, in ascending number; the sorted corners take their index in one pass.
+    // With every own vertex, the positions no triangle names come too (marked by no corner).
+    constexpr std::uint64_t no_corner = ~std::uint64_t{0};
+    if (options.every_own_vertex) {
+        for (const std::uint64_t id : k.input_ids) corners.emplace_back(id, no_corner);
+    }
     std::sort(corners.begin(), corners.end());
     std::vector<std::uint64_t> wanted;
     for (const auto& [id, corner] : corners) {
         if (wanted.empty() || wanted.back() != id) wanted.push_back(id);
+        if (corner == no_corner) continue;
         out.faces[corner / 3].v[corner % 3] = static_cast<std::uint32_t>(wanted.size() - 1);
     }
     std::vector<std::pair<std::uint64_t, std::uint64_t>>().swap(corners);

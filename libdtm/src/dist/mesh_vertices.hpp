@@ -57,7 +57,7 @@ struct SurfaceVertex {
 /// into the mesh's vertices), edge e opposite corner e, bit e of `border` set when no triangle
 /// lies across edge e (the hull).
 struct SurfaceFace {
-    std::uint64_t face = 0;  ///< its index among the serial TIN's triangles
+    std::uint64_t face = 0;  ///< its index among the serial TIN's triangles (after the domain)
     std::array<std::uint32_t, 3> v{};
     std::uint32_t border = 0;
 };
@@ -68,10 +68,17 @@ struct SurfaceMesh {
     std::vector<SurfaceFace> faces;
 };
 
+struct SurfaceMeshOptions {
+    /// Also every vertex of this rank's kernel positions, named by a triangle or not (a tile of
+    /// the tiled TIN holds each vertex of the TIN on its kernel owner's tile).
+    bool every_own_vertex = false;
+};
+
 /// Collective: this rank's real triangles (in slot order) with their vertices as the merge keeps
 /// them (x, y, z asked of the vertices' owners in @p merged).
 [[nodiscard]] SurfaceMesh surface_mesh(Comm& comm,
                                        const MergedShare& merged,
-                                       const DistributedMesh& kernel);
+                                       const DistributedMesh& kernel,
+                                       const SurfaceMeshOptions& options = {});
 
 }  // namespace dtm::dist

@@ -25,6 +25,7 @@
 #include "dtm/io/formats/ogr.hpp"
 #include "dtm/io/formats/ply.hpp"
 #include "dtm/io/formats/raster_dem.hpp"
+#include "dtm/io/formats/tin_tiles.hpp"
 #include "dtm/io/sniff.hpp"
 
 namespace dtm::io {
@@ -33,6 +34,7 @@ namespace {
 bool text_has_geometry_column(const FileHead& head) { return csv_has_geometry_column(head.bytes); }
 
 constexpr std::array<std::string_view, 1> ply_ext{"ply"};
+constexpr std::array<std::string_view, 1> tiles_ext{"json"};
 constexpr std::array<std::string_view, 5> csv_ext{"csv", "txt", "xyz", "pts", "asc"};
 constexpr std::array<std::string_view, 5> hpgl_ext{"hpgl", "plt", "hgl", "hpg", "prn"};
 constexpr std::array<std::string_view, 1> dxf_ext{"dxf"};
@@ -44,9 +46,11 @@ constexpr std::array<std::string_view, 1> grid_asc_ext{"asc"};
 constexpr std::array<std::string_view, 8> raster_ext{"tif", "tiff", "vrt", "img",
                                                      "dem", "bil",  "hgt", "nc"};
 constexpr std::array<std::string_view, 2> las_ext{"las", "laz"};
-constexpr std::array<ReaderInfo, 11> reader_table{{
+constexpr std::array<ReaderInfo, 12> reader_table{{
     {"ply", "dtm PLY TIN (the surface itself: vertices, triangles, constrained edges, CRS)",
      ply_ext, nullptr, &read_ply},
+    {"tin-tiles", "dtm tiled TIN: a JSON manifest and one PLY per tile (a distributed run)",
+     tiles_ext, &is_tin_manifest, &read_tin_tiles_input},
     {"ascii-grid", "ESRI ASCII grid DEM (.asc starting with ncols ...): cells as points",
      grid_asc_ext, &is_ascii_grid, &read_raster_dem},
     {"csv-wkt", "Delimited text with a WKT or geometry column, read by OGR", csv_ext,

@@ -200,6 +200,9 @@ ContentGuess guess_content(std::string_view head) {
         const std::string_view root = xml::root_element(head);
         if (!root.empty()) return xml_guess(root);
     }
+    if (start.starts_with("{") && start.find("\"dtm-tin-tiles\"") != std::string_view::npos) {
+        return {Kind::format, "tin-tiles", "a dtm tiled TIN manifest"};
+    }
     if (start.starts_with("{") && head.find("\"type\"") != std::string_view::npos) {
         return {Kind::format, "ogr", "a GeoJSON document"};
     }

@@ -17,6 +17,7 @@
 #include "dtm/io/formats/mesh_2dm.hpp"
 #include "dtm/io/formats/ogr_tin.hpp"
 #include "dtm/io/formats/ply.hpp"
+#include "dtm/io/formats/tin_tiles.hpp"
 #include "dtm/io/formats/vtk_surface.hpp"
 
 namespace dtm::io {
@@ -48,18 +49,23 @@ constexpr std::array tin_writer_table{
 std::vector<std::string_view> tin_extensions() {
     std::vector<std::string_view> extensions;
     for (const TinWriterInfo& info : tin_writer_table) extensions.push_back(info.extension);
+    extensions.emplace_back("json");  // a tiled TIN: several files, atomic on its own
     return extensions;
 }
 
 void write_tin(const Tin& tin, const std::filesystem::path& path, const TinWriteOptions& options) {
     const std::string extension = lower_extension(path);
+    if (extension == "json") {
+        write_tin_tiles(tin, path, options);
+        return;
+    }
     const auto* info =
         std::find_if(tin_writer_table.begin(), tin_writer_table.end(),
                      [&](const TinWriterInfo& row) { return row.extension == extension; });
     if (info == tin_writer_table.end()) {
         std::string known;
-        for (const TinWriterInfo& row : tin_writer_table) {
-            known += (known.empty() ? "." : ", .") + std::string(row.extension);
+        for (const std::string_view e : tin_extensions()) {
+            known += (known.empty() ? "." : ", .") + std::string(e);
         }
         throw UsageError("cannot write TIN " + path.string() + ": unknown extension '" +
                          path.extension().string() + "' (known: " + known + ")");

@@ -25,7 +25,6 @@
 #include "dtm/io/formats/vtk_surface.hpp"
 #include "dtm/io/output_check.hpp"
 #include "dtm/products/rules.hpp"
-#include "io/formats/ply/ply_dist_writer.hpp"
 #include "products/build_steps.hpp"
 #include "products/detail/distributed_measures.hpp"
 #include "products/detail/distributed_pieces.hpp"
@@ -52,6 +51,8 @@ public:
         comm.bcast(bytes, 0);
         staging_ = std::string(reinterpret_cast<const char*>(bytes.data()), bytes.size());
     }
+    /// Where the file @p name goes, not recorded.
+    [[nodiscard]] fs::path at(const std::string& name) const { return staging_ / name; }
     /// Where the file @p name goes; recorded for the commit (rank 0).
     fs::path add(const std::string& name) {
         if (folder_) (void)folder_->add(name);
@@ -153,10 +154,12 @@ BuildReport distributed_build(dist::Comm& comm,
     detail::report_progress(progress, 0.5, "writing the TIN");
     BuildReport report;
     report.crs_wkt = surface.crs_wkt;
-    io::TinWriteOptions tin_write;
-    tin_write.crs_wkt = surface.crs_wkt;
-    const std::uint64_t constrained = io::write_distributed_ply(
-        comm, surface.merged, surface.kernel, out.add("tin.ply"), tin_write);
+    // One PLY, or beyond what a PLY indexes the tiled TIN tin.json and its tiles.
+    const detail::TinFileWritten tin_file =
+        detail::write_tin_file(comm, surface, out.at("tin.ply"), options.ply_limit);
+    (void)out.add(tin_file.written.filename().string());
+    for (const std::string& tile : tin_file.tiles) (void)out.add(tile);
+    const std::uint64_t constrained = tin_file.constrained_edges;
     DistributedRun run;
     run.ranks = comm.size();
     run.survey_points = surface.points - surface.line_vertices;

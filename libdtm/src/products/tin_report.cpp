@@ -133,6 +133,7 @@ std::string distributed_tin_stats_json(const DistributedTinResult& r, double tot
     json.value("bytes_sent", r.bytes_sent);
     json.value("band_triangles", r.band_triangles);
     json.value("widenings", static_cast<std::size_t>(r.widenings));
+    json.value("tiles", r.tiles.size());  // 0: one PLY
     json.begin_object("seconds", Layout::inline_);
     json.value("total", total_seconds);
     json.end();

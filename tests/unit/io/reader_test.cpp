@@ -45,6 +45,16 @@ TEST(ReaderTable, TextWithAGeometryColumnGoesToOgrByItsContent) {
     EXPECT_EQ(loaded.terrain.points[2].z, 32.0);
 }
 
+TEST(ReaderTable, ATiledTinManifestAndGeoJsonShareJsonByTheirContent) {
+    const std::string manifest = "{\n  \"format\": \"dtm-tin-tiles\",\n  \"version\": 1\n}\n";
+    EXPECT_EQ(find_reader(dtm::io::FileHead{"tin.json", "json", manifest}).name, "tin-tiles");
+    EXPECT_EQ(find_reader(dtm::io::FileHead{"tin.txt", "", manifest}).name, "tin-tiles");
+    EXPECT_EQ(find_reader(dtm::io::FileHead{"a.json", "json",
+                                            "{\"type\": \"FeatureCollection\", \"features\": []}"})
+                  .name,
+              "ogr");
+}
+
 TEST(ReaderTable, APlyTinComesThroughTheTableAsATin) {
     const dtm::test::ScratchDir dir;
     dtm::Tin tin;
@@ -76,7 +86,7 @@ TEST(ReaderTable, UnknownExtensionIsAnInputErrorListingTheKnownOnesOnce) {
         FAIL() << "no exception";
     } catch (const dtm::InputError& e) {
         const std::string what = e.what();
-        EXPECT_NE(what.find("(ply, asc, csv, txt, xyz, pts, xml, hpgl,"), std::string::npos)
+        EXPECT_NE(what.find("(ply, json, asc, csv, txt, xyz, pts, xml, hpgl,"), std::string::npos)
             << what;
         EXPECT_EQ(what.find("csv"), what.rfind("csv")) << what;
         EXPECT_NE(what.find("found '.foo'"), std::string::npos) << what;

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -17,6 +18,7 @@
 
 #include "dtm/core/error.hpp"
 #include "dtm/dist/in_process.hpp"
+#include "dtm/io/formats/tin_tiles.hpp"
 #include "dtm/products/build.hpp"
 #include "support/test_support.hpp"
 
@@ -39,8 +41,12 @@ std::string survey_csv(int count, std::uint64_t seed) {
     return text;
 }
 
-dtm::products::BuildReport run(const fs::path& points, const fs::path& out, int ranks) {
+dtm::products::BuildReport run(const fs::path& points,
+                               const fs::path& out,
+                               int ranks,
+                               std::uint64_t ply_limit = 2147483647) {
     dtm::products::DistributedBuildOptions options;
+    options.ply_limit = ply_limit;
     options.source.input = {points, dtm::io::InputRole::points};
     options.source.default_crs = "EPSG:5514";
     options.out_dir = out;
@@ -86,6 +92,29 @@ TEST(DistributedBuild, MeasuresAndRulesEqualTheSerialBuildOnAnyRankCount) {
         for (const std::string& f : r.outputs) EXPECT_TRUE(fs::exists(out / f)) << what << f;
         EXPECT_TRUE(fs::exists(out / "dtm.qgs") && fs::exists(out / "surface.pvtp")) << what;
     }
+}
+
+TEST(DistributedBuild, BeyondOnePlyTheFolderHoldsTheTiledTin) {
+    const dtm::test::ScratchDir dir;
+    dtm::test::write_file(dir / "points.csv", survey_csv(3000, 20261205));
+    const dtm::products::BuildReport one = run(dir / "points.csv", dir / "one", 3);
+    const dtm::products::BuildReport tiled = run(dir / "points.csv", dir / "tiled", 3, 1000);
+    EXPECT_FALSE(fs::exists(dir / "tiled" / "tin.ply"));
+    ASSERT_TRUE(fs::exists(dir / "tiled" / "tin.json"));
+    const auto listed = [&](const std::string& name) {
+        return std::find(tiled.outputs.begin(), tiled.outputs.end(), name) != tiled.outputs.end();
+    };
+    EXPECT_TRUE(listed("tin.json") && !listed("tin.ply"));
+    EXPECT_EQ(std::count_if(tiled.outputs.begin(), tiled.outputs.end(),
+                            [](const std::string& f) { return f.ends_with("-of-3.ply"); }),
+              3);
+    for (const std::string& f : tiled.outputs) EXPECT_TRUE(fs::exists(dir / "tiled" / f)) << f;
+    const dtm::io::LoadedTin tin = dtm::io::read_tin_tiles(dir / "tiled" / "tin.json");
+    dtm::io::write_tin_ply(tin.tin, dir / "back.ply", {.crs_wkt = tin.crs_wkt});
+    EXPECT_EQ(dtm::test::read_file(dir / "back.ply"),
+              dtm::test::read_file(dir / "one" / "tin.ply"));
+    EXPECT_EQ(tiled.surface.triangle_count, one.surface.triangle_count);
+    EXPECT_EQ(tiled.contour_lines, one.contour_lines);
 }
 
 TEST(DistributedBuild, AFailedRunLeavesNoFolder) {

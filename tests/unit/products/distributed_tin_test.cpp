@@ -20,6 +20,7 @@
 #include "dtm/algo/triangulate.hpp"
 #include "dtm/dist/in_process.hpp"
 #include "dtm/io/formats/ply.hpp"
+#include "dtm/io/formats/tin_tiles.hpp"
 #include "dtm/io/inputs.hpp"
 #include "support/test_support.hpp"
 
@@ -123,6 +124,13 @@ std::string ring_csv(double cx, double cy, double r, double z) {
     return text;
 }
 
+/// The bytes write_tin_ply writes for the tiled TIN at @p manifest put together.
+std::string reassembled_ply(const fs::path& manifest, const fs::path& dir) {
+    const dtm::io::LoadedTin tin = dtm::io::read_tin_tiles(manifest);
+    dtm::io::write_tin_ply(tin.tin, dir / "reassembled.ply", {.crs_wkt = tin.crs_wkt});
+    return dtm::test::read_file(dir / "reassembled.ply");
+}
+
 TEST(DistributedTin, BreaklinesBoundaryHolesAndSeedsGiveTheSerialPlyBytesOnAnyRankCount) {
     for (const Case& c : cases()) {
         const dtm::test::ScratchDir dir;
@@ -170,6 +178,14 @@ TEST(DistributedTin, BreaklinesBoundaryHolesAndSeedsGiveTheSerialPlyBytesOnAnyRa
                 {jitter, 3});
             EXPECT_TRUE(dtm::test::read_file(options.output) == expected)
                 << c.name << " on " << ranks << " ranks";
+            // The tiled TIN put together is the same TIN: the same PLY bytes.
+            options.output = dir / ("tiles-" + std::to_string(ranks) + ".json");
+            dtm::dist::run_in_process(
+                ranks,
+                [&](dtm::dist::Comm& comm) { dtm::products::distributed_tin(comm, options, {}); },
+                {jitter, 5});
+            EXPECT_EQ(reassembled_ply(options.output, dir / ""), expected)
+                << c.name << " tiled on " << ranks << " ranks";
         }
     }
 }
@@ -205,6 +221,89 @@ TEST(DistributedTin, MaxEdgePeelsTheSerialBorderOnAnyRankCount) {
                 << c.name << " on " << ranks << " ranks";
         }
     }
+}
+
+}  // namespace
+
+namespace {
+
+/// Runs distributed_tin on @p ranks in-process ranks.
+dtm::products::DistributedTinResult run_tin(int ranks,
+                                            const dtm::products::DistributedTinOptions& o) {
+    dtm::products::DistributedTinResult result;
+    dtm::dist::run_in_process(ranks, [&](dtm::dist::Comm& comm) {
+        auto r = dtm::products::distributed_tin(comm, o, {});
+        if (comm.rank() == 0) result = r;
+    });
+    return result;
+}
+
+TEST(DistributedTin, TooBigForOnePlyGivesTheTiledTinWhichReplacesTheOldOneWhole) {
+    const Case c = cases()[2];  // S-JTSK magnitudes
+    const dtm::test::ScratchDir dir;
+    dtm::test::write_file(dir / "points.csv", points_csv(c));
+    dtm::products::DistributedTinOptions options;
+    options.source.input = {dir / "points.csv", dtm::io::InputRole::points};
+    options.source.default_crs = "EPSG:5514";
+    options.output = dir / "tin.ply";
+    const std::string serial = [&] {
+        run_tin(1, options);
+        return dtm::test::read_file(dir / "tin.ply");
+    }();
+    fs::remove(dir / "tin.ply");
+    // Beyond the PLY's limit (lowered here) the run writes tin.json and its tiles instead.
+    options.ply_limit = 1000;
+    const auto first = run_tin(4, options);
+    EXPECT_EQ(first.written, dir / "tin.json");
+    EXPECT_FALSE(fs::exists(dir / "tin.ply"));
+    ASSERT_EQ(first.tiles.size(), 4U);
+    for (const std::string& t : first.tiles) EXPECT_TRUE(fs::exists(dir / t)) << t;
+    EXPECT_EQ(reassembled_ply(dir / "tin.json", dir / ""), serial);
+    // A second run on 3 ranks: new tiles, the old ones gone, the same TIN.
+    const auto second = run_tin(3, options);
+    ASSERT_EQ(second.tiles.size(), 3U);
+    for (const std::string& t : first.tiles) EXPECT_FALSE(fs::exists(dir / t)) << t;
+    EXPECT_EQ(reassembled_ply(dir / "tin.json", dir / ""), serial);
+    // Every subcommand reads the manifest through the reader table.
+    dtm::io::LoadOptions load;
+    load.files = {{dir / "tin.json", dtm::io::InputRole::points}};
+    const dtm::io::LoadedInputs loaded = dtm::io::load_inputs(load);
+    ASSERT_TRUE(loaded.tin.has_value());
+    EXPECT_EQ(loaded.tin->triangles.size(), second.triangles);
+}
+
+TEST(DistributedTin, ABrokenTiledTinNamesWhatIsWrong) {
+    const Case c = cases()[0];
+    const dtm::test::ScratchDir dir;
+    dtm::test::write_file(dir / "points.csv", points_csv(c));
+    dtm::products::DistributedTinOptions options;
+    options.source.input = {dir / "points.csv", dtm::io::InputRole::points};
+    options.output = dir / "tin.json";
+    const auto r = run_tin(3, options);
+    const std::string manifest = dtm::test::read_file(dir / "tin.json");
+    const auto message = [&](const std::string& text) {
+        dtm::test::write_file(dir / "tin.json", text);
+        try {
+            (void)dtm::io::read_tin_tiles(dir / "tin.json");
+        } catch (const dtm::InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    std::string text = manifest;
+    text.replace(text.find("\"vertices\": 4000"), 16, "\"vertices\": 4001");
+    EXPECT_NE(message(text).find("vertex 4000 is in no tile"), std::string::npos) << message(text);
+    text = manifest;
+    text.replace(text.find("dtm-tin-tiles"), 13, "dtm-tin-tilez");
+    EXPECT_NE(message(text).find("not a valid tiled TIN manifest"), std::string::npos);
+    const fs::path tile = dir / r.tiles[1];
+    fs::rename(tile, dir / "moved.ply");
+    EXPECT_NE(message(manifest).find(r.tiles[1] + " is missing"), std::string::npos)
+        << message(manifest);
+    fs::rename(dir / "moved.ply", tile);
+    EXPECT_EQ(message(manifest), "no error");
+    // A tile alone is a dtm PLY any subcommand reads: a piece of the surface.
+    EXPECT_GT(dtm::io::read_tin_ply(tile).tin.triangles.size(), 100U);
 }
 
 }  // namespace

@@ -5,7 +5,9 @@
 /// through the reader table (reader.hpp).
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -17,6 +19,9 @@ namespace dtm::io {
 struct TinWriteOptions {
     std::string crs_wkt;  ///< written where the format can carry it (PLY: a `comment crs` line)
     bool ascii = false;   ///< PLY: text instead of binary little endian
+    /// PLY: each vertex's number in the whole TIN, as a `vertex_id` element after the edges
+    /// (a tile of a tiled TIN, formats/tin_tiles.hpp); empty: none.
+    std::span<const std::uint64_t> vertex_ids = {};
 };
 
 /// Writes @p tin to @p path, choosing the format by extension; atomically (temporary file, then

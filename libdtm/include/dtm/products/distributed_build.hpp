@@ -33,6 +33,9 @@ struct DistributedBuildOptions {
     double cell = 0.0;            ///< DEM cell; 0: default_cell() of the TIN (rules.hpp)
     double interval = 0.0;        ///< contour interval; 0: default_interval()
     std::size_t index_every = 5;  ///< every n-th level is an index contour (0: none)
+    /// Vertices or triangles beyond which tin.ply is written as the tiled TIN tin.json (a PLY
+    /// indexes 2^31 - 1; tests lower it).
+    std::uint64_t ply_limit = 2147483647;
     /// How the report's rules name options (BuildOptions::wording).
     std::function<std::string(std::string_view)> wording;
 };

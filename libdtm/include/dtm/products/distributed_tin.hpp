@@ -32,7 +32,11 @@ struct DistributedSource {
 
 struct DistributedTinOptions {
     DistributedSource source;
-    std::filesystem::path output;  ///< a .ply
+    /// A .ply, or a .json for a tiled TIN (io/formats/tin_tiles.hpp) whatever its size.
+    std::filesystem::path output;
+    /// Vertices or faces beyond which a .ply output is written as a tiled TIN instead, at the
+    /// same path with the extension .json (a PLY indexes 2^31 - 1; tests lower it).
+    std::uint64_t ply_limit = 2147483647;
 };
 
 /// What every distributed product reports of the run and its surface.
@@ -51,11 +55,13 @@ struct DistributedTinResult : DistributedCounts {
     std::uint64_t band_triangles = 0;
     std::uint32_t widenings = 0;
     std::uint64_t constrained_edges = 0;
+    std::filesystem::path written;   ///< the PLY or the tiled TIN's manifest
+    std::vector<std::string> tiles;  ///< a tiled TIN's tiles, next to its manifest
 };
 
 /// Collective: reads the points by byte ranges, merges exact duplicates, spreads the kernel's
 /// tree over the ranks, triangulates and writes the PLY (MPI-IO), as `dtm tin` does on one
-/// machine for the same input and options.
+/// machine for the same input and options, or the tiled TIN (asked for, or beyond ply_limit).
 /// @throws InputError (the serial reader's and triangulation's messages) or Error on every rank.
 DistributedTinResult distributed_tin(dist::Comm& comm,
                                      const DistributedTinOptions& options,

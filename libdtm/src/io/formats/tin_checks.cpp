@@ -71,4 +71,25 @@ void check_tin_from_file(const Tin& tin) {
     }
 }
 
+ReadResult read_tin_input(const InputFile& file,
+                          const Progress& progress,
+                          const char* format,
+                          LoadedTin (*load)(const std::filesystem::path&)) {
+    if (file.role != InputRole::points) {
+        throw InputError(file.path, 0, 0,
+                         std::string("a ") + format +
+                             " is a survey input (the surface itself), not a line or ring input");
+    }
+    progress.report(0.0, std::string("reading the ") + format);
+    LoadedTin loaded = load(file.path);
+    ReadResult result;
+    result.terrain.points = loaded.tin.vertices;
+    result.crs_wkt = std::move(loaded.crs_wkt);
+    result.summary.path = file.path;
+    result.summary.format = format;
+    result.summary.triangles = loaded.tin.triangles.size();
+    result.tin = std::move(loaded.tin);
+    return result;
+}
+
 }  // namespace dtm::io::detail

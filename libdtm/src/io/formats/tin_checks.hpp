@@ -5,11 +5,24 @@
 // which already refuses edges used twice in one direction.
 #pragma once
 
+#include <filesystem>
+
+#include "dtm/core/progress.hpp"
 #include "dtm/core/tin.hpp"
+#include "dtm/io/formats/ply.hpp"
+#include "dtm/io/reader.hpp"
 
 namespace dtm::io::detail {
 
 /// @throws InputError (without a file: the reader adds it) naming the first bad face or edge.
 void check_tin_from_file(const Tin& tin);
+
+/// A reader table entry for a file that is a TIN (the PLY, the tiled TIN): refuses line and ring
+/// roles, reads it with @p load and gives the TIN with its vertices as points and its CRS.
+/// @p format names it in the summary.
+[[nodiscard]] ReadResult read_tin_input(const InputFile& file,
+                                        const Progress& progress,
+                                        const char* format,
+                                        LoadedTin (*load)(const std::filesystem::path&));
 
 }  // namespace dtm::io::detail

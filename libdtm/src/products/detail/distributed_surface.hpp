@@ -6,8 +6,10 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "dist/kernel.hpp"
 #include "dtm/core/progress.hpp"
@@ -34,6 +36,21 @@ struct DistributedSurface {
 DistributedSurface distributed_surface(dist::Comm& comm,
                                        const DistributedSource& source,
                                        const Progress& progress);
+
+/// What write_tin_file() wrote.
+struct TinFileWritten {
+    std::filesystem::path written;   ///< the PLY or the tiled TIN's manifest
+    std::vector<std::string> tiles;  ///< a tiled TIN's tiles, next to its manifest
+    std::uint64_t constrained_edges = 0;
+};
+
+/// Collective: the TIN of @p surface as one PLY at @p output (MPI-IO), or as a tiled TIN when
+/// @p output is a .json or the TIN has more than @p ply_limit vertices or triangles (then at
+/// @p output with the extension .json).
+TinFileWritten write_tin_file(dist::Comm& comm,
+                              const DistributedSurface& surface,
+                              const std::filesystem::path& output,
+                              std::uint64_t ply_limit);
 
 /// The counts of @p surface (bytes_sent is left to the end of the product).
 [[nodiscard]] DistributedCounts counts_of(const dist::Comm& comm,

@@ -4,8 +4,10 @@
 /// (layout in docs/formats.md). Sources: src/io/formats/ply/ (ply_writer.cpp, ply_reader.cpp).
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "dtm/core/progress.hpp"
 #include "dtm/core/tin.hpp"
@@ -31,6 +33,8 @@ void write_tin_ply(const Tin& tin,
 struct LoadedTin {
     Tin tin;
     std::string crs_wkt;
+    /// A tile's vertex_id element: each vertex's number in the whole TIN; empty in a plain TIN.
+    std::vector<std::uint64_t> vertex_ids;
 };
 
 /// Reads a PLY TIN written by dtm (binary or ASCII): vertices, faces and constrained edges.

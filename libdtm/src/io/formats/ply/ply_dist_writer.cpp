@@ -17,13 +17,12 @@
 #include <cstring>
 #include <limits>
 #include <string>
-#include <unordered_set>
 
-#include "algo/detail/tin_build.hpp"
 #include "dist/domain.hpp"
 #include "dist/mesh_vertices.hpp"
 #include "dtm/core/error.hpp"
 #include "dtm/io/formats/ply.hpp"
+#include "io/formats/ply/ply_dist_edges.hpp"
 
 namespace dtm::io {
 
@@ -38,41 +37,19 @@ struct EdgeRecord {
     std::uint8_t kind;
 };
 
-/// Rank 0: the PLY `edge` element's bytes (empty elsewhere). As finish_tin lists them: every
-/// constrained edge of a kept triangle once (from the side where a < b, or from its only kept
-/// triangle), sorted by (a, b), with the strongest kind of its bits.
+/// Rank 0: the PLY `edge` element's bytes (empty elsewhere), sorted by (a, b) as finish_tin
+/// sorts them.
 template <class Number>
 std::vector<std::byte> constrained_edges(dist::Comm& comm,
                                          const dist::LocalMesh& mesh,
                                          const std::vector<std::uint64_t>& ghosts,
                                          const Number& number,
                                          bool trimmed) {
-    // A removed neighbour leaves the edge on the border, as a hull ghost does.
-    const std::unordered_set<std::uint64_t> removed_next_door =
-        trimmed ? dist::foreign_removed(comm, mesh) : std::unordered_set<std::uint64_t>{};
-    const auto outside = [&](std::uint64_t slot) {
-        if (std::binary_search(ghosts.begin(), ghosts.end(), slot)) return true;
-        if (!trimmed) return false;
-        return mesh.owns(slot) ? mesh.removed[slot - mesh.first_slot] != 0
-                               : removed_next_door.contains(slot);
-    };
     std::vector<dist::Bytes> out(static_cast<std::size_t>(comm.size()));
-    for (std::uint64_t s = 0; s < mesh.bits.size(); ++s) {
-        const Triangle& t = mesh.tris[s];
-        if (!mesh.kept(s)) continue;
-        for (unsigned i = 0; i < 3; ++i) {
-            const std::uint8_t bits = mesh.bits[s][i];
-            if (bits == 0) continue;
-            const std::int32_t a = number(t.v[i]);
-            const std::int32_t c = number(t.v[(i + 1) % 3]);
-            const std::uint64_t twin = mesh.at(mesh.first_slot + s).n[i] >> 2;
-            if (a < c || outside(twin)) {
-                dist::append_value(
-                    out[0],
-                    EdgeRecord{std::min(a, c), std::max(a, c),
-                               static_cast<std::uint8_t>(detail::constraint_kind_of(bits))});
-            }
-        }
+    for (const detail::EdgeNumbers& e :
+         detail::own_constrained_edges(comm, mesh, ghosts, number, trimmed)) {
+        dist::append_value(out[0], EdgeRecord{static_cast<std::int32_t>(e.a),
+                                              static_cast<std::int32_t>(e.b), e.kind});
     }
     std::vector<EdgeRecord> all = dist::concatenated<EdgeRecord>(comm.alltoallv(std::move(out)));
     std::sort(all.begin(), all.end(), [](const EdgeRecord& x, const EdgeRecord& y) {
@@ -108,7 +85,7 @@ std::uint64_t write_distributed_ply(dist::Comm& comm,
     const std::uint64_t faces = trimmed ? kept.count : real;
     const auto face_of = [&](std::uint64_t s) {
         if (trimmed) return kept.face[s];
-        if (detail::is_ghost_triangle(mesh.tris[s])) return dist::FaceNumbers::none;
+        if (dtm::detail::is_ghost_triangle(mesh.tris[s])) return dist::FaceNumbers::none;
         return dist::serial_face(mesh.first_slot + s, ghosts, real);
     };
     const std::uint64_t vertices = merged.total_vertices;

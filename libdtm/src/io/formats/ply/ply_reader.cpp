@@ -40,6 +40,7 @@ struct Header {
     std::size_t face_count = 0;
     std::size_t edge_count = 0;
     bool edge_has_kind = false;
+    std::size_t id_count = 0;     ///< the optional vertex_id element of a tile (tin_tiles.hpp)
     std::size_t body_offset = 0;  ///< byte offset just after "end_header\n"
     std::size_t line_count = 0;   ///< lines up to and including end_header
 };
@@ -62,6 +63,7 @@ bool is_type(std::string_view word, std::string_view type) {
     if (type == "double") return word == "float64";
     if (type == "int") return word == "int32";
     if (type == "uchar") return word == "uint8";
+    if (type == "uint") return word == "uint32";
     return false;
 }
 
@@ -77,6 +79,10 @@ bool expected_property(std::string_view element,
         return index == 0 && w.size() == 5 && w[1] == "list" && is_type(w[2], "uchar") &&
                is_type(w[3], "int") && w[4] == "vertex_indices";
     }
+    if (element == "vertex_id") {
+        constexpr std::string_view names[] = {"high", "low"};
+        return index < 2 && w.size() == 3 && is_type(w[1], "uint") && w[2] == names[index];
+    }
     constexpr std::string_view names[] = {"vertex1", "vertex2", "kind"};
     const std::string_view type = index == 2 ? "uchar" : "int";
     return index < 3 && w.size() == 3 && is_type(w[1], type) && w[2] == names[index];
@@ -87,14 +93,14 @@ struct HeaderParser {
     Header header;
     std::string current;             ///< element whose properties are being declared
     std::size_t property_count = 0;  ///< properties declared so far for `current`
-    int last_element = -1;           ///< 0 vertex, 1 face, 2 edge: enforces the order
+    int last_element = -1;           ///< 0 vertex, 1 face, 2 edge, 3 vertex_id: enforces the order
 
     [[noreturn]] void fail(std::size_t line, const std::string& what) const {
         throw InputError(path, line, 0, what);
     }
 
     void finish_element(std::size_t line) const {
-        const std::size_t needed = current == "vertex" ? 3 : current == "face" ? 1 : 2;
+        const std::size_t needed = current == "vertex" ? 3 : current == "face" ? 1 : 2;  // edge, id
         if (!current.empty() && property_count < needed) {
             fail(line,
                  "element '" + current +
@@ -104,7 +110,7 @@ struct HeaderParser {
 
     void element(std::size_t line, const std::vector<std::string_view>& w) {
         finish_element(line);
-        constexpr std::string_view names[] = {"vertex", "face", "edge"};
+        constexpr std::string_view names[] = {"vertex", "face", "edge", "vertex_id"};
         const auto* found =
             w.size() == 3 ? std::find(std::begin(names), std::end(names), w[1]) : std::end(names);
         const int which = static_cast<int>(found - std::begin(names));
@@ -118,9 +124,14 @@ struct HeaderParser {
             count > static_cast<std::uint64_t>(std::numeric_limits<std::int32_t>::max())) {
             fail(line, "bad element count '" + std::string(w[2]) + "'");
         }
+        if (which == 3 && count != header.vertex_count) {
+            fail(line, "element vertex_id has " + std::to_string(count) + " entries for " +
+                           std::to_string(header.vertex_count) + " vertices");
+        }
         (which == 0   ? header.vertex_count
          : which == 1 ? header.face_count
-                      : header.edge_count) = static_cast<std::size_t>(count);
+         : which == 2 ? header.edge_count
+                      : header.id_count) = static_cast<std::size_t>(count);
         last_element = which;
         current = std::string(w[1]);
         property_count = 0;
@@ -216,6 +227,7 @@ struct BodyReader {
     const fs::path& path;
     const Header& header;
     Tin tin;
+    std::vector<std::uint64_t> ids;  ///< the vertex_id element, if any
 
     [[noreturn]] void fail(std::size_t line, const std::string& what) const {
         throw InputError(path, line, 0, what);
@@ -331,6 +343,14 @@ void read_binary_body(BodyReader& reader, std::string_view body) {
         const unsigned kind = h.edge_has_kind ? static_cast<unsigned char>(p[8]) : 0U;
         reader.add_edge(get_le<std::int32_t>(p), get_le<std::int32_t>(p + 4), kind, e, 0);
     }
+    if (static_cast<std::size_t>(end - p) / 8 < h.id_count) {
+        truncated("vertex_id", static_cast<std::size_t>(end - p) / 8, h.id_count);
+    }
+    reader.ids.resize(h.id_count);
+    for (std::size_t i = 0; i < h.id_count; ++i, p += 8) {
+        reader.ids[i] =
+            std::uint64_t{get_le<std::uint32_t>(p)} << 32 | get_le<std::uint32_t>(p + 4);
+    }
     if (p != end) {
         reader.fail(0, std::to_string(end - p) + " unexpected bytes after the last element");
     }
@@ -415,6 +435,13 @@ void read_ascii_body(BodyReader& reader, std::string_view body) {
                         static_cast<unsigned>(std::min<std::int64_t>(values[2], 255)), e,
                         cursor.line);
     }
+    reader.ids.reserve(h.id_count);
+    for (std::size_t i = 0; i < h.id_count; ++i) {
+        need("vertex_id", i, h.id_count);
+        std::uint32_t values[2];
+        parse_numbers(reader, text, cursor.line, values, 2);
+        reader.ids.push_back(std::uint64_t{values[0]} << 32 | values[1]);
+    }
     if (cursor.next(text)) reader.fail(cursor.line, "unexpected data after the last element");
 }
 
@@ -424,7 +451,7 @@ LoadedTin read_tin_ply(const fs::path& path) {
     const detail::FileBytes file(path);
     const std::string_view bytes = file.view();
     const Header header = parse_header(path, bytes);
-    BodyReader reader{path, header, {}};
+    BodyReader reader{path, header, {}, {}};
     const std::string_view body = bytes.substr(header.body_offset);
     if (header.encoding == Encoding::ascii) {
         read_ascii_body(reader, body);
@@ -437,24 +464,11 @@ LoadedTin read_tin_ply(const fs::path& path) {
     } catch (const InputError& e) {
         throw InputError(path, 0, 0, e.what());
     }
-    return {std::move(reader.tin), header.crs_wkt};
+    return {std::move(reader.tin), header.crs_wkt, std::move(reader.ids)};
 }
 
 ReadResult read_ply(const InputFile& file, const ReadOptions&, const Progress& progress) {
-    if (file.role != InputRole::points) {
-        throw InputError(file.path, 0, 0,
-                         "a dtm PLY TIN is a survey input (the surface itself), not a line or "
-                         "ring input");
-    }
-    progress.report(0.0, "reading the TIN");
-    LoadedTin loaded = read_tin_ply(file.path);
-    ReadResult result;
-    result.terrain.points = loaded.tin.vertices;
-    result.crs_wkt = std::move(loaded.crs_wkt);
-    result.summary.path = file.path;
-    result.summary.format = "dtm PLY TIN";
-    result.tin = std::move(loaded.tin);
-    return result;
+    return detail::read_tin_input(file, progress, "dtm PLY TIN", &read_tin_ply);
 }
 
 }  // namespace dtm::io

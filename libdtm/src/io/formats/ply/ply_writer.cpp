@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <cstring>
 #include <limits>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -121,6 +122,10 @@ std::string ply_header(std::size_t vertices,
     text += "property list uchar int vertex_indices\n";
     text += "element edge " + std::to_string(edges) + "\n";
     text += "property int vertex1\nproperty int vertex2\nproperty uchar kind\n";
+    if (!options.vertex_ids.empty()) {
+        text += "element vertex_id " + std::to_string(options.vertex_ids.size()) + "\n";
+        text += "property uint high\nproperty uint low\n";
+    }
     text += "end_header\n";
     return text;
 }
@@ -146,7 +151,10 @@ void check_counts(const Tin& tin, const std::filesystem::path& path) {
                 " but the TIN has " + std::to_string(vertex_count) + " vertices");
 }
 
-void write_binary_body(const Tin& tin, const std::filesystem::path& path, BufferedFile& out) {
+void write_binary_body(const Tin& tin,
+                       const std::filesystem::path& path,
+                       std::span<const std::uint64_t> ids,
+                       BufferedFile& out) {
     constexpr std::size_t chunk = 65536;
     const std::size_t vertex_count = tin.vertices.size();
     for (std::size_t begin = 0; begin < vertex_count; begin += chunk) {
@@ -187,6 +195,16 @@ void write_binary_body(const Tin& tin, const std::filesystem::path& path, Buffer
         }
         out.advance(static_cast<std::size_t>(p - start));
     }
+    for (std::size_t begin = 0; begin < ids.size(); begin += chunk) {
+        const std::size_t end = std::min(ids.size(), begin + chunk);
+        char* const start = out.reserve((end - begin) * 8);
+        char* p = start;
+        for (std::size_t i = begin; i < end; ++i) {
+            p = put_le(p, static_cast<std::uint32_t>(ids[i] >> 32));
+            p = put_le(p, static_cast<std::uint32_t>(ids[i]));
+        }
+        out.advance(static_cast<std::size_t>(p - start));
+    }
 }
 
 template <class T>
@@ -196,7 +214,10 @@ char* put_text(char* out, T value, char separator) noexcept {
     return out + 1;
 }
 
-void write_ascii_body(const Tin& tin, const std::filesystem::path& path, BufferedFile& out) {
+void write_ascii_body(const Tin& tin,
+                      const std::filesystem::path& path,
+                      std::span<const std::uint64_t> ids,
+                      BufferedFile& out) {
     const std::size_t vertex_count = tin.vertices.size();
     for (const Point3& p : tin.vertices) {
         char* const start = out.reserve(3 * 33);
@@ -227,6 +248,12 @@ void write_ascii_body(const Tin& tin, const std::filesystem::path& path, Buffere
         q = put_text(q, static_cast<unsigned>(edge.kind), '\n');
         out.advance(static_cast<std::size_t>(q - start));
     }
+    for (const std::uint64_t id : ids) {
+        char* const start = out.reserve(2 * 33);
+        char* q = put_text(start, static_cast<std::uint32_t>(id >> 32), ' ');
+        q = put_text(q, static_cast<std::uint32_t>(id), '\n');
+        out.advance(static_cast<std::size_t>(q - start));
+    }
 }
 
 }  // namespace
@@ -235,13 +262,18 @@ void write_tin_ply(const Tin& tin,
                    const std::filesystem::path& path,
                    const TinWriteOptions& options) {
     check_counts(tin, path);
+    if (!options.vertex_ids.empty() && options.vertex_ids.size() != tin.vertices.size()) {
+        throw Error("cannot write " + path.string() + ": " +
+                    std::to_string(options.vertex_ids.size()) + " vertex ids for " +
+                    std::to_string(tin.vertices.size()) + " vertices");
+    }
     BufferedFile out(path);
     out.write(
         ply_header(tin.vertices.size(), tin.triangles.size(), tin.constraints.size(), options));
     if (options.ascii) {
-        write_ascii_body(tin, path, out);
+        write_ascii_body(tin, path, options.vertex_ids, out);
     } else {
-        write_binary_body(tin, path, out);
+        write_binary_body(tin, path, options.vertex_ids, out);
     }
     out.close();
 }

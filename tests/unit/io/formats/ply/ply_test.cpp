@@ -278,3 +278,42 @@ TEST(PlyReader, FacesSharingAnEdgeInTheSameDirectionAreAnInputError) {
                "end_header\n0 0 0\n1 0 0\n0 1 0\n1 -1 0\n3 0 1 2\n3 0 1 3\n");
     EXPECT_NE(error_of(dir / "t.ply").find("same direction"), std::string::npos);
 }
+
+namespace {
+
+TEST(PlyTile, VertexIdsRoundTripInBothEncodingsBeyond32Bits) {
+    const ScratchDir dir;
+    const Tin tin = grid_tin(3, 3);
+    std::vector<std::uint64_t> ids;
+    for (std::size_t i = 0; i < tin.vertices.size(); ++i)
+        ids.push_back((std::uint64_t{5} << 32) + 7 * i);
+    for (const bool ascii : {false, true}) {
+        dtm::io::TinWriteOptions options;
+        options.ascii = ascii;
+        options.vertex_ids = ids;
+        dtm::io::write_tin_ply(tin, dir / "tile.ply", options);
+        const dtm::io::LoadedTin back = dtm::io::read_tin_ply(dir / "tile.ply");
+        EXPECT_EQ(back.vertex_ids, ids) << (ascii ? "ascii" : "binary");
+        EXPECT_EQ(back.tin.triangles.size(), tin.triangles.size());
+    }
+    EXPECT_TRUE(dtm::io::read_tin_ply([&] {
+                    dtm::io::write_tin_ply(tin, dir / "plain.ply", {});
+                    return dir / "plain.ply";
+                }())
+                    .vertex_ids.empty());
+}
+
+TEST(PlyTile, AVertexIdElementOfAnotherCountNamesTheHeaderLine) {
+    const ScratchDir dir;
+    write_file(dir / "t.ply",
+               "ply\nformat ascii 1.0\nelement vertex 3\nproperty double x\nproperty double y\n"
+               "property double z\nelement face 1\nproperty list uchar int vertex_indices\n"
+               "element edge 0\nproperty int vertex1\nproperty int vertex2\n"
+               "element vertex_id 2\nproperty uint high\nproperty uint low\n"
+               "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n0 1\n0 2\n");
+    const std::string message = error_of(dir / "t.ply");
+    EXPECT_NE(message.find("t.ply:12"), std::string::npos) << message;
+    EXPECT_NE(message.find("vertex_id has 2 entries for 3 vertices"), std::string::npos) << message;
+}
+
+}  // namespace
