@@ -8,6 +8,7 @@
 // same job runs once on the MPI ranks instead (every rank also runs the serial kernel as the
 // reference and checks its own slots against it).
 #include <sys/resource.h>
+#include <unistd.h>
 
 #include <chrono>
 #include <cmath>
@@ -56,6 +57,16 @@ std::vector<dist::Point> uniform(std::size_t first, std::size_t last) {
 
 std::vector<dist::Point> uniform(std::size_t n) { return uniform(0, n); }
 
+/// Resident memory of this process now, bytes (/proc/self/statm).
+std::int64_t current_rss() {
+    long pages = 0, resident = 0;
+    if (std::FILE* f = std::fopen("/proc/self/statm", "r")) {
+        if (std::fscanf(f, "%ld %ld", &pages, &resident) != 2) resident = 0;
+        std::fclose(f);
+    }
+    return static_cast<std::int64_t>(resident) * sysconf(_SC_PAGESIZE);
+}
+
 /// Peak resident memory of this process, bytes.
 std::int64_t peak_rss() {
     rusage usage{};
@@ -75,6 +86,8 @@ int run_mpi(int argc, char** argv, const std::vector<std::size_t>& sizes) {
     // DTM_SIM_MEMORY=1: no serial reference (it would hold every point on every rank); every
     // rank's peak resident memory per point of its share instead.
     const bool memory_only = std::getenv("DTM_SIM_MEMORY") != nullptr;
+    // What the process holds before any point (MPI, TBB, the libraries): not per point.
+    const std::int64_t start_rss = current_rss();
     for (std::size_t n : sizes) {
         double serial_s = 0.0;
         detail::GhostMesh serial;
@@ -104,13 +117,19 @@ int run_mpi(int argc, char** argv, const std::vector<std::size_t>& sizes) {
         const std::int64_t per_point =
             peak_rss() / std::max<std::int64_t>(1, static_cast<std::int64_t>(d.input_ids.size()));
         const std::int64_t worst = comm.allreduce(per_point, dist::Reduce::max);
+        const std::int64_t net_per_point =
+            (peak_rss() - start_rss) /
+            std::max<std::int64_t>(1, static_cast<std::int64_t>(d.input_ids.size()));
+        const std::int64_t worst_net = comm.allreduce(net_per_point, dist::Reduce::max);
+        const std::int64_t start_mib = comm.allreduce(start_rss >> 20, dist::Reduce::max);
         failures += bad > 0 ? 1 : 0;
         if (comm.rank() == 0) {
             if (memory_only) {
                 std::printf(
                     "| %zu | %zu MPI ranks | %.3f s | peak per rank at most %lld bytes per point "
-                    "of its share |\n",
-                    n, p, static_cast<double>(slowest) / 1e6, static_cast<long long>(worst));
+                    "of its share; %lld above the %lld MiB a rank holds before any point |\n",
+                    n, p, static_cast<double>(slowest) / 1e6, static_cast<long long>(worst),
+                    static_cast<long long>(worst_net), static_cast<long long>(start_mib));
             } else {
                 std::printf(
                     "| %zu | %zu MPI ranks | %.3f s | %.3f s | %.2f | slots differing: %lld |\n", n,

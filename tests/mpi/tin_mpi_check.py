@@ -1,12 +1,16 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
 """`mpirun -np P dtm tin POINTS.csv -o tin.ply` against `dtm tin` on one process (issue 18):
-the same PLY bytes (also with hard breaklines crossing the seams and each other), the serial reader's message and exit code 2 for a bad line in the last
+the same PLY bytes (also with hard breaklines crossing the seams and each other), the tiled TIN
+(`-o tin.json`) put together by `dtm tin` and `dtm grid` as the same TIN, a GeoPackage read by
+feature ranges (also filtered by `--where`), the serial reader's
+message and exit code 2 for a bad line in the last
 rank's byte range (printed once), a clear refusal of what the distributed run does not take yet,
 and `--stats` naming the ranks. Usage: tin_mpi_check.py DTM MPIEXEC NP"""
 import json
 import os
 import random
+import subprocess
 import tempfile
 
 from mpi_checks import check, dtm, finish, ranks, run, write_breaklines, write_ring
@@ -76,6 +80,27 @@ with tempfile.TemporaryDirectory() as tmp:
         a, b = json.loads(serial.stdout), json.loads(dist.stdout)
         check(a["removed_triangles"] > 1000 and a["removed_triangles"] == b["removed_triangles"],
               f"boundary and hole: removed {a['removed_triangles']} serial, {b['removed_triangles']} distributed")
+    # The tiled TIN (R-P2): one PLY per rank and a manifest, read back by any subcommand as the
+    # same TIN: `dtm tin` rewrites it as the serial PLY's bytes, `dtm grid` gives the same cells.
+    tiled = run(["tin", points, "-o", os.path.join(tmp, "dist-d.json"), "-q"] + domain, True)
+    check(tiled.returncode == 0, f"tiled TIN: exit {tiled.returncode}: {tiled.stderr}")
+    if tiled.returncode == 0:
+        with open(os.path.join(tmp, "dist-d.json")) as f:
+            manifest = json.load(f)
+        check(manifest["format"] == "dtm-tin-tiles" and len(manifest["tiles"]) == ranks,
+              f"tiled TIN: {len(manifest['tiles'])} tiles on {ranks} ranks")
+        back = run(["tin", os.path.join(tmp, "dist-d.json"), "-o", os.path.join(tmp, "back-d.ply"), "-q"], False)
+        check(back.returncode == 0, f"dtm tin reading the tiled TIN: {back.stderr}")
+        if back.returncode == 0:
+            with open(os.path.join(tmp, "serial-d.ply"), "rb") as a, open(os.path.join(tmp, "back-d.ply"), "rb") as b:
+                check(a.read() == b.read(), "tiled TIN: put together it differs from the serial PLY")
+        grids = [run(["grid", source, "--cell", "10", "-o", os.path.join(tmp, name), "-q"], False)
+                 for source, name in ((os.path.join(tmp, "dist-d.json"), "tiles.tif"),
+                                      (os.path.join(tmp, "serial-d.ply"), "serial-d.tif"))]
+        check(all(g.returncode == 0 for g in grids), f"dtm grid of the tiled TIN: {[g.stderr for g in grids]}")
+        if all(g.returncode == 0 for g in grids):
+            with open(os.path.join(tmp, "tiles.tif"), "rb") as a, open(os.path.join(tmp, "serial-d.tif"), "rb") as b:
+                check(a.read() == b.read(), "dtm grid: the tiled TIN's DEM differs from the PLY's")
 
     serial = run(["tin", points, "-o", os.path.join(tmp, "serial-m.ply"), "--max-edge", "25", "-q"], False)
     dist = run(["tin", points, "-o", os.path.join(tmp, "dist-m.ply"), "--max-edge", "25", "-q"], True)
@@ -100,6 +125,30 @@ with tempfile.TemporaryDirectory() as tmp:
                 check(a.read() == b.read(), "river survey: the PLY differs from the serial one")
     else:
         print("river survey: ../shared/data absent, skipped")
+
+    # An OGR point source read by feature ranges (R-D2): a GeoPackage made by ogr2ogr, with a
+    # `where` filter too; the same PLY bytes as `dtm tin` on one process.
+    plain = os.path.join(tmp, "plain.csv")
+    with open(points) as f, open(plain, "w") as out:
+        out.write("id,x,y,z\n")
+        out.writelines(r for r in f.read().splitlines(True)[2:] if r[:1] in "PD")
+    gpkg = os.path.join(tmp, "survey.gpkg")
+    made = subprocess.run(["ogr2ogr", "-f", "GPKG", gpkg, plain, "-a_srs", "EPSG:5514",
+                           "-oo", "X_POSSIBLE_NAMES=x", "-oo", "Y_POSSIBLE_NAMES=y",
+                           "-oo", "Z_POSSIBLE_NAMES=z", "-nln", "survey"], capture_output=True, text=True)
+    check(made.returncode == 0, f"ogr2ogr: {made.stderr}")
+    if made.returncode == 0:
+        for extra, tag in (([], "all"), (["--where", "z > 280"], "where")):
+            serial = run(["tin", gpkg, "-o", os.path.join(tmp, f"serial-{tag}.ply"), "-q"] + extra, False)
+            dist = run(["tin", gpkg, "-o", os.path.join(tmp, f"dist-{tag}.ply"), "-q"] + extra, True)
+            check(serial.returncode == 0 and dist.returncode == 0,
+                  f"GeoPackage ({tag}): exit {serial.returncode} / {dist.returncode}: {serial.stderr} {dist.stderr}")
+            if serial.returncode == 0 and dist.returncode == 0:
+                with open(os.path.join(tmp, f"serial-{tag}.ply"), "rb") as a, \
+                        open(os.path.join(tmp, f"dist-{tag}.ply"), "rb") as b:
+                    serial_bytes = a.read()
+                    check(b"EPSG" in serial_bytes[:4000], f"GeoPackage ({tag}): no CRS in the PLY")
+                    check(serial_bytes == b.read(), f"GeoPackage ({tag}): the PLY differs from the serial one")
 
     stats = run(["tin", points, "-o", os.path.join(tmp, "stats.ply"), "--stats"], True)
     check(stats.returncode == 0, f"--stats: {stats.stderr}")

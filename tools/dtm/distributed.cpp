@@ -5,6 +5,7 @@
 
 #include "dtm/core/error.hpp"
 #include "dtm/io/extension.hpp"
+#include "dtm/io/reader.hpp"
 
 namespace dtm::cli {
 namespace {
@@ -26,9 +27,11 @@ void check_distributed_input(const char* command,
     if (!in.soft_breaklines.empty() || !in.flat_areas.empty()) {
         refuse("soft breaklines or flat areas");
     }
-    const std::string extension = io::lower_extension(in.inputs[0]);
-    if (extension != "csv" && extension != "txt" && extension != "xyz") {
-        refuse("a ." + extension + " input (text point lists: .csv, .txt, .xyz)");
+    const std::string_view reader = io::find_reader(in.inputs[0]).name;
+    if (reader != "csv" && reader != "ogr" && reader != "csv-wkt") {
+        refuse("a ." + io::lower_extension(in.inputs[0]) +
+               " input (text point lists such as .csv, .txt, .xyz, and OGR point sources such "
+               "as .shp, .gpkg, .fgb, .geojson)");
     }
     if (!in.crs.target_crs.empty()) refuse("`target_crs`");
     if (in.dem.clip_radius > 0.0 || in.dem.max_error > 0.0) refuse("DEM thinning");

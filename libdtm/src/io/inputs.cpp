@@ -23,6 +23,7 @@
 #include "dtm/core/error.hpp"
 #include "dtm/io/formats/crs.hpp"
 #include "dtm/io/reader.hpp"
+#include "io/detail/file_crs.hpp"
 
 namespace dtm::io {
 namespace {
@@ -71,29 +72,6 @@ void summarize(InputSummary& s, const TerrainInput& t) {
     s.duplicates = count_repeated_positions(t.points);
 }
 
-/// The CRS a reader found, identified (io::identify_crs) from the file's .prj text when it has
-/// one (what ArcGIS wrote, before GDAL's own interpretation), else from the reader's WKT.
-void identify_file_crs(const InputFile& file, ReadResult& result) {
-    if (result.crs_wkt.empty()) return;
-    std::filesystem::path prj = file.path;
-    prj.replace_extension(".prj");
-    std::string source = result.crs_wkt;
-    std::error_code ec;
-    if (prj != file.path && std::filesystem::is_regular_file(prj, ec)) {
-        std::ifstream in(prj, std::ios::binary);
-        std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-        if (!text.empty()) source = std::move(text);
-    }
-    CrsIdentity id;
-    try {
-        id = identify_crs(source);
-    } catch (const InputError&) {
-        id = identify_crs(result.crs_wkt);  // a .prj GDAL cannot read: the reader's CRS
-    }
-    result.crs_wkt = std::move(id.wkt);
-    result.summary.crs_note = std::move(id.note);
-}
-
 Loaded read_one(const InputFile& file,
                 const LoadOptions& options,
                 const Progress& progress,
@@ -109,7 +87,7 @@ Loaded read_one(const InputFile& file,
         }
         loaded.result.tin.reset();
     }
-    identify_file_crs(file, loaded.result);
+    detail::identify_file_crs(file, loaded.result);
     loaded.crs_wkt = loaded.result.crs_wkt;
     if (loaded.crs_wkt.empty() && !options.crs.default_crs.empty()) {
         loaded.crs_wkt = option_crs(options.crs.default_crs, "default_crs");

@@ -17,6 +17,7 @@
 #include "dtm/core/error.hpp"
 #include "dtm/io/extension.hpp"
 #include "dtm/io/formats/crs.hpp"
+#include "io/formats/ogr_range.hpp"
 
 namespace dtm::io {
 namespace {
@@ -228,7 +229,8 @@ void read_layer(OGRLayer& layer,
                 const InputFile& file,
                 const ReadOptions& options,
                 OgrCollector& collector,
-                const Progress& progress) {
+                const Progress& progress,
+                detail::FeatureRange& range) {
     if (!options.where.empty()) {
         CPLErrorReset();
         CPLPushErrorHandler(CPLQuietErrorHandler);
@@ -248,13 +250,39 @@ void read_layer(OGRLayer& layer,
     struct PopHandler {
         ~PopHandler() { CPLPopErrorHandler(); }
     } pop;
-    while (FeaturePtr f{layer.GetNextFeature()}) {
+    // A range (a distributed run's share) skips to its first feature of this layer.
+    std::uint64_t skip = 0;
+    if (range.restricted()) {
+        const auto n =
+            static_cast<std::uint64_t>(std::max<GIntBig>(0, layer.GetFeatureCount(TRUE)));
+        const std::uint64_t at = range.position;
+        range.position += n;
+        if (at + n <= range.first || at >= range.last) return;
+        skip = range.first > at ? range.first - at : 0;
+        if (skip > 0 && layer.SetNextByIndex(static_cast<GIntBig>(skip)) == OGRERR_NONE) {
+            range.position = at + skip;
+            skip = 0;
+        } else {
+            layer.ResetReading();
+            range.position = at;
+        }
+    }
+    while (!range.restricted() || range.position < range.last) {
+        FeaturePtr f{layer.GetNextFeature()};
+        if (!f) break;
         if ((++count & 1023u) == 0) progress.check();
+        const std::uint64_t position = range.position++;
+        if (skip > 0) {
+            --skip;
+            continue;
+        }
         const OGRGeometry* g = f->GetGeometryRef();
         if (g == nullptr) continue;
         const std::string source = file.path.string() + ": layer '" + layer.GetName() +
                                    "' feature " + std::to_string(f->GetFID());
+        range.failed_at = position;
         collector.add(*g, feature_z(*f, z_index, file, source), source);
+        range.failed_at = detail::FeatureRange::none;
     }
     if (CPLGetLastErrorType() >= CE_Failure) {
         throw InputError(file.path, 0, 0,
@@ -267,6 +295,14 @@ void read_layer(OGRLayer& layer,
 }  // namespace
 
 ReadResult read_ogr(const InputFile& file, const ReadOptions& options, const Progress& progress) {
+    detail::FeatureRange all;
+    return detail::read_ogr_range(file, options, progress, all);
+}
+
+ReadResult detail::read_ogr_range(const InputFile& file,
+                                  const ReadOptions& options,
+                                  const Progress& progress,
+                                  FeatureRange& range) {
     DatasetPtr ds = open_vector(file.path);
     ReadResult result;
     result.summary.path = file.path;
@@ -290,13 +326,21 @@ ReadResult read_ogr(const InputFile& file, const ReadOptions& options, const Pro
     for (std::size_t i = 0; i < layers.size(); ++i) {
         const double n = static_cast<double>(layers.size());
         read_layer(*layers[i], file, options, collector,
-                   progress.sub(static_cast<double>(i) / n, static_cast<double>(i + 1) / n));
+                   progress.sub(static_cast<double>(i) / n, static_cast<double>(i + 1) / n), range);
         const OGRSpatialReference* srs = layers[i]->GetSpatialRef();
         if (srs != nullptr && result.crs_wkt.empty()) result.crs_wkt = srs_to_wkt(*srs);
     }
     collector.finish_warnings();
     result.summary.crs = crs_label(result.crs_wkt);
     return result;
+}
+
+std::uint64_t detail::ogr_feature_count(const InputFile& file, const ReadOptions& options) {
+    FeatureRange count;  // a range past every feature: each layer only counted
+    count.first = FeatureRange::none - 1;
+    count.last = FeatureRange::none - 1;
+    (void)read_ogr_range(file, options, {}, count);
+    return count.position;
 }
 
 ReadResult read_ogr_text(const InputFile& file,

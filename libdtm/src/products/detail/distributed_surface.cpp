@@ -14,7 +14,9 @@
 #include "dtm/core/error.hpp"
 #include "dtm/dist/partition.hpp"
 #include "dtm/io/formats/crs.hpp"
+#include "dtm/io/reader.hpp"
 #include "io/formats/csv/csv_distributed.hpp"
+#include "io/formats/ogr_distributed.hpp"
 #include "products/detail/distributed_lines.hpp"
 
 namespace dtm::products::detail {
@@ -58,13 +60,20 @@ DistributedSurface distributed_surface(dist::Comm& comm,
                                        const Progress& progress) {
     DistributedSurface out;
     report_progress(progress, 0.0, "reading");
-    io::DistributedPoints read = io::read_text_points_distributed(comm, source.input, source.read);
-    if (!source.default_crs.empty()) {
+    // Text point lists by byte ranges, OGR sources by feature ranges; the file's CRS first.
+    const std::string_view reader = io::find_reader(source.input.path).name;
+    io::DistributedPoints read =
+        reader == "ogr" || reader == "csv-wkt"
+            ? io::read_ogr_points_distributed(comm, source.input, source.read, out.crs_wkt)
+            : io::read_text_points_distributed(comm, source.input, source.read);
+    if (out.crs_wkt.empty() && !source.default_crs.empty()) {
         try {
             out.crs_wkt = io::crs_to_wkt(source.default_crs);
         } catch (const UsageError& e) {
             throw OptionError("default_crs", "`default_crs`: " + std::string(e.what()));
         }
+    }
+    if (!out.crs_wkt.empty()) {
         if (io::crs_is_geographic(out.crs_wkt)) {
             throw UsageError(
                 "a distributed run takes projected coordinates only (no UTM projection of "
