@@ -104,8 +104,8 @@ int run_mpi(int argc, char** argv, const std::vector<std::size_t>& sizes) {
         std::vector<dist::Point> mine = uniform(r * n / p, (r + 1) * n / p);
         comm.barrier();
         const auto t0 = Clock::now();
-        const dist::Share share = dist::partition_points(comm, std::move(mine), {}, {});
-        const dist::DistributedMesh d = dist::triangulate_share(comm, share, {}, {});
+        dist::Share share = dist::partition_points(comm, std::move(mine), {}, {});
+        const dist::DistributedMesh d = dist::triangulate_share(comm, std::move(share), {}, {});
         const auto micros = static_cast<std::int64_t>(seconds_since(t0) * 1e6);
         std::int64_t bad = 0;
         for (std::size_t k = 0; !memory_only && k < d.mesh.tris.size(); ++k) {

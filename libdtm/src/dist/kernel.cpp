@@ -100,7 +100,7 @@ struct CrossMerge {
 
 class Kernel {
 public:
-    Kernel(Comm& comm, const Share& share, const KernelOptions& options)
+    Kernel(Comm& comm, Share& share, const KernelOptions& options)
         : comm_(comm), share_(share), options_(options), owners_(share.leaves) {}
 
     DistributedMesh run(const Progress& progress) {
@@ -138,6 +138,10 @@ private:
             const Leaf& leaf = share_.leaves[i];
             detail::order_kernel_subtree(pts, leaf.lo - lo, leaf.hi - lo, leaf.cut);
         }
+        // The input numbers in kernel order; then the share's points are no longer needed.
+        out.input_ids.resize(n);
+        for (std::size_t k = 0; k < n; ++k) out.input_ids[k] = share_.points[pts[k].id].id;
+        std::vector<Point>().swap(share_.points);
         detail::GhostMesh local;
         local.tris.assign(2 * n, Triangle{});
         walk(root, lo, pts, local, cross);
@@ -147,11 +151,7 @@ private:
         mesh.first_vertex = lo;
         mesh.tris = std::move(local.tris);
         mesh.own_points.reserve(n);
-        out.input_ids.reserve(n);
-        for (std::size_t k = 0; k < n; ++k) {
-            mesh.own_points.push_back({pts[k].x, pts[k].y});
-            out.input_ids.push_back(share_.points[pts[k].id].id);
-        }
+        for (std::size_t k = 0; k < n; ++k) mesh.own_points.push_back({pts[k].x, pts[k].y});
     }
 
     void walk(const Node& node,
@@ -318,7 +318,7 @@ private:
     }
 
     Comm& comm_;
-    const Share& share_;
+    Share& share_;
     const KernelOptions& options_;
     Owners owners_;
     std::vector<HullNote> local_hulls_;
@@ -338,7 +338,7 @@ void check_stop_everywhere(Comm& comm, const Progress& progress) {
 }
 
 DistributedMesh triangulate_share(Comm& comm,
-                                  const Share& share,
+                                  Share share,
                                   const KernelOptions& options,
                                   const Progress& progress) {
     return Kernel(comm, share, options).run(progress);

@@ -45,8 +45,11 @@ void check_stop_everywhere(Comm& comm, const Progress& progress);
 /// left half's last leaf, on a band of triangles the ranks of both halves send (the seeds of
 /// band_mesh.hpp, A's spare slots, KernelOptions::rings rings), the changed slots going back to
 /// their owners. The result equals delaunay_divide_and_conquer on all the points, slot for slot.
+/// @p share is consumed: its points are freed as soon as the kernel's arrays hold them (pass it
+/// with std::move where it is not needed afterwards; a rank's peak is then 24 bytes per point
+/// lower).
 DistributedMesh triangulate_share(Comm& comm,
-                                  const Share& share,
+                                  Share share,
                                   const KernelOptions& options,
                                   const Progress& progress);
 

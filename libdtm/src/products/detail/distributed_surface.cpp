@@ -108,9 +108,9 @@ DistributedSurface distributed_surface(dist::Comm& comm,
     std::vector<dist::Point> points;
     points.reserve(out.merged.vertices.size());
     for (const dist::Vertex& v : out.merged.vertices) points.push_back({v.p.x, v.p.y, v.id});
-    const dist::Share share =
+    dist::Share share =
         dist::partition_points(comm, std::move(points), {}, progress.sub(0.25, 0.5));
-    out.kernel = dist::triangulate_share(comm, share, {}, progress.sub(0.5, 0.9));
+    out.kernel = dist::triangulate_share(comm, std::move(share), {}, progress.sub(0.5, 0.9));
     out.triangles = check_not_degenerate(comm, out.merged.total_vertices, out.kernel);
     if (!placed.segments.empty()) {
         dist::insert_constraints(comm, out.kernel, placed.segments, progress.sub(0.9, 1.0));
