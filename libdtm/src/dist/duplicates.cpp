@@ -25,24 +25,28 @@
 namespace dtm::dist {
 namespace {
 
-struct Record {  ///< an input point on its way to its group's rank
+/// The top bit of a record's index: the input's z is known.
+constexpr std::uint64_t z_known_bit = std::uint64_t{1} << 63;
+
+struct Record {  ///< an input point on its way to its group's rank (32 bytes)
     double x, y, z;
-    std::uint64_t index;
-    std::uint32_t z_known;
-    std::uint32_t origin;  ///< the rank that holds the input
+    std::uint64_t tagged;  ///< input index | z_known_bit
+    [[nodiscard]] std::uint64_t index() const noexcept { return tagged & ~z_known_bit; }
+    [[nodiscard]] bool z_known() const noexcept { return (tagged & z_known_bit) != 0; }
 };
 
-struct Answer {  ///< a group's answer to the owner of one member
+struct Answer {  ///< a group's answer to the owner of one member (32 bytes)
     std::uint64_t index;
     std::uint64_t representative;  ///< input index of the kept point (index itself when kept)
-    double x, y, z;                ///< the kept vertex: the first's position, the final z
+    double z;                      ///< the kept vertex's final z
     std::uint32_t z_known;
     std::uint32_t has_duplicates;
 };
 
-struct Number {  ///< a kept vertex's number for a member input
+struct Number {  ///< a kept vertex's number and position for a member input
     std::uint64_t index;
     std::uint64_t vertex;
+    double x, y;  ///< the kept point's position
 };
 
 std::uint64_t position_hash(double x, double y) noexcept {
@@ -56,6 +60,12 @@ std::uint64_t position_hash(double x, double y) noexcept {
 }
 
 bool same_position(const Record& a, const Record& b) noexcept { return a.x == b.x && a.y == b.y; }
+
+/// The rank holding input @p index, from every rank's first input (ascending).
+std::uint32_t origin_of(const std::vector<std::uint64_t>& firsts, std::uint64_t index) {
+    return static_cast<std::uint32_t>(std::upper_bound(firsts.begin(), firsts.end(), index) -
+                                      firsts.begin() - 1);
+}
 
 }  // namespace
 
@@ -74,9 +84,9 @@ MergedShare merge_exact_duplicates(Comm& comm,
     std::vector<Bytes> out(ranks);
     for (std::size_t i = 0; i < local.size(); ++i) {
         const Point3& p = local[i].p;
-        append_value(out[position_hash(p.x, p.y) % ranks],
-                     Record{p.x, p.y, p.z, share.first_input + i, local[i].z_known ? 1U : 0U,
-                            static_cast<std::uint32_t>(comm.rank())});
+        append_value(
+            out[position_hash(p.x, p.y) % ranks],
+            Record{p.x, p.y, p.z, (share.first_input + i) | (local[i].z_known ? z_known_bit : 0)});
     }
     std::vector<Record> records = concatenated<Record>(comm.alltoallv(std::move(out)));
 
@@ -84,31 +94,44 @@ MergedShare merge_exact_duplicates(Comm& comm,
     std::sort(records.begin(), records.end(), [](const Record& a, const Record& b) {
         if (a.x != b.x) return a.x < b.x;
         if (a.y != b.y) return a.y < b.y;
-        return a.index < b.index;
+        return a.index() < b.index();
     });
+    Bytes first_bytes;
+    append_value(first_bytes, share.first_input);
+    const std::vector<std::uint64_t> firsts =
+        concatenated<std::uint64_t>(comm.allgatherv(std::move(first_bytes)));
     out.assign(ranks, {});
-    std::unordered_map<std::uint64_t, std::pair<std::size_t, std::size_t>> groups;  // kept -> range
+    // Kept input -> its other members in `members` (index, origin): all step 4 needs of the
+    // records, which are freed before the answers travel.
+    std::unordered_map<std::uint64_t, std::pair<std::size_t, std::size_t>> groups;
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> members;
     for (std::size_t a = 0; a < records.size();) {
         std::size_t b = a + 1;
         while (b < records.size() && same_position(records[a], records[b])) ++b;
         double z = records[a].z;
-        bool known = records[a].z_known != 0;
+        bool known = records[a].z_known();
         std::size_t count = known ? 1 : 0;
         for (std::size_t k = a + 1; k < b; ++k) {
-            if (records[k].z_known == 0) continue;
+            if (!records[k].z_known()) continue;
             ++count;
             z = known ? detail::duplicate_rule_z(rule, z, records[k].z, count) : records[k].z;
             known = true;
         }
         const std::uint32_t has_duplicates = b - a > 1 ? 1U : 0U;
-        if (has_duplicates) groups.emplace(records[a].index, std::pair{a, b});
+        if (has_duplicates) {
+            groups.emplace(records[a].index(),
+                           std::pair{members.size(), members.size() + b - a - 1});
+            for (std::size_t k = a + 1; k < b; ++k)
+                members.emplace_back(records[k].index(), origin_of(firsts, records[k].index()));
+        }
         for (std::size_t k = a; k < b; ++k) {
-            append_value(out[records[k].origin],
-                         Answer{records[k].index, records[a].index, records[a].x, records[a].y, z,
-                                known ? 1U : 0U, has_duplicates});
+            append_value(
+                out[origin_of(firsts, records[k].index())],
+                Answer{records[k].index(), records[a].index(), z, known ? 1U : 0U, has_duplicates});
         }
         a = b;
     }
+    std::vector<Record>().swap(records);
     std::vector<Answer> answers = concatenated<Answer>(comm.alltoallv(std::move(out)));
     std::sort(answers.begin(), answers.end(),
               [](const Answer& a, const Answer& b) { return a.index < b.index; });
@@ -130,7 +153,7 @@ MergedShare merge_exact_duplicates(Comm& comm,
         share.vertices.push_back({{local[i].p.x, local[i].p.y, a.z}, id, a.z_known != 0});
         if (a.has_duplicates) {
             append_value(out[position_hash(local[i].p.x, local[i].p.y) % ranks],
-                         Number{a.index, id});
+                         Number{a.index, id, local[i].p.x, local[i].p.y});
         }
     }
 
@@ -139,8 +162,8 @@ MergedShare merge_exact_duplicates(Comm& comm,
     out.assign(ranks, {});
     for (const Number& n : kept_numbers) {
         const auto [a, b] = groups.at(n.index);
-        for (std::size_t k = a + 1; k < b; ++k) {
-            append_value(out[records[k].origin], Number{records[k].index, n.vertex});
+        for (std::size_t k = a; k < b; ++k) {
+            append_value(out[members[k].second], Number{members[k].first, n.vertex, n.x, n.y});
         }
     }
     std::vector<Number> numbers = concatenated<Number>(comm.alltoallv(std::move(out)));
@@ -151,7 +174,7 @@ MergedShare merge_exact_duplicates(Comm& comm,
         const Answer& a = answers[i];
         share.vertex_of_input[i] = n.vertex;
         const Point3& given = local[i].p;
-        share.merges.push_back({a.representative, a.index, {a.x, a.y, a.z}, given});
+        share.merges.push_back({a.representative, a.index, {n.x, n.y, a.z}, given});
     }
     return share;
 }

@@ -37,7 +37,9 @@ struct MergedShare {
     std::uint64_t first_vertex = 0;  ///< global number of this rank's first kept vertex
     std::uint64_t total_vertices = 0;
     std::vector<Vertex> vertices;  ///< the kept vertices first seen on this rank, input order
-    std::vector<std::uint64_t> vertex_of_input;  ///< per local input point, its vertex number
+    /// Per local input point, its vertex number (the distributed surface frees it once the
+    /// breaklines are placed).
+    std::vector<std::uint64_t> vertex_of_input;
     std::vector<DuplicateMerge> merges;          ///< merged local input points, input order
 };
 

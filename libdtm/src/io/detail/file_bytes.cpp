@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "io/detail/file_bytes.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -55,6 +56,14 @@ void FileBytes::read(const std::filesystem::path& path) {
     const bool failed = std::ferror(file) != 0;
     std::fclose(file);
     if (failed) throw InputError(path, 0, 0, "read error");
+}
+
+void FileBytes::release(std::size_t from, std::size_t to) const noexcept {
+    if (map_ == nullptr) return;
+    const auto page = static_cast<std::size_t>(::sysconf(_SC_PAGESIZE));
+    const std::size_t first = (from + page - 1) / page * page;
+    const std::size_t last = std::min(to, size_) / page * page;
+    if (first < last) ::madvise(static_cast<char*>(map_) + first, last - first, MADV_DONTNEED);
 }
 
 }  // namespace dtm::io::detail

@@ -24,6 +24,9 @@ public:
     FileBytes(const FileBytes&) = delete;
     FileBytes& operator=(const FileBytes&) = delete;
 
+    /// Drops the pages wholly inside bytes [from, to) from this process's memory (a mapped file
+    /// only; they are read again if touched). For readers that are done with a part.
+    void release(std::size_t from, std::size_t to) const noexcept;
     [[nodiscard]] std::string_view view() const noexcept {
         return map_ != nullptr ? std::string_view(static_cast<const char*>(map_), size_) : copy_;
     }

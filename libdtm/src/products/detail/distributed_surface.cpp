@@ -100,6 +100,7 @@ DistributedSurface distributed_surface(dist::Comm& comm,
     std::vector<dist::InputPoint>().swap(read.points);
     const PlacedLines placed =
         place_lines(comm, out.merged, lines, first_line_input, source.z_tolerance);
+    std::vector<std::uint64_t>().swap(out.merged.vertex_of_input);  // the lines were its last use
     out.segments = placed.segments.size();
     out.crossings = placed.crossings;
     out.line_vertices = lines.points.size();  // every rank holds the lines

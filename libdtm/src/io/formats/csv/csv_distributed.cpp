@@ -18,6 +18,9 @@
 #include "io/formats/csv/csv_detail.hpp"
 
 namespace dtm::io {
+
+std::size_t distributed_block_bytes = std::size_t{32} << 20;
+
 namespace {
 
 constexpr std::size_t head_bytes = std::size_t{1} << 16;
@@ -76,23 +79,39 @@ DistributedPoints read_text_points_distributed(dist::Comm& comm,
     const auto newlines = static_cast<std::int64_t>(std::count(text.begin(), text.end(), '\n'));
     const auto before = static_cast<std::size_t>(comm.exscan_sum(newlines));
 
+    // The range in blocks of whole lines, each block's pages dropped once parsed: a rank holds
+    // one block of the file and its points, not its whole range twice.
+    const std::size_t block_bytes = std::max<std::size_t>(1, distributed_block_bytes);
     DistributedPoints out;
-    ReadResult result;
+    std::uint64_t skipped = 0;
     std::optional<InputError> failure;
     try {
-        result = csv::parse_points_range(text, layout.data_line + before, layout, file, options);
+        std::size_t line = layout.data_line + before;
+        for (std::size_t at = 0; at < text.size();) {
+            const std::size_t end = at + block_bytes >= text.size()
+                                        ? text.size()
+                                        : line_start(text, at + block_bytes, at);
+            const std::string_view block = text.substr(at, end - at);
+            const ReadResult part = csv::parse_points_range(block, line, layout, file, options);
+            if (at == 0 && end < text.size()) {  // reserve from the first block's density
+                out.points.reserve(part.terrain.points.size() * (text.size() / (end - at) + 1));
+            }
+            for (const Point3& q : part.terrain.points) out.points.push_back({q, true});
+            skipped += part.summary.skipped_lines;
+            line += static_cast<std::size_t>(std::count(block.begin(), block.end(), '\n'));
+            in.release(from + at, from + end);
+            at = end;
+        }
     } catch (const InputError& e) {
         failure = e;
     }
     elect_error(comm, file, failure ? &*failure : nullptr);
-    out.points.reserve(result.terrain.points.size());
-    for (const Point3& q : result.terrain.points) out.points.push_back({q, true});
     out.first_input =
         static_cast<std::uint64_t>(comm.exscan_sum(static_cast<std::int64_t>(out.points.size())));
     out.total = static_cast<std::uint64_t>(
         comm.allreduce(static_cast<std::int64_t>(out.points.size()), dist::Reduce::sum));
     out.skipped_lines = static_cast<std::uint64_t>(
-        comm.allreduce(static_cast<std::int64_t>(result.summary.skipped_lines), dist::Reduce::sum));
+        comm.allreduce(static_cast<std::int64_t>(skipped), dist::Reduce::sum));
     return out;
 }
 

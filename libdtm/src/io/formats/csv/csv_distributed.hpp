@@ -19,6 +19,9 @@ struct DistributedPoints {
     std::uint64_t skipped_lines = 0;       ///< over all ranks (with skip_bad_lines)
 };
 
+/// The bytes of a rank's range parsed at a time (whole lines; tests lower it).
+extern std::size_t distributed_block_bytes;
+
 /// Collective. Every rank detects the layout from the file's head (the same on every rank),
 /// takes the equal share [r S / P, (r + 1) S / P) of the data bytes moved to the next line
 /// starts, numbers its lines by an exclusive scan of the ranges' line counts, and parses them as

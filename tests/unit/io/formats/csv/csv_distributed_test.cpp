@@ -64,10 +64,15 @@ TEST(DistributedText, ByteRangesGiveTheSerialPointsInOrder) {
     const auto path = write_points(dir, "points.csv", 5000, 0);
     const ReadResult serial = read_csv({path, InputRole::points}, {});
     ASSERT_EQ(serial.terrain.points.size(), 5000U);
-    for (int ranks : {1, 2, 3, 4, 7, 16}) {
-        EXPECT_TRUE(same(read_distributed(path, ranks), serial.terrain.points))
-            << ranks << " ranks";
+    // Ranges parsed in blocks of whole lines: one block, blocks of a few lines, of one line.
+    for (const std::size_t block : {std::size_t{32} << 20, std::size_t{1000}, std::size_t{7}}) {
+        distributed_block_bytes = block;
+        for (int ranks : {1, 2, 3, 4, 7, 16}) {
+            EXPECT_TRUE(same(read_distributed(path, ranks), serial.terrain.points))
+                << ranks << " ranks, blocks of " << block;
+        }
     }
+    distributed_block_bytes = std::size_t{32} << 20;
     // More ranks than lines: most ranges are empty.
     const auto tiny = write_points(dir, "tiny.csv", 3, 0);
     EXPECT_TRUE(
@@ -86,6 +91,7 @@ TEST(DistributedText, TheFirstBadLineIsReportedOnEveryRankAsTheSerialReaderDoes)
         }
         ASSERT_FALSE(serial_message.empty());
         for (int ranks : {2, 4, 7}) {
+            distributed_block_bytes = ranks == 4 ? 500 : std::size_t{32} << 20;
             std::mutex mutex;
             std::vector<std::string> messages;
             dist::run_in_process(ranks, [&](dist::Comm& comm) {
@@ -100,6 +106,7 @@ TEST(DistributedText, TheFirstBadLineIsReportedOnEveryRankAsTheSerialReaderDoes)
             for (const auto& m : messages) EXPECT_EQ(m, serial_message) << ranks << " ranks";
         }
     }
+    distributed_block_bytes = std::size_t{32} << 20;
 }
 
 }  // namespace
