@@ -40,7 +40,7 @@ struct MergedShare {
     /// Per local input point, its vertex number (the distributed surface frees it once the
     /// breaklines are placed).
     std::vector<std::uint64_t> vertex_of_input;
-    std::vector<DuplicateMerge> merges;          ///< merged local input points, input order
+    std::vector<DuplicateMerge> merges;  ///< merged local input points, input order
 };
 
 /// Collective: every point goes to the rank of a hash of its exact coordinates (-0 as 0), which
