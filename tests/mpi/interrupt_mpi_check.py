@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
-"""Ctrl-C under mpirun (issue 18: cancellation and atomic outputs as on one machine): SIGINT to
-`mpirun -np P dtm tin|build` at several moments of the run. Whenever it lands, the output holds
-either the previous run's complete file (or folder) or the complete new one, never a mix or a
-partial file, and an interrupted run exits non-zero. Usage: interrupt_mpi_check.py DTM MPIEXEC NP"""
+"""Ctrl-C and crashes under mpirun (issue 18: cancellation and atomic outputs as on one
+machine): SIGINT to `mpirun -np P dtm tin|build`, and one rank of `dtm tin` killed (SIGKILL), at
+several moments of the run. Whenever it lands, the output holds either the previous run's
+complete file (or folder) or the complete new one, never a mix or a partial file, and an
+interrupted run exits non-zero. Usage: interrupt_mpi_check.py DTM MPIEXEC NP"""
 import json
 import os
 import random
@@ -35,13 +36,33 @@ def folder_state(path):
     return state
 
 
-def interrupted(args, delay):
-    """Runs mpirun dtm ARGS and sends SIGINT to mpirun after DELAY seconds (if still running)."""
+def rank_processes(job):
+    """The dtm processes mpirun started (its children running dtm)."""
+    found = subprocess.run(["pgrep", "-P", str(job.pid)], capture_output=True, text=True)
+    pids = []
+    for pid in found.stdout.split():
+        try:
+            with open(f"/proc/{pid}/cmdline", "rb") as f:
+                if os.path.basename(f.read().split(b"\0")[0]) == b"dtm":
+                    pids.append(int(pid))
+        except OSError:
+            pass
+    return pids
+
+
+def interrupted(args, delay, kill_rank=False):
+    """Runs mpirun dtm ARGS and after DELAY seconds (if still running) sends SIGINT to mpirun, or
+    with KILL_RANK kills one rank at once (SIGKILL: a crash), which ends the job."""
     job = subprocess.Popen([mpiexec, "-np", str(ranks), dtm] + args,
                            stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
     time.sleep(delay)
     sent = job.poll() is None
-    if sent:
+    if sent and kill_rank:
+        victims = rank_processes(job)
+        sent = bool(victims)
+        for pid in victims[-1:]:
+            os.kill(pid, signal.SIGKILL)
+    elif sent:
         job.send_signal(signal.SIGINT)
     try:
         _, err = job.communicate(timeout=120)
@@ -65,20 +86,26 @@ with tempfile.TemporaryDirectory() as tmp:
     with open(os.path.join(tmp, "new.ply"), "rb") as f:
         new_ply = f.read()
     out = os.path.join(tmp, "out.ply")
-    stopped = 0
-    for delay in (0.3, 0.8, 1.4, 2.5):
+    # SIGINT to mpirun (it ends the ranks itself, so where its ending lands varies), then a rank
+    # killed outright at several moments, which must land before the commit at least once.
+    stopped = {False: 0, True: 0}
+    for kill_rank, delay in ((False, 0.3), (False, 1.4), (True, 0.5), (True, 0.9), (True, 1.3),
+                             (True, 1.8)):
+        how = "a rank killed" if kill_rank else "SIGINT"
         with open(out, "wb") as f:
             f.write(old_ply)
-        sent, code, err = interrupted(["tin", new_points, "--crs", "EPSG:5514", "-o", out, "-q"], delay)
+        sent, code, err = interrupted(["tin", new_points, "--crs", "EPSG:5514", "-o", out, "-q"],
+                                      delay, kill_rank)
         with open(out, "rb") as f:
             now = f.read()
-        check(now in (old_ply, new_ply), f"tin, SIGINT after {delay} s: tin.ply is neither the old "
+        check(now in (old_ply, new_ply), f"tin, {how} after {delay} s: tin.ply is neither the old "
               f"nor the new file ({len(now)} bytes)")
         if sent and now == old_ply:
-            stopped += 1
-            check(code != 0, f"tin, SIGINT after {delay} s: an interrupted run exited 0")
-    print(f"tin: {stopped} of 4 interrupts landed before the commit (the old file kept)")
-    check(stopped > 0, "tin: no SIGINT landed before the run ended (the input is too small)")
+            stopped[kill_rank] += 1
+            check(code != 0, f"tin, {how} after {delay} s: an interrupted run exited 0")
+    print(f"tin: SIGINT stopped {stopped[False]} of 2 runs, a killed rank {stopped[True]} of 4 "
+          "before the commit (the old file kept)")
+    check(stopped[True] > 0, "tin: no rank was killed before the run ended (the input is too small)")
 
     # dtm build: the folder holds the old products or the new ones, whole (the report's
     # timings aside, a complete new build equals an uninterrupted one).
