@@ -15,37 +15,6 @@
 #include "io/formats/ogr_range.hpp"
 
 namespace dtm::io {
-namespace {
-
-dist::Bytes text_bytes(const std::string& text) {
-    const auto* p = reinterpret_cast<const std::byte*>(text.data());
-    return {p, p + text.size()};
-}
-
-/// The first InputError of the source over all ranks, rethrown on every rank (none: returns).
-void elect_error(dist::Comm& comm,
-                 const InputFile& file,
-                 const std::optional<InputError>& mine,
-                 std::uint64_t failed_at) {
-    const std::int64_t key = !mine ? INT64_MAX
-                                   : (failed_at == detail::FeatureRange::none
-                                          ? 0
-                                          : static_cast<std::int64_t>(failed_at) + 1);
-    const std::int64_t first = comm.allreduce(key, dist::Reduce::min);
-    if (first == INT64_MAX) return;
-    const auto rank = comm.allreduce(key == first ? comm.rank() : INT64_MAX, dist::Reduce::min);
-    dist::Bytes text;
-    if (comm.rank() == rank) {
-        const std::string full = mine->what();
-        const std::string prefix = InputError(file.path, 0, 0, "").what();
-        text = text_bytes(full.rfind(prefix, 0) == 0 ? full.substr(prefix.size()) : full);
-    }
-    comm.bcast(text, static_cast<int>(rank));
-    throw InputError(file.path, 0, 0,
-                     std::string(reinterpret_cast<const char*>(text.data()), text.size()));
-}
-
-}  // namespace
 
 DistributedPoints read_ogr_points_distributed(dist::Comm& comm,
                                               const InputFile& file,
@@ -72,7 +41,12 @@ DistributedPoints read_ogr_points_distributed(dist::Comm& comm,
     } catch (const InputError& e) {
         failure = e;
     }
-    elect_error(comm, file, failure, range.failed_at);
+    // A failing feature's order is its number + 1; an error before any feature is 0.
+    const std::int64_t order = !failure ? INT64_MAX
+                               : range.failed_at == detail::FeatureRange::none
+                                   ? 0
+                                   : static_cast<std::int64_t>(range.failed_at) + 1;
+    elect_input_error(comm, file, failure ? &*failure : nullptr, order);
     const TerrainInput& t = result.terrain;
     const bool lines = !t.breaklines.empty() || !t.soft_breaklines.empty() ||
                        !t.boundaries.empty() || !t.holes.empty();

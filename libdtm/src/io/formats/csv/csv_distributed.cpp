@@ -21,6 +21,34 @@ namespace dtm::io {
 
 std::size_t distributed_block_bytes = std::size_t{32} << 20;
 
+void elect_input_error(dist::Comm& comm,
+                       const InputFile& file,
+                       const InputError* mine,
+                       std::int64_t order) {
+    // The smallest order, then the lowest rank that has it.
+    const std::int64_t first = comm.allreduce(order, dist::Reduce::min);
+    if (first == INT64_MAX) return;
+    const std::int64_t rank =
+        comm.allreduce(order == first ? comm.rank() : INT64_MAX, dist::Reduce::min);
+    dist::Bytes text;
+    std::int64_t where[2] = {0, 0};  // line, column
+    if (comm.rank() == rank) {
+        // The message without the location the reader puts in front of it.
+        const std::string full = mine->what();
+        const std::string prefix = InputError(file.path, mine->line(), mine->column(), "").what();
+        const std::string raw = full.rfind(prefix, 0) == 0 ? full.substr(prefix.size()) : full;
+        text.assign(reinterpret_cast<const std::byte*>(raw.data()),
+                    reinterpret_cast<const std::byte*>(raw.data()) + raw.size());
+        where[0] = static_cast<std::int64_t>(mine->line());
+        where[1] = static_cast<std::int64_t>(mine->column());
+    }
+    comm.bcast(text, static_cast<int>(rank));
+    comm.allreduce(where, dist::Reduce::max);
+    throw InputError(file.path, static_cast<std::size_t>(where[0]),
+                     static_cast<std::size_t>(where[1]),
+                     std::string(reinterpret_cast<const char*>(text.data()), text.size()));
+}
+
 namespace {
 
 constexpr std::size_t head_bytes = std::size_t{1} << 16;
@@ -30,31 +58,6 @@ std::size_t line_start(std::string_view bytes, std::size_t at, std::size_t floor
     if (at <= floor) return floor;
     const std::size_t newline = bytes.find('\n', at - 1);
     return newline == std::string_view::npos ? bytes.size() : newline + 1;
-}
-
-/// The first InputError of the file over all ranks, rethrown on every rank (none: returns).
-void elect_error(dist::Comm& comm, const InputFile& file, const InputError* mine) {
-    const std::int64_t line = mine != nullptr ? static_cast<std::int64_t>(mine->line()) : INT64_MAX;
-    // The smallest line, then the lowest rank that has it.
-    std::int64_t first[2] = {comm.allreduce(line, dist::Reduce::min), INT64_MAX};
-    if (first[0] == INT64_MAX) return;
-    first[1] = comm.allreduce(line == first[0] ? comm.rank() : INT64_MAX, dist::Reduce::min);
-    dist::Bytes text;
-    std::int64_t column = 0;
-    if (comm.rank() == first[1]) {
-        // The message without the location read_csv puts in front of it.
-        const std::string full = mine->what();
-        const std::string prefix = InputError(file.path, mine->line(), mine->column(), "").what();
-        const std::string raw = full.rfind(prefix, 0) == 0 ? full.substr(prefix.size()) : full;
-        text.assign(reinterpret_cast<const std::byte*>(raw.data()),
-                    reinterpret_cast<const std::byte*>(raw.data()) + raw.size());
-        column = static_cast<std::int64_t>(mine->column());
-    }
-    comm.bcast(text, static_cast<int>(first[1]));
-    column = comm.allreduce(comm.rank() == first[1] ? column : 0, dist::Reduce::max);
-    throw InputError(file.path, static_cast<std::size_t>(first[0]),
-                     static_cast<std::size_t>(column),
-                     std::string(reinterpret_cast<const char*>(text.data()), text.size()));
 }
 
 }  // namespace
@@ -105,7 +108,8 @@ DistributedPoints read_text_points_distributed(dist::Comm& comm,
     } catch (const InputError& e) {
         failure = e;
     }
-    elect_error(comm, file, failure ? &*failure : nullptr);
+    elect_input_error(comm, file, failure ? &*failure : nullptr,
+                      failure ? static_cast<std::int64_t>(failure->line()) : INT64_MAX);
     out.first_input =
         static_cast<std::uint64_t>(comm.exscan_sum(static_cast<std::int64_t>(out.points.size())));
     out.total = static_cast<std::uint64_t>(

@@ -4,8 +4,10 @@
 /// docs/distributed.md).
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
+#include "dtm/core/error.hpp"
 #include "dtm/dist/comm.hpp"
 #include "dtm/dist/duplicates.hpp"
 #include "dtm/io/reader.hpp"
@@ -18,6 +20,14 @@ struct DistributedPoints {
     std::uint64_t total = 0;               ///< points over all ranks
     std::uint64_t skipped_lines = 0;       ///< over all ranks (with skip_bad_lines)
 };
+
+/// Collective, for the distributed readers: the InputError that comes first in the file over all
+/// ranks (@p mine with its @p order, INT64_MAX for none; ties to the lowest rank), rethrown on
+/// every rank with its file, line, column and message; returns when no rank has one.
+void elect_input_error(dist::Comm& comm,
+                       const InputFile& file,
+                       const InputError* mine,
+                       std::int64_t order);
 
 /// The bytes of a rank's range parsed at a time (whole lines; tests lower it).
 extern std::size_t distributed_block_bytes;

@@ -44,12 +44,9 @@ std::string run_token(dist::Comm& comm) {
 
 /// Collective: throws on every rank if any rank failed, with the lowest failing rank's message.
 void agree(dist::Comm& comm, const std::string& failure) {
-    const std::int64_t lowest =
-        comm.allreduce(failure.empty() ? comm.size() : comm.rank(), dist::Reduce::min);
-    if (lowest == comm.size()) return;
-    dist::Bytes message = text_bytes(failure);
-    comm.bcast(message, static_cast<int>(lowest));
-    throw Error(bytes_text(message));
+    if (comm.allreduce(failure.empty() ? 0 : 1, dist::Reduce::max) != 0) {
+        dist::throw_first_error(comm, failure);
+    }
 }
 
 struct Tile {
