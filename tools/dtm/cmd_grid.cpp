@@ -14,13 +14,11 @@
 #include "command.hpp"
 #include "contour_flats_args.hpp"
 #include "distributed.hpp"
-#include "dtm/algo/rasterize.hpp"
 #include "dtm/core/error.hpp"
 #include "dtm/dist/in_process.hpp"
 #include "dtm/io/extension.hpp"
-#include "dtm/io/grid_writer.hpp"
 #include "dtm/io/inputs.hpp"
-#include "dtm/io/output_check.hpp"
+#include "dtm/products/dem.hpp"
 #include "dtm/products/distributed_dem.hpp"
 #include "dtm/products/surface.hpp"
 #include "input_args.hpp"
@@ -68,38 +66,19 @@ Box2 parse_extent(const std::string& text) {
     return {v[0], v[1], v[2], v[3]};
 }
 
-/// Counts the cells that received a value while passing the rows on.
-class CountingSink final : public GridSink {
-public:
-    CountingSink(GridSink& next, float nodata) : next_(next), nodata_(nodata) {}
-    void write_rows(std::size_t first_row,
-                    std::size_t row_count,
-                    std::span<const float> values) override {
-        for (const float v : values) {
-            filled += v != nodata_ ? 1 : 0;
-        }
-        next_.write_rows(first_row, row_count, values);
-    }
-    std::size_t filled = 0;
-
-private:
-    GridSink& next_;
-    float nodata_;
-};
-
-/// Every output and option combination, before any input is read (fail fast).
-void check_grid_args(const GridArgs& args) {
-    io::check_output(args.output, io::OutputKind::raster, "output");
-    const std::string extension = io::lower_extension(args.output);
-    if (args.cog && extension != "tif" && extension != "tiff") {
-        throw OptionError("cog", "grid: `cog` needs a .tif target, not " + args.output);
-    }
-    const std::pair<const std::string*, const char*> derived[] = {
-        {&args.hillshade, "hillshade"}, {&args.slope, "slope"}, {&args.aspect, "aspect"}};
-    for (const auto& [file, field] : derived) {
-        if (!file->empty()) io::check_output(*file, io::OutputKind::raster, field);
-    }
-    if (!args.extent.empty()) (void)parse_extent(args.extent);
+/// The library's DEM options from the command line (the extent parsed).
+products::DemOptions dem_options(const GridArgs& args) {
+    products::DemOptions o;
+    o.cell = args.cell;
+    if (!args.extent.empty()) o.extent = parse_extent(args.extent);
+    o.nodata = args.nodata;
+    o.cog = args.cog;
+    o.interpolation = args.interpolation;
+    o.threads = args.tin.threads;
+    o.hillshade = args.hillshade;
+    o.slope = args.slope;
+    o.aspect = args.aspect;
+    return o;
 }
 
 void print_summary(const GridSpec& spec, std::uint64_t filled, const std::string& output) {
@@ -133,15 +112,13 @@ int run_grid_tiled(const GridArgs& args, dist::Comm& comm) {
     if (!args.hillshade.empty() || !args.slope.empty() || !args.aspect.empty()) {
         refuse("`hillshade`, `slope` or `aspect`");
     }
-    io::check_output(args.output, io::OutputKind::raster, "output");
-    std::optional<Box2> extent;
-    if (!args.extent.empty()) extent = parse_extent(args.extent);
-    const InputArgs& in = args.input;
+    const products::DemOptions options = dem_options(args);
+    products::check_dem_outputs(args.output, options);
     const products::DistributedDemResult r =
         products::distributed_dem(comm,
-                                  {.source = distributed_source(in, args.tin),
+                                  {.source = distributed_source(args.input, args.tin),
                                    .cell = args.cell,
-                                   .extent = extent,
+                                   .extent = options.extent,
                                    .nodata = args.nodata,
                                    .output = args.output},
                                   prints() ? terminal_progress("grid", args.quiet) : Progress{});
@@ -160,47 +137,18 @@ int run_grid(const GridArgs& args) {
         dist::run_in_process(1, [&](dist::Comm& comm) { status = run_grid_tiled(args, comm); });
         return status;
     }
-    check_grid_args(args);
+    products::DemOptions options = dem_options(args);
+    products::check_dem_outputs(args.output, options);
     const Progress progress = terminal_progress("grid", args.quiet);
     io::LoadedInputs inputs = io::load_inputs(to_load_options(args.input), progress.sub(0.0, 0.2));
     products::Surface surface = products::surface(
         inputs, surface_options(args.input, args.tin, args.flats), progress.sub(0.2, 0.5));
     if (surface.contour_flats && !args.quiet) print_contour_flats(*surface.contour_flats, "grid");
     if (surface.dem && !args.quiet) print_dem_report(*surface.dem, "grid");
-    const Tin& tin = surface.result.tin;
-    if (tin.triangles.empty()) {
-        throw InputError("grid: the inputs give no triangle to rasterise");
-    }
-    const GridSpec spec = args.extent.empty()
-                              ? snapped_grid_spec(tin_bounds(tin), args.cell)
-                              : extent_grid_spec(parse_extent(args.extent), args.cell);
-    constexpr double max_cells = 68'719'476'736.0;  // 2^36 cells: 256 GiB of Float32
-    if (static_cast<double>(spec.cols) * static_cast<double>(spec.rows) > max_cells) {
-        throw UsageError("grid: " + std::to_string(spec.cols) + " x " + std::to_string(spec.rows) +
-                         " cells is too many; use a larger --cell or a smaller --extent");
-    }
-    io::GridWriter writer(args.output, spec,
-                          {.crs_wkt = inputs.crs_wkt, .nodata = args.nodata, .cog = args.cog});
-    CountingSink counter(writer, args.nodata);
-    rasterize(tin, spec,
-              {.nodata = args.nodata,
-               .threads = args.tin.threads,
-               .interpolation = args.interpolation,
-               .gradients = {.threads = args.tin.threads,
-                             .crease_at_breaklines = !surface.contour_input}},
-              counter, progress.sub(0.5, 0.9));
-    writer.commit();
-    const std::pair<const std::string*, io::DemDerivative> derived[] = {
-        {&args.hillshade, io::DemDerivative::hillshade},
-        {&args.slope, io::DemDerivative::slope},
-        {&args.aspect, io::DemDerivative::aspect}};
-    for (const auto& [file, kind] : derived) {
-        if (!file->empty()) {
-            io::write_dem_derivative(args.output, *file, kind);
-        }
-    }
-    progress.report(1.0, "done");
-    print_summary(spec, counter.filled, args.output);
+    options.crease_at_breaklines = !surface.contour_input;
+    const products::DemResult dem = products::write_dem(surface.result.tin, inputs.crs_wkt, options,
+                                                        args.output, progress.sub(0.5, 1.0));
+    print_summary(dem.spec, dem.filled, args.output);
     return 0;
 }
 

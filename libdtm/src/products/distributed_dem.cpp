@@ -22,6 +22,7 @@
 #include "dtm/algo/rasterize.hpp"
 #include "dtm/core/error.hpp"
 #include "dtm/io/grid_writer.hpp"
+#include "dtm/products/dem.hpp"
 #include "products/detail/distributed_pieces.hpp"
 #include "products/detail/distributed_surface.hpp"
 #include "products/detail/surface_routing.hpp"
@@ -39,8 +40,8 @@ std::size_t block_start(const GridSpec& spec, int r, int ranks) {
 GridSpec grid_of(dist::Comm& comm,
                  const dist::SurfaceMesh& surface,
                  const DistributedDemOptions& options) {
-    if (options.extent) return extent_grid_spec(*options.extent, options.cell);
-    return snapped_grid_spec(detail::mesh_box(comm, surface), options.cell);
+    if (options.extent) return dem_grid_spec({}, options.cell, options.extent);
+    return dem_grid_spec(detail::mesh_box(comm, surface), options.cell, std::nullopt);
 }
 
 /// Every face goes to the ranks whose row blocks its rows may reach.
@@ -87,8 +88,6 @@ private:
     float nodata_;
 };
 
-constexpr double max_cells = 68'719'476'736.0;  // 2^36, as dtm grid
-
 }  // namespace
 
 std::filesystem::path dem_tile_path(const std::filesystem::path& vrt, int rank, int ranks) {
@@ -118,11 +117,7 @@ DemTiles write_dem_tiles(dist::Comm& comm,
                          const std::filesystem::path& vrt,
                          const io::GridWriteOptions& write,
                          const Progress& progress) {
-    if (static_cast<double>(spec.cols) * static_cast<double>(spec.rows) > max_cells) {
-        throw UsageError(
-            "grid: " + std::to_string(spec.cols) + " x " + std::to_string(spec.rows) +
-            " cells is too many (at most 2^36); use a larger cell or a smaller extent");
-    }
+    check_dem_size(spec);
     const Tin tin = route_to_row_blocks(comm, spec, std::move(mine));
 
     const int rank = comm.rank(), ranks = comm.size();

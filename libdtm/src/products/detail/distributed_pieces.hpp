@@ -34,7 +34,7 @@ struct DemTiles {
 
 /// Collective: the linear surface of the triangles in @p mine sampled on @p spec, rank r writing
 /// its block of rows as "<vrt stem>-r-of-P.tif", then rank 0 the VRT @p vrt over them.
-/// @throws UsageError beyond 2^36 cells; Error on every rank when a write fails.
+/// @throws OptionError beyond 2^36 cells (check_dem_size); Error on every rank when a write fails.
 DemTiles write_dem_tiles(dist::Comm& comm,
                          const GridSpec& spec,
                          dist::SurfaceMesh mine,
