@@ -16,7 +16,6 @@
 #include <array>
 #include <cctype>
 #include <fstream>
-#include <mutex>
 #include <optional>
 
 #include "dtm/core/error.hpp"
@@ -24,6 +23,7 @@
 #include "dtm/io/extension.hpp"
 #include "dtm/io/formats/dxf.hpp"
 #include "dtm/io/formats/qgis_project.hpp"
+#include "io/detail/gdal_drivers.hpp"
 #include "io/formats/qgis/qgis_project_xml.hpp"
 
 namespace dtm::io {
@@ -204,8 +204,7 @@ void ContourWriter::State::write_annotation_layers(const ContourAnnotation& a) {
 
 ContourWriter::ContourWriter(const fs::path& target, const ContourWriteOptions& options) {
     const Format& format = format_for(target);
-    static std::once_flag once;
-    std::call_once(once, [] { GDALAllRegister(); });
+    detail::register_gdal_drivers();
     state_ = std::make_unique<State>(target);
     State& s = *state_;
     s.dxf = std::string_view(format.driver) == "DXF";
@@ -340,8 +339,7 @@ std::vector<std::string> contour_extensions() {
 void write_contour_vrt(const fs::path& target,
                        const std::vector<fs::path>& pieces,
                        const ContourWriteOptions& options) {
-    static std::once_flag once;
-    std::call_once(once, [] { GDALAllRegister(); });
+    detail::register_gdal_drivers();
     qgis::XmlWriter xml;
     xml.open("OGRVRTDataSource");
     xml.open("OGRVRTUnionLayer", {{"name", options.layer}});

@@ -26,6 +26,7 @@
 #include "dtm/core/error.hpp"
 #include "dtm/io/atomic_file.hpp"
 #include "dtm/io/extension.hpp"
+#include "io/detail/gdal_drivers.hpp"
 
 namespace dtm::io {
 namespace fs = std::filesystem;
@@ -34,7 +35,7 @@ namespace {
 void register_gdal() {
     static std::once_flag once;
     std::call_once(once, [] {
-        GDALAllRegister();
+        detail::register_gdal_drivers();
         CPLSetConfigOption("GDAL_PAM_ENABLED", "NO");  // no .aux.xml side files
     });
 }

@@ -11,12 +11,12 @@
 #include <cmath>
 #include <limits>
 #include <memory>
-#include <mutex>
 #include <string>
 
 #include "dtm/core/error.hpp"
 #include "dtm/io/extension.hpp"
 #include "dtm/io/formats/crs.hpp"
+#include "io/detail/gdal_drivers.hpp"
 #include "io/formats/ogr_range.hpp"
 
 namespace dtm::io {
@@ -40,8 +40,7 @@ std::string last_gdal_error() {
 }
 
 DatasetPtr open_vector(const std::filesystem::path& path) {
-    static std::once_flag registered;
-    std::call_once(registered, [] { GDALAllRegister(); });
+    detail::register_gdal_drivers();
     const char* const open_options[] = {"GEOM_POSSIBLE_NAMES=WKT,geometry,the_geom,geom,wkt_geom",
                                         "KEEP_GEOM_COLUMNS=NO", nullptr};
     // A .dxf is read by GDAL's DXF driver only: any other driver would take a drawing whose text

@@ -10,9 +10,9 @@
 
 #include <algorithm>
 #include <memory>
-#include <mutex>
 
 #include "dtm/core/error.hpp"
+#include "io/detail/gdal_drivers.hpp"
 
 namespace dtm::io {
 namespace {
@@ -32,8 +32,7 @@ void write_ogr_faces(std::span<const Point3> vertices,
                      const std::filesystem::path& path,
                      const std::string& crs_wkt,
                      std::string_view ext) {
-    static std::once_flag registered;
-    std::call_once(registered, [] { GDALAllRegister(); });
+    detail::register_gdal_drivers();
     const char* driver_name = ext == "gpkg" ? "GPKG" : "ESRI Shapefile";
     GDALDriver* driver = GetGDALDriverManager()->GetDriverByName(driver_name);
     if (driver == nullptr)

@@ -11,12 +11,12 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
-#include <mutex>
 #include <numbers>
 #include <string>
 
 #include "dtm/core/error.hpp"
 #include "dtm/io/extension.hpp"
+#include "io/detail/gdal_drivers.hpp"
 
 namespace dtm::io {
 namespace {
@@ -111,8 +111,7 @@ void write_ogr_tin(const Tin& tin,
                    const std::filesystem::path& path,
                    const TinWriteOptions& options) {
     const char* driver_name = driver_for(path);
-    static std::once_flag registered;
-    std::call_once(registered, [] { GDALAllRegister(); });
+    detail::register_gdal_drivers();
     GDALDriver* driver = GetGDALDriverManager()->GetDriverByName(driver_name);
     if (driver == nullptr) {
         throw Error(std::string("ogr tin: GDAL has no ") + driver_name + " driver");

@@ -11,12 +11,12 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
-#include <mutex>
 #include <string>
 
 #include "dtm/core/error.hpp"
 #include "dtm/io/atomic_file.hpp"
 #include "dtm/io/voronoi_writer.hpp"
+#include "io/detail/gdal_drivers.hpp"
 
 namespace dtm::io {
 namespace fs = std::filesystem;
@@ -55,8 +55,7 @@ public:
           bool string_ids)
         : out_(target) {
         const Format& format = format_for(target);
-        static std::once_flag once;
-        std::call_once(once, [] { GDALAllRegister(); });
+        detail::register_gdal_drivers();
         GDALDriverH driver = GDALGetDriverByName(format.driver);
         if (driver == nullptr) {
             throw Error(std::string("voronoi: the GDAL driver ") + format.driver +

@@ -9,10 +9,10 @@
 #include <cctype>
 #include <cmath>
 #include <memory>
-#include <mutex>
 #include <string>
 
 #include "dtm/core/error.hpp"
+#include "io/detail/gdal_drivers.hpp"
 
 namespace dtm::io {
 
@@ -35,8 +35,7 @@ ReadResult read_raster_dem(const InputFile& file, const ReadOptions&, const Prog
                          "a raster DEM is a survey input (its cells become points), not a line or "
                          "ring input");
     }
-    static std::once_flag registered;
-    std::call_once(registered, [] { GDALAllRegister(); });
+    detail::register_gdal_drivers();
     std::unique_ptr<GDALDataset> ds(static_cast<GDALDataset*>(GDALOpenEx(
         file.path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));
     if (!ds) throw InputError(file.path, 0, 0, "GDAL cannot open the file as a raster");

@@ -9,11 +9,11 @@
 
 #include <algorithm>
 #include <array>
-#include <mutex>
 
 #include "dtm/core/error.hpp"
 #include "dtm/io/atomic_file.hpp"
 #include "dtm/io/extension.hpp"
+#include "io/detail/gdal_drivers.hpp"
 
 namespace dtm::io {
 namespace fs = std::filesystem;
@@ -87,8 +87,7 @@ struct VectorFile::State {
 };
 
 VectorFile::VectorFile(const fs::path& target, const std::string& crs_wkt) {
-    static std::once_flag once;
-    std::call_once(once, [] { GDALAllRegister(); });
+    detail::register_gdal_drivers();
     const std::string ext = lower_extension(target);
     const Format* format = nullptr;
     for (const Format& f : formats) {

@@ -16,6 +16,7 @@
 #include <memory>
 
 #include "dtm/core/error.hpp"
+#include "io/detail/gdal_drivers.hpp"
 
 namespace dtm::io::map {
 namespace {
@@ -48,7 +49,7 @@ std::string neatline_wkt(const Box2& e) {
 void georeference_pdf(const std::filesystem::path& path,
                       const std::vector<PageFrame>& pages,
                       const std::string& crs_wkt) {
-    GDALAllRegister();
+    io::detail::register_gdal_drivers();
     const QuietErrors quiet;
     OGRSpatialReference srs;
     if (!crs_wkt.empty() && srs.SetFromUserInput(crs_wkt.c_str()) != OGRERR_NONE) {
