@@ -35,12 +35,19 @@ struct Record {  ///< an input point on its way to its group's rank (32 bytes)
     [[nodiscard]] bool z_known() const noexcept { return (tagged & z_known_bit) != 0; }
 };
 
-struct Answer {  ///< a group's answer to the owner of one member (32 bytes)
+/// The second top bit of an answer's representative: the group has more than one member.
+constexpr std::uint64_t duplicates_bit = std::uint64_t{1} << 62;
+
+struct Answer {  ///< a group's answer to the owner of one member (24 bytes)
     std::uint64_t index;
-    std::uint64_t representative;  ///< input index of the kept point (index itself when kept)
-    double z;                      ///< the kept vertex's final z
-    std::uint32_t z_known;
-    std::uint32_t has_duplicates;
+    /// Input index of the kept point (index itself when kept) | z_known_bit | duplicates_bit.
+    std::uint64_t tagged;
+    double z;  ///< the kept vertex's final z
+    [[nodiscard]] std::uint64_t representative() const noexcept {
+        return tagged & ~(z_known_bit | duplicates_bit);
+    }
+    [[nodiscard]] bool z_known() const noexcept { return (tagged & z_known_bit) != 0; }
+    [[nodiscard]] bool has_duplicates() const noexcept { return (tagged & duplicates_bit) != 0; }
 };
 
 struct Number {  ///< a kept vertex's number and position for a member input
@@ -117,7 +124,9 @@ MergedShare merge_exact_duplicates(Comm& comm,
             z = known ? detail::duplicate_rule_z(rule, z, records[k].z, count) : records[k].z;
             known = true;
         }
-        const std::uint32_t has_duplicates = b - a > 1 ? 1U : 0U;
+        const bool has_duplicates = b - a > 1;
+        const std::uint64_t tagged =
+            records[a].index() | (known ? z_known_bit : 0) | (has_duplicates ? duplicates_bit : 0);
         if (has_duplicates) {
             groups.emplace(records[a].index(),
                            std::pair{members.size(), members.size() + b - a - 1});
@@ -125,9 +134,8 @@ MergedShare merge_exact_duplicates(Comm& comm,
                 members.emplace_back(records[k].index(), origin_of(firsts, records[k].index()));
         }
         for (std::size_t k = a; k < b; ++k) {
-            append_value(
-                out[origin_of(firsts, records[k].index())],
-                Answer{records[k].index(), records[a].index(), z, known ? 1U : 0U, has_duplicates});
+            append_value(out[origin_of(firsts, records[k].index())],
+                         Answer{records[k].index(), tagged, z});
         }
         a = b;
     }
@@ -138,20 +146,22 @@ MergedShare merge_exact_duplicates(Comm& comm,
 
     // 3. Kept vertices numbered in input order.
     std::uint64_t kept = 0;
-    for (const Answer& a : answers) kept += a.representative == a.index ? 1 : 0;
+    for (const Answer& a : answers) kept += a.representative() == a.index ? 1 : 0;
     share.first_vertex =
         static_cast<std::uint64_t>(comm.exscan_sum(static_cast<std::int64_t>(kept)));
     share.total_vertices =
         static_cast<std::uint64_t>(comm.allreduce(static_cast<std::int64_t>(kept), Reduce::sum));
     share.vertex_of_input.assign(local.size(), 0);
+    share.vertices.reserve(kept);  // no growth: the merge's peak is this step
     out.assign(ranks, {});
     for (std::size_t i = 0; i < local.size(); ++i) {
         const Answer& a = answers[i];
-        if (a.representative != a.index) continue;
+        if (a.representative() != a.index) continue;
         const std::uint64_t id = share.first_vertex + share.vertices.size();
         share.vertex_of_input[i] = id;
-        share.vertices.push_back({{local[i].p.x, local[i].p.y, a.z}, id, a.z_known != 0});
-        if (a.has_duplicates) {
+        share.vertices.push_back(
+            {{local[i].p.x, local[i].p.y, a.z}, id & vertex_id_bits, a.z_known()});
+        if (a.has_duplicates()) {
             append_value(out[position_hash(local[i].p.x, local[i].p.y) % ranks],
                          Number{a.index, id, local[i].p.x, local[i].p.y});
         }
@@ -174,9 +184,17 @@ MergedShare merge_exact_duplicates(Comm& comm,
         const Answer& a = answers[i];
         share.vertex_of_input[i] = n.vertex;
         const Point3& given = local[i].p;
-        share.merges.push_back({a.representative, a.index, {n.x, n.y, a.z}, given});
+        share.merges.push_back({a.representative(), a.index, {n.x, n.y, a.z}, given});
     }
     return share;
+}
+
+void MergedShare::keep_heights() {
+    std::vector<double> z;
+    z.reserve(vertices.size());
+    for (const Vertex& v : vertices) z.push_back(v.p.z);
+    std::vector<Vertex>().swap(vertices);
+    heights.insert(heights.end(), z.begin(), z.end());
 }
 
 }  // namespace dtm::dist

@@ -24,6 +24,10 @@
 #include <algorithm>
 #include <map>
 
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
 #include "algo/detail/delaunay_dc.hpp"
 #include "dist/band_merge.hpp"
 #include "dist/tree.hpp"
@@ -53,6 +57,20 @@ struct HullNote {
 };
 
 using NodeKey = std::pair<std::uint64_t, std::uint64_t>;
+
+/// Gives the whole pages inside [from, to) back to the system: their contents are not read
+/// again (they read as zeros if they are).
+void drop_pages(const void* from, const void* to) {
+#if defined(__linux__)
+    constexpr std::uintptr_t page = 4096;
+    const std::uintptr_t first = (reinterpret_cast<std::uintptr_t>(from) + page - 1) / page * page;
+    const std::uintptr_t last = reinterpret_cast<std::uintptr_t>(to) / page * page;
+    if (last > first) madvise(reinterpret_cast<void*>(first), last - first, MADV_DONTNEED);
+#else
+    (void)from;
+    (void)to;
+#endif
+}
 
 /// Who owns which position (leaves in tree order, contiguous runs per rank).
 class Owners {
@@ -150,8 +168,15 @@ private:
         mesh.first_slot = 2 * lo;
         mesh.first_vertex = lo;
         mesh.tris = std::move(local.tris);
+        // The points' pages go back as they are copied: the 24-byte kernel points and the
+        // 16-byte positions are never both whole beside the triangles (R-M1).
         mesh.own_points.reserve(n);
-        for (std::size_t k = 0; k < n; ++k) mesh.own_points.push_back({pts[k].x, pts[k].y});
+        constexpr std::size_t chunk = std::size_t{1} << 16;
+        for (std::size_t k = 0; k < n; k += chunk) {
+            const std::size_t end = std::min(n, k + chunk);
+            for (std::size_t j = k; j < end; ++j) mesh.own_points.push_back({pts[j].x, pts[j].y});
+            drop_pages(pts.data(), pts.data() + end);  // the pages dropped before cost little
+        }
     }
 
     void walk(const Node& node,

@@ -30,6 +30,12 @@ int RunOwners::of(std::uint64_t number) const {
     return std::prev(it)->rank;
 }
 
+std::pair<int, std::uint64_t> RunOwners::locate(std::uint64_t number) const {
+    const auto it = std::upper_bound(runs_.begin(), runs_.end(), number,
+                                     [](std::uint64_t n, const Run& r) { return n < r.lo; });
+    return {std::prev(it)->rank, number - std::prev(it)->lo};
+}
+
 namespace {
 
 /// Sends each owner the numbers it holds of @p wanted (sorted, unique) and returns, per
@@ -117,7 +123,12 @@ SurfaceMesh surface_mesh(Comm& comm,
     const FaceNumbers kept = trimmed ? kept_face_numbers(comm, mesh, ghosts) : FaceNumbers{};
     SurfaceMesh out;
     out.faces.reserve(mesh.tris.size());
-    std::vector<std::pair<std::uint64_t, std::uint64_t>> corners;  // (vertex id, 3 f + i)
+    struct Corner {
+        std::uint64_t id;      // vertex number
+        std::uint64_t corner;  // 3 f + i
+        std::uint32_t local;   // the kernel's vertex (its x and y)
+    };
+    std::vector<Corner> corners;
     corners.reserve(3 * mesh.tris.size());
     for (std::uint64_t s = 0; s < mesh.tris.size(); ++s) {
         const Triangle& t = mesh.tris[s];
@@ -126,7 +137,7 @@ SurfaceMesh surface_mesh(Comm& comm,
         SurfaceFace f;
         f.face = trimmed ? kept.face[s] : serial_face(mesh.first_slot + s, ghosts, real);
         for (unsigned i = 0; i < 3; ++i) {
-            corners.emplace_back(number(t.v[i]), 3 * out.faces.size() + i);
+            corners.push_back({number(t.v[i]), 3 * out.faces.size() + i, t.v[i]});
             // Kernel half-edge i runs v[i] -> v[i + 1], opposite corner i + 2
             // (tin_build_triangles).
             if (g.n[i] == global_ghost || outside(g.n[i] >> 2)) f.border |= 1U << ((i + 2) % 3);
@@ -137,31 +148,76 @@ SurfaceMesh surface_mesh(Comm& comm,
     // With every own vertex, the positions no triangle names come too (marked by no corner).
     constexpr std::uint64_t no_corner = ~std::uint64_t{0};
     if (options.every_own_vertex) {
-        for (const std::uint64_t id : k.input_ids) corners.emplace_back(id, no_corner);
+        for (std::size_t v = 0; v < k.input_ids.size(); ++v) {
+            corners.push_back({k.input_ids[v], no_corner, static_cast<std::uint32_t>(v)});
+        }
     }
-    std::sort(corners.begin(), corners.end());
+    std::sort(corners.begin(), corners.end(), [](const Corner& a, const Corner& b) {
+        return a.id < b.id || (a.id == b.id && a.corner < b.corner);
+    });
     std::vector<std::uint64_t> wanted;
-    for (const auto& [id, corner] : corners) {
-        if (wanted.empty() || wanted.back() != id) wanted.push_back(id);
-        if (corner == no_corner) continue;
-        out.faces[corner / 3].v[corner % 3] = static_cast<std::uint32_t>(wanted.size() - 1);
+    for (const Corner& c : corners) {
+        if (wanted.empty() || wanted.back() != c.id) {
+            wanted.push_back(c.id);
+            const XY xy = mesh.point(mesh.global_vertex(c.local));
+            out.vertices.push_back({c.id, {xy.x, xy.y, 0.0}});
+        }
+        if (c.corner == no_corner) continue;
+        out.faces[c.corner / 3].v[c.corner % 3] = static_cast<std::uint32_t>(wanted.size() - 1);
     }
-    std::vector<std::pair<std::uint64_t, std::uint64_t>>().swap(corners);
-    // The coordinates and heights from the vertices' owners in the merge.
-    const RunOwners owners(comm, merged.first_vertex, merged.first_vertex + merged.vertices.size());
+    std::vector<Corner>().swap(corners);
+    // The heights from the vertices' owners in the merge.
+    const RunOwners owners(comm, merged.first_vertex, merged.first_vertex + merged.count());
     const auto asked = ask_owners(comm, owners, wanted);
     std::vector<Bytes> answer(asked.size());
     for (std::size_t r = 0; r < asked.size(); ++r) {
         for (const std::uint64_t v : from_bytes<std::uint64_t>(asked[r])) {
-            append_value(answer[r], merged.vertices[v - merged.first_vertex].p);
+            append_value(answer[r], merged.z(v - merged.first_vertex));
         }
     }
     // Answers come back in source-rank order, each in the asked (ascending) order: that is
     // `wanted`'s order, since owners hold ascending runs.
-    const auto points = concatenated<Point3>(comm.alltoallv(std::move(answer)));
-    out.vertices.resize(wanted.size());
-    for (std::size_t w = 0; w < wanted.size(); ++w) out.vertices[w] = {wanted[w], points[w]};
+    const auto heights = concatenated<double>(comm.alltoallv(std::move(answer)));
+    for (std::size_t w = 0; w < wanted.size(); ++w) out.vertices[w].p.z = heights[w];
     return out;
+}
+
+void merged_vertex_runs(Comm& comm,
+                        const MergedShare& merged,
+                        const DistributedMesh& k,
+                        const std::function<void(std::uint64_t, std::span<const Point3>)>& run) {
+    const LocalMesh& mesh = k.mesh;
+    const RunOwners owners(comm, merged.first_vertex, merged.first_vertex + merged.count());
+    const auto largest = static_cast<std::uint64_t>(
+        comm.allreduce(static_cast<std::int64_t>(merged.count()), Reduce::max));
+    const std::uint64_t length = std::max<std::uint64_t>(65536, (largest + 15) / 16);
+    const std::uint64_t rounds = (largest + length - 1) / length;
+    // Per own position, the round its vertex travels in (at most 16).
+    std::vector<std::uint8_t> round_of(k.input_ids.size());
+    for (std::size_t v = 0; v < k.input_ids.size(); ++v) {
+        round_of[v] = static_cast<std::uint8_t>(owners.locate(k.input_ids[v]).second / length);
+    }
+    struct Record {
+        std::uint64_t place;  // in the owner's run
+        double x, y;
+    };
+    std::vector<Point3> block;
+    for (std::uint64_t round = 0; round < rounds; ++round) {
+        std::vector<Bytes> out(static_cast<std::size_t>(comm.size()));
+        for (std::size_t v = 0; v < round_of.size(); ++v) {
+            if (round_of[v] != round) continue;
+            const auto [rank, place] = owners.locate(k.input_ids[v]);
+            const XY& xy = mesh.own_points[v];
+            append_value(out[static_cast<std::size_t>(rank)], Record{place, xy.x, xy.y});
+        }
+        const auto records = concatenated<Record>(comm.alltoallv(std::move(out)));
+        const std::uint64_t first = std::min<std::uint64_t>(round * length, merged.count());
+        block.resize(std::min<std::uint64_t>(length, merged.count() - first));
+        for (const Record& r : records) {
+            block[r.place - first] = {r.x, r.y, merged.z(r.place)};
+        }
+        run(merged.first_vertex + first, block);
+    }
 }
 
 }  // namespace dtm::dist

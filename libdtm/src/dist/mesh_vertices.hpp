@@ -7,8 +7,10 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "dist/kernel.hpp"
@@ -23,6 +25,8 @@ class RunOwners {
 public:
     RunOwners(Comm& comm, std::uint64_t lo, std::uint64_t hi);
     [[nodiscard]] int of(std::uint64_t number) const;
+    /// The rank of @p number and its place in that rank's run.
+    [[nodiscard]] std::pair<int, std::uint64_t> locate(std::uint64_t number) const;
 
 private:
     struct Run {
@@ -75,10 +79,20 @@ struct SurfaceMeshOptions {
 };
 
 /// Collective: this rank's real triangles (in slot order) with their vertices as the merge keeps
-/// them (x, y, z asked of the vertices' owners in @p merged).
+/// them (x and y from the kernel's positions, z asked of the vertices' owners in @p merged).
 [[nodiscard]] SurfaceMesh surface_mesh(Comm& comm,
                                        const MergedShare& merged,
                                        const DistributedMesh& kernel,
                                        const SurfaceMeshOptions& options = {});
+
+/// Collective: this rank's merged vertices [merged.first_vertex, + merged.count()) as x, y, z in
+/// consecutive runs of at most a sixteenth of the largest rank's count (at least 65536), passed
+/// to @p run with the first vertex number of each: x and y from the vertices' kernel owners, z
+/// from @p merged. Every rank calls @p run the same number of times (a run may be empty), so
+/// @p run may be collective. A rank holds one run's records at a time, not the whole block.
+void merged_vertex_runs(Comm& comm,
+                        const MergedShare& merged,
+                        const DistributedMesh& kernel,
+                        const std::function<void(std::uint64_t, std::span<const Point3>)>& run);
 
 }  // namespace dtm::dist

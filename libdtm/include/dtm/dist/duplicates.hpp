@@ -22,12 +22,16 @@ struct InputPoint {
     bool z_known = true;
 };
 
-/// A kept vertex with its global vertex number.
+/// The bits of a vertex number in Vertex::id (mask a number with it where one is stored).
+inline constexpr std::uint64_t vertex_id_bits = (std::uint64_t{1} << 63) - 1;
+
+/// A kept vertex with its global vertex number (32 bytes: the number and the flag share a word).
 struct Vertex {
     Point3 p;
-    std::uint64_t id = 0;
-    bool z_known = true;
+    std::uint64_t id : 63 = 0;
+    bool z_known : 1 = true;
 };
+static_assert(sizeof(Vertex) == 32);
 
 /// This rank's part of the merge: rank r holds the global input indices [first_input,
 /// first_input + local count), ranks in input order.
@@ -41,6 +45,20 @@ struct MergedShare {
     /// breaklines are placed).
     std::vector<std::uint64_t> vertex_of_input;
     std::vector<DuplicateMerge> merges;  ///< merged local input points, input order
+    /// The kept vertices' z once keep_heights() freed `vertices` (the kernel's positions hold
+    /// their x and y): vertex first_vertex + i has height heights[i].
+    std::vector<double> heights;
+
+    /// Frees `vertices`, keeping their z in `heights` (32 bytes per vertex down to 8).
+    void keep_heights();
+    /// The kept vertices first seen on this rank, before or after keep_heights().
+    [[nodiscard]] std::size_t count() const noexcept {
+        return vertices.empty() ? heights.size() : vertices.size();
+    }
+    /// The z of vertex first_vertex + @p i.
+    [[nodiscard]] double z(std::size_t i) const {
+        return vertices.empty() ? heights[i] : vertices[i].p.z;
+    }
 };
 
 /// Collective: every point goes to the rank of a hash of its exact coordinates (-0 as 0), which

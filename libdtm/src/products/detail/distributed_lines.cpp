@@ -166,7 +166,8 @@ PlacedLines place_lines(dist::Comm& comm,
     const std::uint64_t first_new = merged.total_vertices;
     if (comm.rank() == last) {
         for (std::size_t v = first_crossing; v < in.vertices.size(); ++v) {
-            merged.vertices.push_back({in.vertices[v], first_new + (v - first_crossing), true});
+            merged.vertices.push_back(
+                {in.vertices[v], (first_new + (v - first_crossing)) & dist::vertex_id_bits, true});
         }
     }
     merged.total_vertices += out.crossings;

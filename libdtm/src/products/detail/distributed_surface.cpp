@@ -109,6 +109,7 @@ DistributedSurface distributed_surface(dist::Comm& comm,
     std::vector<dist::Point> points;
     points.reserve(out.merged.vertices.size());
     for (const dist::Vertex& v : out.merged.vertices) points.push_back({v.p.x, v.p.y, v.id});
+    out.merged.keep_heights();  // the kernel's positions hold x and y from here on
     dist::Share share =
         dist::partition_points(comm, std::move(points), {}, progress.sub(0.25, 0.5));
     out.kernel = dist::triangulate_share(comm, std::move(share), {}, progress.sub(0.5, 0.9));

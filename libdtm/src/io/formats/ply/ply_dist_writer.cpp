@@ -124,17 +124,18 @@ std::uint64_t write_distributed_ply(dist::Comm& comm,
         if (comm.rank() == 0) {
             file->write_at(0, std::as_bytes(std::span<const char>(header.data(), header.size())));
         }
-        std::vector<std::byte> block;
-        block.reserve(24 * merged.vertices.size());
-        for (const dist::Vertex& v : merged.vertices) {
-            dist::append_value(block, v.p.x);
-            dist::append_value(block, v.p.y);
-            dist::append_value(block, v.p.z);
-        }
-        file->write_at(header.size() + 24 * merged.first_vertex, block);
+        // Vertices in runs (x and y from the kernel's positions, z from the merge), so that no
+        // rank holds its whole block beside the kernel.
+        static_assert(sizeof(Point3) == 24);
+        dist::merged_vertex_runs(
+            comm, merged, kernel, [&](std::uint64_t first, std::span<const Point3> run) {
+                if (!run.empty()) file->write_at(header.size() + 24 * first, std::as_bytes(run));
+            });
         // Faces: runs of consecutive face numbers (slots below R in place, the movers one by one
-        // into the holes; with a domain, the removed ones left out).
-        block.clear();
+        // into the holes; with a domain, the removed ones left out), written at most 4 MiB at
+        // a time.
+        constexpr std::size_t block_limit = std::size_t{4} << 20;
+        std::vector<std::byte> block;
         std::uint64_t run_start = 0;
         const auto flush = [&] {
             if (!block.empty()) file->write_at(face_start + 13 * run_start, block);
@@ -143,7 +144,10 @@ std::uint64_t write_distributed_ply(dist::Comm& comm,
         for (std::uint64_t s = 0; s < mesh.tris.size(); ++s) {
             const std::uint64_t face = face_of(s);
             if (face == dist::FaceNumbers::none) continue;
-            if (!block.empty() && face != run_start + block.size() / 13) flush();
+            if (!block.empty() &&
+                (face != run_start + block.size() / 13 || block.size() >= block_limit)) {
+                flush();
+            }
             if (block.empty()) run_start = face;
             block.push_back(std::byte{3});
             for (const std::uint32_t v : mesh.tris[s].v) dist::append_value(block, number(v));
