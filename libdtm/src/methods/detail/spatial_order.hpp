@@ -26,4 +26,17 @@ namespace dtm::methods::detail {
 [[nodiscard]] std::vector<VertexIndex> brio_order(const std::vector<Point3>& points,
                                                   std::uint64_t seed);
 
+/// The points renumbered in insertion order: out[k] = points[order[k]]. A method that inserts
+/// vertex k at step k then reads coordinates and writes per-vertex records in sequence rather
+/// than at random. Only the numbering changes: the coordinates, hence every predicate and
+/// every decision, are the same.
+[[nodiscard]] std::vector<Point3> in_insertion_order(const std::vector<Point3>& points,
+                                                     const std::vector<VertexIndex>& order);
+
+/// Back to the input numbering after in_insertion_order: every corner v of @p triangles
+/// becomes order[v]; returns the vertices in input order (vertex order[k] = sorted[k]).
+[[nodiscard]] std::vector<Point3> to_input_numbering(std::vector<Triangle>& triangles,
+                                                     const std::vector<Point3>& sorted,
+                                                     const std::vector<VertexIndex>& order);
+
 }  // namespace dtm::methods::detail
