@@ -28,7 +28,11 @@ TEST(IncrementalKirkpatrick, DegenerateSetsGiveValidDelaunayTriangulations) {
         const auto pts = test::points(d, 1500, 4);
         const MethodResult r = test::run_method("incremental-kirkpatrick", pts);
         EXPECT_TRUE(test::is_delaunay_triangulation(r.tin, pts)) << distribution_name(d);
+        // One rebuild at the start of every BRIO round of at least 256 points (n >> j).
+        std::size_t rounds = 0;
+        for (std::size_t b = test::distinct_points(pts).size() / 2; b >= 256; b /= 2) ++rounds;
         EXPECT_GT(r.counters.extra.at("rebuilds"), 0u) << distribution_name(d);
+        EXPECT_EQ(r.counters.extra.at("rebuilds"), rounds) << distribution_name(d);
     }
 }
 
