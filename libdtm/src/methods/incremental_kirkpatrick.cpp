@@ -38,10 +38,10 @@ MethodResult run_incremental_kirkpatrick(const MethodInput& input,
     detail::PreparedPoints prepared =
         detail::prepare_points("incremental-kirkpatrick", input, pred);
     const std::vector<VertexIndex> order = detail::brio_order(prepared.vertices, options.seed);
-    // Vertex k = the k-th inserted (detail::in_insertion_order): same coordinates, same
+    // Vertex k = the k-th inserted (detail::to_insertion_order): same coordinates, same
     // decisions, nearby memory for nearby points.
-    const std::vector<Point3> pts = detail::in_insertion_order(prepared.vertices, order);
-    detail::free_storage(prepared.vertices);
+    detail::to_insertion_order(prepared.vertices, order);
+    std::vector<Point3>& pts = prepared.vertices;
     const std::size_t n = pts.size();
     // The starts of the BRIO rounds, n >> j (brio_order halves the range each round).
     std::vector<std::size_t> rebuild_at;
@@ -88,7 +88,8 @@ MethodResult run_incremental_kirkpatrick(const MethodInput& input,
         result.tin.triangles = we.release_triangles();  // after the edges are freed: less
         peak = std::max(peak, inserting);
     }
-    result.tin.vertices = detail::to_input_numbering(result.tin.triangles, pts, order);
+    detail::to_input_numbering(result.tin.triangles, pts, order);
+    result.tin.vertices = std::move(pts);
     detail::finish_counters(result, pred, prepared.duplicates, peak);
     progress.report(1.0, "triangulated");
     return result;

@@ -46,8 +46,8 @@ MethodResult run_incremental_walk(const MethodInput& input,
         // The structure works on the points renumbered in insertion order (vertex k = the k-th
         // inserted), so consecutive insertions touch neighbouring memory; same coordinates,
         // same decisions. The input numbering is restored at the end.
-        std::vector<Point3> sorted = detail::in_insertion_order(pts, order);
-        detail::free_storage(prepared.vertices);
+        std::vector<Point3>& sorted = prepared.vertices;
+        detail::to_insertion_order(sorted, order);
         detail::WingedEdgeDelaunay we(sorted, pred);
         for (std::size_t k = 0; k < sorted.size(); ++k) {
             if ((k & 4095) == 0) {
@@ -62,7 +62,8 @@ MethodResult run_incremental_walk(const MethodInput& input,
                detail::bytes_of(order);
         result.counters.flips = we.flips();
         result.tin.triangles = we.release_triangles();
-        result.tin.vertices = detail::to_input_numbering(result.tin.triangles, sorted, order);
+        detail::to_input_numbering(result.tin.triangles, sorted, order);
+        result.tin.vertices = std::move(sorted);
     }
     detail::finish_counters(result, pred, prepared.duplicates, peak);
     progress.report(1.0, "triangulated");

@@ -269,8 +269,8 @@ MethodResult run_lifting(const MethodInput& input,
     // hold. The points are renumbered in that order (vertex k = the k-th inserted), so the
     // conflict lists and facets of nearby points lie near each other in memory.
     std::vector<VertexIndex> order = detail::brio_order(prepared.vertices, options.seed);
-    const std::vector<Point3> p = detail::in_insertion_order(prepared.vertices, order);
-    detail::free_storage(prepared.vertices);
+    detail::to_insertion_order(prepared.vertices, order);
+    std::vector<Point3>& p = prepared.vertices;
     MethodResult result;
     std::size_t peak = 0;
     {
@@ -294,7 +294,8 @@ MethodResult run_lifting(const MethodInput& input,
                    detail::bytes_of(result.tin.triangles);
         }
     }
-    result.tin.vertices = detail::to_input_numbering(result.tin.triangles, p, order);
+    detail::to_input_numbering(result.tin.triangles, p, order);
+    result.tin.vertices = std::move(p);
     detail::finish_counters(result, pred, prepared.duplicates, peak);
     progress.report(1.0, "triangulated");
     return result;

@@ -282,10 +282,10 @@ MethodResult run_randomized_dag(const MethodInput& input,
     const std::vector<VertexIndex> order =
         brio ? detail::brio_order(prepared.vertices, options.seed)
              : detail::random_order(prepared.vertices.size(), options.seed);
-    // Vertex k = the k-th inserted (detail::in_insertion_order): same coordinates, same
+    // Vertex k = the k-th inserted (detail::to_insertion_order): same coordinates, same
     // decisions; the history's records and the mesh then read nearby coordinates.
-    const std::vector<Point3> pts = detail::in_insertion_order(prepared.vertices, order);
-    detail::free_storage(prepared.vertices);
+    detail::to_insertion_order(prepared.vertices, order);
+    std::vector<Point3>& pts = prepared.vertices;
     MethodResult result;
     std::size_t peak = 0;
     {
@@ -306,7 +306,8 @@ MethodResult run_randomized_dag(const MethodInput& input,
         result.tin.triangles = dag.take_real_triangles(own);
         peak += own;
     }
-    result.tin.vertices = detail::to_input_numbering(result.tin.triangles, pts, order);
+    detail::to_input_numbering(result.tin.triangles, pts, order);
+    result.tin.vertices = std::move(pts);
     detail::finish_counters(result, pred, prepared.duplicates, peak);
     progress.report(1.0, "triangulated");
     return result;

@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: MIT
-// The insertion orders (detail/spatial_order.hpp): the BRIO order is a permutation whose rounds
+// The insertion orders (detail/spatial_order.hpp): the Hilbert order sorted by the curve's
+// index, ties by vertex (checked against a plain sort of the same keys); the BRIO order is a
+// permutation whose rounds
 // (n/2^j .. n/2^(j-1)) are the same sets as in the random permutation it is cut from, each
 // round in Hilbert order (consecutive points near each other); the renumbering in insertion
 // order and back is the identity on the points and maps triangles back to input numbers.
@@ -26,6 +28,33 @@ double mean_step(const std::vector<Point3>& pts,
         sum += std::hypot(a.x - b.x, a.y - b.y);
     }
     return sum / static_cast<double>(end - begin - 1);
+}
+
+TEST(SpatialOrder, HilbertOrderKeepsTiesByVertex) {
+    // 10 000 points on 100 positions (the radix path) and 1000 on 10 (the comparison path):
+    // equal positions have equal Hilbert indices, so each position's points come together,
+    // ascending by vertex.
+    for (const std::size_t n : {10000u, 1000u}) {
+        const auto base = generate_points(Distribution::uniform, n / 100, 6);
+        std::vector<Point3> pts;
+        for (std::size_t i = 0; i < n; ++i) pts.push_back(base[(i * 37) % base.size()]);
+        const auto order = hilbert_order(pts);
+        ASSERT_EQ(order.size(), n);
+        std::size_t groups = 1;
+        for (std::size_t k = 1; k < n; ++k) {
+            const Point3& a = pts[order[k - 1]];
+            const Point3& b = pts[order[k]];
+            if (a.x == b.x && a.y == b.y) {
+                EXPECT_LT(order[k - 1], order[k]);
+            } else {
+                ++groups;
+            }
+        }
+        EXPECT_EQ(groups, base.size());
+        auto sorted = order;
+        std::sort(sorted.begin(), sorted.end());
+        for (std::size_t i = 0; i < n; ++i) ASSERT_EQ(sorted[i], i);
+    }
 }
 
 TEST(SpatialOrder, BrioIsAPermutationOfRandomRoundsEachInHilbertOrder) {
@@ -64,7 +93,8 @@ TEST(SpatialOrder, BrioIsAPermutationOfRandomRoundsEachInHilbertOrder) {
 TEST(SpatialOrder, RenumberingInInsertionOrderAndBack) {
     const auto pts = generate_points(Distribution::uniform, 300, 4);
     const auto order = brio_order(pts, 2);
-    const auto sorted = in_insertion_order(pts, order);
+    auto sorted = pts;
+    to_insertion_order(sorted, order);
     ASSERT_EQ(sorted.size(), pts.size());
     for (std::size_t k = 0; k < order.size(); ++k) {
         EXPECT_EQ(sorted[k].x, pts[order[k]].x);
@@ -74,7 +104,8 @@ TEST(SpatialOrder, RenumberingInInsertionOrderAndBack) {
     std::vector<Triangle> tris(2);
     tris[0].v = {0, 1, 2};
     tris[1].v = {299, 17, 5};
-    const auto back = to_input_numbering(tris, sorted, order);
+    auto back = sorted;
+    to_input_numbering(tris, back, order);
     ASSERT_EQ(back.size(), pts.size());
     for (std::size_t i = 0; i < pts.size(); ++i) {
         EXPECT_EQ(back[i].x, pts[i].x);

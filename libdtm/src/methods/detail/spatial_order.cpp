@@ -47,16 +47,19 @@ std::vector<VertexIndex> random_order(std::size_t n, std::uint64_t seed) {
 
 namespace {
 
-/// Sorts @p keys ascending: an LSD radix sort on 16-bit digits over the low @p bits bits (the
-/// others are zero); std::sort below a few thousand keys.
-void sort_keys(std::vector<std::uint64_t>& keys, int bits) {
+/// Sorts @p keys by their bits from @p low up (those above are zero): a stable LSD radix sort
+/// on 16-bit digits (keys equal in those bits keep their order); a comparison sort below a
+/// few thousand keys.
+void sort_keys(std::vector<std::uint64_t>& keys, int low, int bits) {
     if (keys.size() < 4096) {
-        std::sort(keys.begin(), keys.end());
+        std::stable_sort(keys.begin(), keys.end(), [low](std::uint64_t a, std::uint64_t b) {
+            return (a >> low) < (b >> low);
+        });
         return;
     }
     std::vector<std::uint64_t> other(keys.size());
     std::vector<std::uint32_t> count(1u << 16);
-    for (int shift = 0; shift < bits; shift += 16) {
+    for (int shift = low; shift < bits; shift += 16) {
         std::fill(count.begin(), count.end(), 0u);
         for (const std::uint64_t k : keys) ++count[(k >> shift) & 0xffffu];
         std::uint32_t sum = 0;
@@ -96,7 +99,9 @@ void hilbert_sort(const std::vector<Point3>& points,
             std::clamp((p.y - box.ymin) * sy, 0.0, static_cast<double>(side - 1)));
         keyed.push_back(hilbert_index(side, x, y) << index_bits | *it);
     }
-    sort_keys(keyed, 32 + index_bits);
+    // Vertices already ascending (hilbert_order): a stable sort by the Hilbert index alone
+    // keeps ties by vertex; otherwise all bits.
+    sort_keys(keyed, std::is_sorted(begin, end) ? index_bits : 0, 32 + index_bits);
     for (std::size_t i = 0; i < keyed.size(); ++i) {
         begin[i] = static_cast<VertexIndex>(keyed[i] & index_mask);
     }
@@ -129,22 +134,45 @@ std::vector<VertexIndex> brio_order(const std::vector<Point3>& points, std::uint
     return order;
 }
 
-std::vector<Point3> in_insertion_order(const std::vector<Point3>& points,
-                                       const std::vector<VertexIndex>& order) {
-    std::vector<Point3> out(order.size());
-    for (std::size_t k = 0; k < order.size(); ++k) out[k] = points[order[k]];
-    return out;
+void to_insertion_order(std::vector<Point3>& points, const std::vector<VertexIndex>& order) {
+    // Along each cycle of the permutation: points[j] <- points[order[j]].
+    std::vector<bool> done(points.size());
+    for (std::size_t s = 0; s < points.size(); ++s) {
+        if (done[s]) continue;
+        const Point3 first = points[s];
+        std::size_t j = s;
+        for (;;) {
+            done[j] = true;
+            const std::size_t k = order[j];
+            if (k == s) {
+                points[j] = first;
+                break;
+            }
+            points[j] = points[k];
+            j = k;
+        }
+    }
 }
 
-std::vector<Point3> to_input_numbering(std::vector<Triangle>& triangles,
-                                       const std::vector<Point3>& sorted,
-                                       const std::vector<VertexIndex>& order) {
+void to_input_numbering(std::vector<Triangle>& triangles,
+                        std::vector<Point3>& points,
+                        const std::vector<VertexIndex>& order) {
     for (Triangle& t : triangles) {
         for (VertexIndex& v : t.v) v = order[v];
     }
-    std::vector<Point3> out(sorted.size());
-    for (std::size_t k = 0; k < sorted.size(); ++k) out[order[k]] = sorted[k];
-    return out;
+    // Along each cycle: points[order[j]] <- points[j].
+    std::vector<bool> done(points.size());
+    for (std::size_t s = 0; s < points.size(); ++s) {
+        if (done[s]) continue;
+        Point3 carried = points[s];
+        std::size_t j = s;
+        do {
+            const std::size_t k = order[j];
+            std::swap(carried, points[k]);
+            done[k] = true;
+            j = k;
+        } while (j != s);
+    }
 }
 
 }  // namespace dtm::methods::detail
