@@ -13,8 +13,9 @@
 // starts at one of its corners, a vertex that still exists, and crosses the few triangles made
 // since the snapshot. Insertion order: BRIO (Amenta, Choi, Rote 2003; detail/spatial_order.hpp):
 // random rounds of doubling size, each in Hilbert order; the hierarchy is rebuilt at the start
-// of each round (n/2^j points in), so the snapshot is a random sample of half the points and
-// its triangles hold O(1) later points on average, as with a plain random order, while
+// of each round but the last (n/2^j points in, j >= 2), so the snapshot is a random sample of
+// a half (a quarter in the last round) of the points and its triangles hold O(1) later points
+// on average, as with a plain random order, while
 // consecutive queries descend nearby paths of the hierarchy. Each rebuild is linear, so all
 // of them cost O(n); the queries O(n log n) in total. Until 256 points are in, the walk alone
 // is used.
@@ -43,9 +44,11 @@ MethodResult run_incremental_kirkpatrick(const MethodInput& input,
     detail::to_insertion_order(prepared.vertices, order);
     std::vector<Point3>& pts = prepared.vertices;
     const std::size_t n = pts.size();
-    // The starts of the BRIO rounds, n >> j (brio_order halves the range each round).
+    // The starts of the BRIO rounds, n >> j (brio_order halves the range each round), all but
+    // the last: a hierarchy over half the points would not fit the memory budget; the last
+    // round walks from the snapshot of a quarter.
     std::vector<std::size_t> rebuild_at;
-    for (std::size_t b = n / 2; b >= 256; b /= 2) rebuild_at.push_back(b);
+    for (std::size_t b = n / 4; b >= 256; b /= 2) rebuild_at.push_back(b);
     MethodResult result;
     std::size_t peak = 0;
     {
