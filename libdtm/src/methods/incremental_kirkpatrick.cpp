@@ -17,7 +17,7 @@
 // a half (a quarter in the last round) of the points and its triangles hold O(1) later points
 // on average, as with a plain random order, while
 // consecutive queries descend nearby paths of the hierarchy. Each rebuild is linear, so all
-// of them cost O(n); the queries O(n log n) in total. Until 256 points are in, the walk alone
+// of them cost O(n); the queries O(n log n) in total. Until 64 points are in, the walk alone
 // is used.
 #include "incremental_kirkpatrick.hpp"
 
@@ -48,7 +48,7 @@ MethodResult run_incremental_kirkpatrick(const MethodInput& input,
     // the last: a hierarchy over half the points would not fit the memory budget; the last
     // round walks from the snapshot of a quarter.
     std::vector<std::size_t> rebuild_at;
-    for (std::size_t b = n / 4; b >= 256; b /= 2) rebuild_at.push_back(b);
+    for (std::size_t b = n / 4; b >= 64; b /= 2) rebuild_at.push_back(b);
     MethodResult result;
     std::size_t peak = 0;
     {
