@@ -43,22 +43,28 @@ MethodResult run_incremental_walk(const MethodInput& input,
     MethodResult result;
     std::size_t peak = 0;
     {
-        detail::WingedEdgeDelaunay we(pts, pred);
-        for (std::size_t k = 0; k < order.size(); ++k) {
+        // The structure works on the points renumbered in insertion order (vertex k = the k-th
+        // inserted), so consecutive insertions touch neighbouring memory; same coordinates,
+        // same decisions. The input numbering is restored at the end.
+        std::vector<Point3>& sorted = prepared.vertices;
+        detail::to_insertion_order(sorted, order);
+        detail::WingedEdgeDelaunay we(sorted, pred);
+        for (std::size_t k = 0; k < sorted.size(); ++k) {
             if ((k & 4095) == 0) {
-                progress.report(static_cast<double>(k) / static_cast<double>(order.size()),
+                progress.report(static_cast<double>(k) / static_cast<double>(sorted.size()),
                                 "inserting");
             }
-            result.counters.walk_steps += we.insert(order[k]);
+            result.counters.walk_steps += we.insert(static_cast<VertexIndex>(k));
         }
-        // Peak: inserting (with the order); the output is built after the edges are freed
-        // (WingedEdgeDelaunay::release_triangles), over the triangle list, in less.
-        peak = we.bytes() + detail::bytes_of(pts) + detail::bytes_of(order);
-        detail::free_storage(order);
+        // Peak: the release of the structure (WingedEdgeDelaunay::release_triangles: the links
+        // beside the edges); the output is assembled after the edges are freed, in less.
+        peak = we.bytes() + we.release_extra_bytes() + detail::bytes_of(sorted) +
+               detail::bytes_of(order);
         result.counters.flips = we.flips();
         result.tin.triangles = we.release_triangles();
+        detail::to_input_numbering(result.tin.triangles, sorted, order);
+        result.tin.vertices = std::move(sorted);
     }
-    result.tin.vertices = std::move(prepared.vertices);
     detail::finish_counters(result, pred, prepared.duplicates, peak);
     progress.report(1.0, "triangulated");
     return result;

@@ -7,18 +7,17 @@
 // when its lift lies below the plane of theirs, so the facets of the convex hull of the lifts
 // seen from below project to the Delaunay triangles. The hull is built by randomized
 // incremental construction with conflict lists (Clarkson and Shor 1989; de Berg et al.
-// ch. 11): a tetrahedron of four lifts, then each point in random order; the facets it sees
-// (strictly beyond their plane: geom::orient3d_lifted, exact) are replaced by a cone from it
-// over their horizon. Every other point keeps one facet it sees; when that facet goes, it
-// finds one among the cone's facets (it always sees one: the segment to a point just under its
-// old facet enters the new hull through the cone). Every lift is a vertex of the hull (the
-// paraboloid is strictly convex), so no point is ever inside.
-// Degeneracies: coplanar lifts (cocircular points) are not seen, so faces of several
-// cocircular points come out triangulated somehow (any triangulation is Delaunay); if all
-// points lie on one circle, the hull is flat and the polygon is fanned from its lowest point.
-// Vertical facets (collinear hull points) project to nothing and are left out.
-// Data structure: facets (3 corners counter-clockwise from outside, 3 neighbours, the head of
-// their conflict list), per point the next point of its list. Expected O(n log n).
+// ch. 11): a tetrahedron of four lifts, then each point in random order (BRIO rounds); the facets
+// it sees (strictly beyond their plane: geom::orient3d_lifted, exact) are replaced by a cone from
+// it over their horizon. Every other point keeps one facet it sees; when that facet goes, it finds
+// one among the cone's facets (it always sees one: the segment to a point just under its old facet
+// enters the new hull through the cone). Every lift is a vertex of the hull (the paraboloid is
+// strictly convex), so no point is ever inside. Degeneracies: coplanar lifts (cocircular points)
+// are not seen, so faces of several cocircular points come out triangulated somehow (any
+// triangulation is Delaunay); if all points lie on one circle, the hull is flat and the polygon is
+// fanned from its lowest point. Vertical facets (collinear hull points) project to nothing and are
+// left out. Data structure: facets (3 corners counter-clockwise from outside, 3 neighbours, the
+// head of their conflict list), per point the next point of its list. Expected O(n log n).
 #include "lifting.hpp"
 
 #include <algorithm>
@@ -265,30 +264,38 @@ MethodResult run_lifting(const MethodInput& input,
     params.finish();
     CountingPredicates pred;
     detail::PreparedPoints prepared = detail::prepare_points("lifting", input, pred);
-    const std::vector<Point3>& p = prepared.vertices;
+    // BRIO (Amenta, Choi, Rote 2003): random rounds of doubling size, each in Hilbert order;
+    // every round is a random sample, so the expected bounds of the randomized construction
+    // hold. The points are renumbered in that order (vertex k = the k-th inserted), so the
+    // conflict lists and facets of nearby points lie near each other in memory.
+    std::vector<VertexIndex> order = detail::brio_order(prepared.vertices, options.seed);
+    detail::to_insertion_order(prepared.vertices, order);
+    std::vector<Point3>& p = prepared.vertices;
     MethodResult result;
     std::size_t peak = 0;
     {
-        std::vector<VertexIndex> order = detail::random_order(p.size(), options.seed);
+        std::vector<VertexIndex> sequence(p.size());
+        for (std::size_t k = 0; k < sequence.size(); ++k) sequence[k] = static_cast<VertexIndex>(k);
         LiftedHull hull(p, pred);
-        if (hull.build(order, progress.sub(0.0, 0.95))) {
+        if (hull.build(sequence, progress.sub(0.0, 0.95))) {
             result.counters.extra["reassigned"] = hull.reassigned;
             result.counters.extra["facets_made"] = hull.created;
-            const std::size_t building =
-                hull.bytes() + detail::bytes_of(p) + detail::bytes_of(order);
-            detail::free_storage(order);
+            const std::size_t building = hull.bytes() + detail::bytes_of(p) +
+                                         detail::bytes_of(sequence) + detail::bytes_of(order);
+            detail::free_storage(sequence);
             result.tin.triangles = hull.lower_triangles();
-            peak = std::max(building, hull.bytes() + detail::bytes_of(p) +
+            peak = std::max(building, hull.bytes() + detail::bytes_of(p) + detail::bytes_of(order) +
                                           detail::bytes_of(result.tin.triangles));
         } else {
             result.counters.extra["cocircular"] = 1;
             const auto fan = fan_of_circle(p, pred);
             result.tin.triangles = detail::link_triangles(fan, p.size());
-            peak = detail::bytes_of(p) + detail::bytes_of(fan) +
+            peak = detail::bytes_of(p) + detail::bytes_of(order) + detail::bytes_of(fan) +
                    detail::bytes_of(result.tin.triangles);
         }
     }
-    result.tin.vertices = std::move(prepared.vertices);
+    detail::to_input_numbering(result.tin.triangles, p, order);
+    result.tin.vertices = std::move(p);
     detail::finish_counters(result, pred, prepared.duplicates, peak);
     progress.report(1.0, "triangulated");
     return result;

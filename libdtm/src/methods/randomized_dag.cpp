@@ -275,24 +275,28 @@ MethodResult run_randomized_dag(const MethodInput& input,
     detail::ParamReader params("randomized-dag", options);
     const bool finite =
         params.choice("super-triangle", {"symbolic", "finite"}, "symbolic") == "finite";
-    const bool brio = params.choice("order", {"random", "brio"}, "random") == "brio";
+    const bool brio = params.choice("order", {"brio", "random"}, "brio") == "brio";
     params.finish();
     detail::CountingPredicates pred;
     detail::PreparedPoints prepared = detail::prepare_points("randomized-dag", input, pred);
-    const std::vector<Point3>& pts = prepared.vertices;
-    const std::vector<VertexIndex> order = brio ? detail::brio_order(pts, options.seed)
-                                                : detail::random_order(pts.size(), options.seed);
+    const std::vector<VertexIndex> order =
+        brio ? detail::brio_order(prepared.vertices, options.seed)
+             : detail::random_order(prepared.vertices.size(), options.seed);
+    // Vertex k = the k-th inserted (detail::to_insertion_order): same coordinates, same
+    // decisions; the history's records and the mesh then read nearby coordinates.
+    detail::to_insertion_order(prepared.vertices, order);
+    std::vector<Point3>& pts = prepared.vertices;
     MethodResult result;
     std::size_t peak = 0;
     {
         RandomizedDag dag(pts, pred,
                           finite ? SuperTriangle::Mode::finite : SuperTriangle::Mode::symbolic);
-        for (std::size_t k = 0; k < order.size(); ++k) {
+        for (std::size_t k = 0; k < pts.size(); ++k) {
             if ((k & 4095) == 0) {
-                progress.report(static_cast<double>(k) / static_cast<double>(order.size()),
+                progress.report(static_cast<double>(k) / static_cast<double>(pts.size()),
                                 "inserting");
             }
-            dag.insert(order[k]);
+            dag.insert(static_cast<VertexIndex>(k));
         }
         result.counters.flips = dag.flips();
         result.counters.walk_steps = dag.steps();
@@ -302,7 +306,8 @@ MethodResult run_randomized_dag(const MethodInput& input,
         result.tin.triangles = dag.take_real_triangles(own);
         peak += own;
     }
-    result.tin.vertices = std::move(prepared.vertices);
+    detail::to_input_numbering(result.tin.triangles, pts, order);
+    result.tin.vertices = std::move(pts);
     detail::finish_counters(result, pred, prepared.duplicates, peak);
     progress.report(1.0, "triangulated");
     return result;

@@ -105,7 +105,7 @@ const std::array kMethods{
                "O(n log n) expected time, O(n) expected memory",
                "randomized incremental insertion, point location in the history DAG",
                false, false, Output::triangulation,
-               "super-triangle=symbolic|finite order=random|brio", &run_randomized_dag},
+               "super-triangle=symbolic|finite order=brio|random", &run_randomized_dag},
     MethodInfo{"pseudo", Family::pseudo, "001 (Hobza 2010, Trcka 2007)",
                "O(n log n) observed (001 §4.1)",
                "pseudo-triangulation by incremental insertion with the generalized flip", false,

@@ -25,10 +25,15 @@ TEST(IncrementalKirkpatrick, EqualsTheProductionKernelInGeneralPosition) {
 TEST(IncrementalKirkpatrick, DegenerateSetsGiveValidDelaunayTriangulations) {
     for (const Distribution d : {Distribution::grid, Distribution::circle, Distribution::collinear,
                                  Distribution::duplicates, Distribution::cluster}) {
-        const auto pts = test::points(d, 1500, 4);
+        const auto pts = test::points(d, 3000, 4);
         const MethodResult r = test::run_method("incremental-kirkpatrick", pts);
         EXPECT_TRUE(test::is_delaunay_triangulation(r.tin, pts)) << distribution_name(d);
+        // One rebuild at the start of every BRIO round but the last, from 64 points in (n >> j,
+        // j >= 2).
+        std::size_t rounds = 0;
+        for (std::size_t b = test::distinct_points(pts).size() / 4; b >= 64; b /= 2) ++rounds;
         EXPECT_GT(r.counters.extra.at("rebuilds"), 0u) << distribution_name(d);
+        EXPECT_EQ(r.counters.extra.at("rebuilds"), rounds) << distribution_name(d);
     }
 }
 

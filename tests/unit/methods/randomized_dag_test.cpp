@@ -18,14 +18,20 @@ TEST(RandomizedDag, EqualsTheProductionKernelInGeneralPosition) {
     test::expect_delaunay_like_dc("randomized-dag",
                                   test::points(Distribution::uniform, 2000, 2, test::sjtsk_mm()));
     test::expect_delaunay_like_dc("randomized-dag", test::points(Distribution::cluster, 2000, 3));
+    // The plain random order (the lecture's) as well as the default BRIO rounds.
+    test::expect_delaunay_like_dc("randomized-dag", pts, {{"order", "random"}}, 4);
+    test::expect_delaunay_like_dc("randomized-dag", pts, {{"order", "brio"}}, 4);
 }
 
 TEST(RandomizedDag, DegenerateSetsGiveValidDelaunayTriangulations) {
     for (const Distribution d : {Distribution::grid, Distribution::circle, Distribution::collinear,
                                  Distribution::duplicates, Distribution::arc}) {
         const auto pts = test::points(d, 1000, 4);
-        const MethodResult r = test::run_method("randomized-dag", pts);
-        EXPECT_TRUE(test::is_delaunay_triangulation(r.tin, pts)) << distribution_name(d);
+        for (const char* order : {"brio", "random"}) {
+            const MethodResult r = test::run_method("randomized-dag", pts, {{"order", order}});
+            EXPECT_TRUE(test::is_delaunay_triangulation(r.tin, pts))
+                << distribution_name(d) << " " << order;
+        }
     }
 }
 

@@ -38,15 +38,18 @@ struct SubtreeScratch::Buffers {
     std::vector<std::uint64_t> bitmap;  ///< all zero between uses
     std::vector<KernelPoint> points;
 
-    Buffers()
-        : by_x(capacity),
-          by_y(capacity),
-          sort_tmp(capacity),
-          y_rank(capacity),
-          ranks(capacity),
-          ranks_tmp(capacity + 2),
-          bitmap(capacity / 64 + 1, 0),
-          points(capacity) {}
+    std::size_t size;  ///< the largest subtree they hold
+
+    explicit Buffers(std::size_t n)
+        : by_x(n),
+          by_y(n),
+          sort_tmp(n),
+          y_rank(n),
+          ranks(n),
+          ranks_tmp(n + 2),
+          bitmap(n / 64 + 1, 0),
+          points(n),
+          size(n) {}
 };
 
 SubtreeScratch::SubtreeScratch() = default;
@@ -54,8 +57,13 @@ SubtreeScratch::~SubtreeScratch() = default;
 SubtreeScratch::SubtreeScratch(SubtreeScratch&&) noexcept = default;
 SubtreeScratch& SubtreeScratch::operator=(SubtreeScratch&&) noexcept = default;
 
-SubtreeScratch::Buffers& SubtreeScratch::get() {
-    if (!buffers_) buffers_ = std::make_unique<Buffers>();
+SubtreeScratch::Buffers& SubtreeScratch::get(std::size_t n) {
+    // Sized to the subtree (a power of two, at most capacity), grown when a larger one comes:
+    // a small triangulation does not allocate and clear the whole MiB.
+    if (!buffers_ || buffers_->size < n) {
+        buffers_.reset();
+        buffers_ = std::make_unique<Buffers>(std::min(capacity, std::bit_ceil(n)));
+    }
     return *buffers_;
 }
 
@@ -200,7 +208,7 @@ void order_subtree(KernelPoint* a, std::size_t n, int cut, SubtreeScratch& scrat
         std::sort(a, a + n, Before<0>{});
         return;
     }
-    SubtreeScratch::Buffers& s = scratch.get();
+    SubtreeScratch::Buffers& s = scratch.get(n);
     double x_lo = a[0].x, x_hi = a[0].x, y_lo = a[0].y, y_hi = a[0].y;
     for (std::size_t i = 1; i < n; ++i) {
         x_lo = std::min(x_lo, a[i].x);

@@ -31,7 +31,8 @@ struct Before {
     }
 };
 
-/// Scratch memory of one thread for order_subtree, allocated on first use.
+/// Scratch memory of one thread for order_subtree, allocated on first use for the subtree's
+/// size (grown to at most capacity).
 class SubtreeScratch {
 public:
     /// The largest subtree order_subtree takes (its ranks are 16-bit); about 1 MiB of scratch.
@@ -45,7 +46,8 @@ public:
     SubtreeScratch& operator=(SubtreeScratch&&) noexcept;
 
     struct Buffers;
-    Buffers& get();
+    /// Buffers for a subtree of @p n <= capacity points.
+    Buffers& get(std::size_t n);
 
 private:
     std::unique_ptr<Buffers> buffers_;

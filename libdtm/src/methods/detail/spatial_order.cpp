@@ -4,6 +4,7 @@
 #include "methods/detail/spatial_order.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <utility>
 
 namespace dtm::methods::detail {
@@ -46,7 +47,33 @@ std::vector<VertexIndex> random_order(std::size_t n, std::uint64_t seed) {
 
 namespace {
 
-/// Sorts order[begin, end) by the Hilbert index of the points over @p box.
+/// Sorts @p keys by their bits from @p low up (those above are zero): a stable LSD radix sort
+/// on 16-bit digits (keys equal in those bits keep their order); a comparison sort below a
+/// few thousand keys.
+void sort_keys(std::vector<std::uint64_t>& keys, int low, int bits) {
+    if (keys.size() < 4096) {
+        std::stable_sort(keys.begin(), keys.end(), [low](std::uint64_t a, std::uint64_t b) {
+            return (a >> low) < (b >> low);
+        });
+        return;
+    }
+    std::vector<std::uint64_t> other(keys.size());
+    std::vector<std::uint32_t> count(1u << 16);
+    for (int shift = low; shift < bits; shift += 16) {
+        std::fill(count.begin(), count.end(), 0u);
+        for (const std::uint64_t k : keys) ++count[(k >> shift) & 0xffffu];
+        std::uint32_t sum = 0;
+        for (std::uint32_t& c : count) {
+            const std::uint32_t here = c;
+            c = sum;
+            sum += here;
+        }
+        for (const std::uint64_t k : keys) other[count[(k >> shift) & 0xffffu]++] = k;
+        keys.swap(other);
+    }
+}
+
+/// Sorts order[begin, end) by the Hilbert index of the points over @p box (ties by index).
 void hilbert_sort(const std::vector<Point3>& points,
                   const Box2& box,
                   VertexIndex* begin,
@@ -56,7 +83,13 @@ void hilbert_sort(const std::vector<Point3>& points,
     const double h = std::max(box.ymax - box.ymin, 1e-300);
     const double sx = (side - 1) / w;
     const double sy = (side - 1) / h;
-    std::vector<std::pair<std::uint64_t, VertexIndex>> keyed;
+    // The key: the 32-bit Hilbert index above the vertex index, so sorting the keys sorts by
+    // Hilbert index, ties by vertex.
+    VertexIndex largest = 0;
+    for (const VertexIndex* it = begin; it != end; ++it) largest = std::max(largest, *it);
+    const int index_bits = static_cast<int>(std::bit_width(largest));
+    const std::uint64_t index_mask = (std::uint64_t{1} << index_bits) - 1;
+    std::vector<std::uint64_t> keyed;
     keyed.reserve(static_cast<std::size_t>(end - begin));
     for (const VertexIndex* it = begin; it != end; ++it) {
         const Point3& p = points[*it];
@@ -64,10 +97,14 @@ void hilbert_sort(const std::vector<Point3>& points,
             std::clamp((p.x - box.xmin) * sx, 0.0, static_cast<double>(side - 1)));
         const auto y = static_cast<std::uint32_t>(
             std::clamp((p.y - box.ymin) * sy, 0.0, static_cast<double>(side - 1)));
-        keyed.emplace_back(hilbert_index(side, x, y), *it);
+        keyed.push_back(hilbert_index(side, x, y) << index_bits | *it);
     }
-    std::sort(keyed.begin(), keyed.end());
-    for (std::size_t i = 0; i < keyed.size(); ++i) begin[i] = keyed[i].second;
+    // Vertices already ascending (hilbert_order): a stable sort by the Hilbert index alone
+    // keeps ties by vertex; otherwise all bits.
+    sort_keys(keyed, std::is_sorted(begin, end) ? index_bits : 0, 32 + index_bits);
+    for (std::size_t i = 0; i < keyed.size(); ++i) {
+        begin[i] = static_cast<VertexIndex>(keyed[i] & index_mask);
+    }
 }
 
 Box2 box_of(const std::vector<Point3>& points) {
@@ -95,6 +132,47 @@ std::vector<VertexIndex> brio_order(const std::vector<Point3>& points, std::uint
         end = begin;
     }
     return order;
+}
+
+void to_insertion_order(std::vector<Point3>& points, const std::vector<VertexIndex>& order) {
+    // Along each cycle of the permutation: points[j] <- points[order[j]].
+    std::vector<bool> done(points.size());
+    for (std::size_t s = 0; s < points.size(); ++s) {
+        if (done[s]) continue;
+        const Point3 first = points[s];
+        std::size_t j = s;
+        for (;;) {
+            done[j] = true;
+            const std::size_t k = order[j];
+            if (k == s) {
+                points[j] = first;
+                break;
+            }
+            points[j] = points[k];
+            j = k;
+        }
+    }
+}
+
+void to_input_numbering(std::vector<Triangle>& triangles,
+                        std::vector<Point3>& points,
+                        const std::vector<VertexIndex>& order) {
+    for (Triangle& t : triangles) {
+        for (VertexIndex& v : t.v) v = order[v];
+    }
+    // Along each cycle: points[order[j]] <- points[j].
+    std::vector<bool> done(points.size());
+    for (std::size_t s = 0; s < points.size(); ++s) {
+        if (done[s]) continue;
+        Point3 carried = points[s];
+        std::size_t j = s;
+        do {
+            const std::size_t k = order[j];
+            std::swap(carried, points[k]);
+            done[k] = true;
+            j = k;
+        } while (j != s);
+    }
 }
 
 }  // namespace dtm::methods::detail

@@ -26,4 +26,16 @@ namespace dtm::methods::detail {
 [[nodiscard]] std::vector<VertexIndex> brio_order(const std::vector<Point3>& points,
                                                   std::uint64_t seed);
 
+/// The points renumbered in insertion order, in place: points[k] becomes the old
+/// points[order[k]]. A method that inserts vertex k at step k then reads coordinates and
+/// writes per-vertex records in sequence rather than at random. Only the numbering changes:
+/// the coordinates, hence every predicate and every decision, are the same.
+void to_insertion_order(std::vector<Point3>& points, const std::vector<VertexIndex>& order);
+
+/// Back to the input numbering after to_insertion_order: every corner v of @p triangles
+/// becomes order[v], and @p points goes back to input order, in place.
+void to_input_numbering(std::vector<Triangle>& triangles,
+                        std::vector<Point3>& points,
+                        const std::vector<VertexIndex>& order);
+
 }  // namespace dtm::methods::detail

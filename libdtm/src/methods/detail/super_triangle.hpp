@@ -59,9 +59,29 @@ public:
 
     /// +1 if c is left of a->b, -1 right, 0 collinear.
     [[nodiscard]] int orient(VertexIndex a, VertexIndex b, VertexIndex c) {
-        if (mode_ == Mode::finite || (a < n_ && b < n_ && c < n_)) {
-            return pred_.orient(xy(a), xy(b), xy(c));
+        if (a < n_ && b < n_ && c < n_) return pred_.orient(p_[a], p_[b], p_[c]);
+        return orient_with_corner(a, b, c);
+    }
+
+    /// +1 if d is strictly inside the circle through a, b, c (counter-clockwise), -1 outside,
+    /// 0 on it.
+    [[nodiscard]] int incircle(VertexIndex a, VertexIndex b, VertexIndex c, VertexIndex d) {
+        if (a < n_ && b < n_ && c < n_ && d < n_) {
+            return pred_.incircle(p_[a], p_[b], p_[c], p_[d]);
         }
+        return incircle_with_corner(a, b, c, d);
+    }
+
+    /// Coordinates of a vertex: real points, or the finite corners.
+    [[nodiscard]] Point2 xy(VertexIndex v) const noexcept {
+        if (v < n_) return {p_[v].x, p_[v].y};
+        return finite_[v - n_];
+    }
+
+private:
+    // Out of line: a corner among the arguments is rare, the real points' test is inlined.
+    [[gnu::noinline]] int orient_with_corner(VertexIndex a, VertexIndex b, VertexIndex c) {
+        if (mode_ == Mode::finite) return pred_.orient(xy(a), xy(b), xy(c));
         // Rotations keep the sign: bring the corners to the end (one) or the real point to
         // the front (two).
         std::array<VertexIndex, 3> v{a, b, c};
@@ -75,12 +95,11 @@ public:
         return corners_ccw(v[1] - n_, v[2] - n_);
     }
 
-    /// +1 if d is strictly inside the circle through a, b, c (counter-clockwise), -1 outside,
-    /// 0 on it.
-    [[nodiscard]] int incircle(VertexIndex a, VertexIndex b, VertexIndex c, VertexIndex d) {
-        if (mode_ == Mode::finite || (a < n_ && b < n_ && c < n_ && d < n_)) {
-            return pred_.incircle(xy(a), xy(b), xy(c), xy(d));
-        }
+    [[gnu::noinline]] int incircle_with_corner(VertexIndex a,
+                                               VertexIndex b,
+                                               VertexIndex c,
+                                               VertexIndex d) {
+        if (mode_ == Mode::finite) return pred_.incircle(xy(a), xy(b), xy(c), xy(d));
         // Stable sort by key (real points first, then corners by index), counting swaps.
         std::array<VertexIndex, 4> v{a, b, c, d};
         int sign = 1;
@@ -107,13 +126,6 @@ public:
         return sign * one_corner(r[0], r[2], v[3] - n_);
     }
 
-    /// Coordinates of a vertex: real points, or the finite corners.
-    [[nodiscard]] Point2 xy(VertexIndex v) const noexcept {
-        if (v < n_) return {p_[v].x, p_[v].y};
-        return finite_[v - n_];
-    }
-
-private:
     static void rotate(std::array<VertexIndex, 3>& v) noexcept {
         const VertexIndex t = v[2];
         v[2] = v[1];

@@ -34,7 +34,7 @@ WingedEdgeDelaunay::WingedEdgeDelaunay(const std::vector<Point3>& points,
     const TriangleIndex t = new_triangle();
     tris_[t].e = {e0, e1, e2};
     for (const EdgeIndex e : {e0, e1, e2}) edges_[e].t1 = t;
-    for (const EdgeIndex e : {e0, e1, e2}) set_wings(e);
+    wing_triangle(t);
     // Outside T_pom the wings are the neighbouring sides of T_pom; they never change.
     edges_[e0].e11 = e2;
     edges_[e0].e21 = e1;
@@ -70,17 +70,25 @@ void WingedEdgeDelaunay::replace_side(EdgeIndex e, TriangleIndex from, TriangleI
     }
 }
 
-void WingedEdgeDelaunay::set_wings(EdgeIndex e) noexcept {
-    WingedEdgeRecord& r = edges_[e];
-    const auto& left = tris_[r.t1].e;
-    const int k = position(r.t1, e);
-    r.e12 = left[static_cast<std::size_t>((k + 2) % 3)];  // ends at v1
-    r.e22 = left[static_cast<std::size_t>((k + 1) % 3)];  // starts at v2
-    if (r.t2 == no_triangle) return;
-    const auto& right = tris_[r.t2].e;
-    const int j = position(r.t2, e);
-    r.e11 = right[static_cast<std::size_t>((j + 1) % 3)];  // starts at v1
-    r.e21 = right[static_cast<std::size_t>((j + 2) % 3)];  // ends at v2
+void WingedEdgeDelaunay::set_wing(EdgeIndex w,
+                                  TriangleIndex t,
+                                  EdgeIndex next,
+                                  EdgeIndex prev) noexcept {
+    WingedEdgeRecord& r = edges_[w];
+    if (r.t1 == t) {
+        r.e12 = prev;  // ends at v1
+        r.e22 = next;  // starts at v2
+    } else {
+        r.e11 = next;  // starts at v1
+        r.e21 = prev;  // ends at v2
+    }
+}
+
+void WingedEdgeDelaunay::wing_triangle(TriangleIndex t) noexcept {
+    const auto [a, b, c] = tris_[t].e;
+    set_wing(a, t, b, c);
+    set_wing(b, t, c, a);
+    set_wing(c, t, a, b);
 }
 
 std::array<VertexIndex, 3> WingedEdgeDelaunay::corners(TriangleIndex t) const noexcept {
@@ -93,19 +101,25 @@ TriangleIndex WingedEdgeDelaunay::locate(VertexIndex p, EdgeIndex start, std::ui
     EdgeIndex entry = start;
     for (;;) {
         ++steps;
-        const int k0 = position(t, entry);
+        const auto& te = tris_[t].e;
+        const int k0 = te[0] == entry ? 0 : (te[1] == entry ? 1 : 2);
+        on_side_ = -1;
         bool moved = false;
-        for (int s = 1; s <= 3 && !moved; ++s) {
-            const EdgeIndex e = tris_[t].e[static_cast<std::size_t>((k0 + s) % 3)];
+        for (int s = 1; s <= 3; ++s) {
+            const int k = k0 + s < 3 ? k0 + s : k0 + s - 3;
+            const EdgeIndex e = te[static_cast<std::size_t>(k)];
             const WingedEdgeRecord& r = edges_[e];
             const bool forward = r.t1 == t;
             const VertexIndex a = forward ? r.v1 : r.v2;
             const VertexIndex b = forward ? r.v2 : r.v1;
-            if (st_.orient(a, b, p) < 0) {
+            const int o = st_.orient(a, b, p);
+            if (o < 0) {
                 t = forward ? r.t2 : r.t1;
                 entry = e;
                 moved = true;
+                break;
             }
+            if (o == 0) on_side_ = k;
         }
         if (!moved) {
             last_ = entry;
@@ -117,16 +131,13 @@ TriangleIndex WingedEdgeDelaunay::locate(VertexIndex p, EdgeIndex start, std::ui
 std::uint64_t WingedEdgeDelaunay::insert(VertexIndex p, EdgeIndex start) {
     std::uint64_t steps = 0;
     const TriangleIndex t = locate(p, start == no_edge ? last_ : start, steps);
-    const auto c = corners(t);
-    for (int k = 0; k < 3; ++k) {
-        if (st_.orient(c[static_cast<std::size_t>(k)], c[static_cast<std::size_t>((k + 1) % 3)],
-                       p) == 0) {
-            split_edge(t, k, p);
-            legalize(p);
-            return steps;
-        }
+    // The walk tested p against all three sides of t (none strictly right of p): a side with
+    // p on its line holds p (p is no corner: the points are distinct).
+    if (on_side_ >= 0) {
+        split_edge(t, on_side_, p);
+    } else {
+        split_triangle(t, p);
     }
-    split_triangle(t, p);
     legalize(p);
     return steps;
 }
@@ -150,7 +161,7 @@ void WingedEdgeDelaunay::split_triangle(TriangleIndex t, VertexIndex p) {
     edges_[pc].t2 = t1;
     replace_side(e1, t, t1);
     replace_side(e2, t, t2);
-    for (const EdgeIndex e : {e0, e1, e2, pa, pb, pc}) set_wings(e);
+    for (const TriangleIndex u : {t, t1, t2}) wing_triangle(u);
     pending_.assign({e0, e1, e2});
 }
 
@@ -187,7 +198,7 @@ void WingedEdgeDelaunay::split_edge(TriangleIndex t, int k, VertexIndex p) {
     replace_side(r2, r, rb);
     vertex_edge_[v2] = f;
     vertex_edge_[p] = f;
-    for (const EdgeIndex w : {e, f, g, h, l1, l2, r1, r2}) set_wings(w);
+    for (const TriangleIndex u : {l, lb, r, rb}) wing_triangle(u);
     pending_.assign({l1, l2, r1, r2});
 }
 
@@ -195,16 +206,15 @@ void WingedEdgeDelaunay::flip(EdgeIndex e) {
     WingedEdgeRecord& r = edges_[e];
     const TriangleIndex l = r.t1;
     const TriangleIndex rt = r.t2;
-    const int kl = position(l, e);
-    const int kr = position(rt, e);
-    const EdgeIndex l1 = tris_[l].e[static_cast<std::size_t>((kl + 1) % 3)];   // v2 -> x
-    const EdgeIndex l2 = tris_[l].e[static_cast<std::size_t>((kl + 2) % 3)];   // x -> v1
-    const EdgeIndex r1 = tris_[rt].e[static_cast<std::size_t>((kr + 1) % 3)];  // v1 -> y
-    const EdgeIndex r2 = tris_[rt].e[static_cast<std::size_t>((kr + 2) % 3)];  // y -> v2
+    // The quadrilateral's sides are e's wings.
+    const EdgeIndex l1 = r.e22;  // v2 -> x
+    const EdgeIndex l2 = r.e12;  // x -> v1
+    const EdgeIndex r1 = r.e11;  // v1 -> y
+    const EdgeIndex r2 = r.e21;  // y -> v2
     const VertexIndex v1 = r.v1;
     const VertexIndex v2 = r.v2;
-    const VertexIndex x = origin_in(l2, l);
-    const VertexIndex y = origin_in(r2, rt);
+    const VertexIndex x = far_end(l1, v2);
+    const VertexIndex y = far_end(r1, v1);
     // Now e = x -> y; left (v2, x, y) in slot rt, right (v1, y, x) in slot l.
     r.v1 = x;
     r.v2 = y;
@@ -216,7 +226,8 @@ void WingedEdgeDelaunay::flip(EdgeIndex e) {
     replace_side(l1, l, rt);
     if (vertex_edge_[v1] == e) vertex_edge_[v1] = l2;
     if (vertex_edge_[v2] == e) vertex_edge_[v2] = l1;
-    for (const EdgeIndex w : {e, l1, l2, r1, r2}) set_wings(w);
+    wing_triangle(l);
+    wing_triangle(rt);
     ++flips_;
 }
 
@@ -226,18 +237,17 @@ void WingedEdgeDelaunay::legalize(VertexIndex p) {
         pending_.pop_back();
         const WingedEdgeRecord& r = edges_[e];
         if (r.t2 == no_triangle) continue;  // a side of T_pom
-        // The side holding p, and the far vertex d of the other one.
-        const TriangleIndex l = r.t1;
-        const int kl = position(l, e);
-        const bool p_left = origin_in(tris_[l].e[static_cast<std::size_t>((kl + 2) % 3)], l) == p;
-        const TriangleIndex near = p_left ? l : r.t2;
-        const TriangleIndex far = p_left ? r.t2 : l;
-        const int kf = position(far, e);
-        const EdgeIndex f1 = tris_[far].e[static_cast<std::size_t>((kf + 1) % 3)];
-        const EdgeIndex f2 = tris_[far].e[static_cast<std::size_t>((kf + 2) % 3)];
-        const VertexIndex d = origin_in(f2, far);
-        const auto c = corners(near);
-        if (st_.incircle(c[0], c[1], c[2], d) <= 0) continue;
+        // The third corners from the wings: x of the left triangle (v1, v2, x), y of the
+        // right one (v2, v1, y); p is one of them, the other is tested against the circle
+        // through p and the edge (the triangle's corners rotated: the same predicate).
+        const VertexIndex x = far_end(r.e22, r.v2);
+        const VertexIndex y = far_end(r.e11, r.v1);
+        const bool p_left = x == p;
+        const int inside = p_left ? st_.incircle(r.v1, r.v2, x, y) : st_.incircle(r.v2, r.v1, y, x);
+        if (inside <= 0) continue;
+        // The far triangle's other sides, in its counter-clockwise order after e.
+        const EdgeIndex f1 = p_left ? r.e11 : r.e22;
+        const EdgeIndex f2 = p_left ? r.e21 : r.e12;
         flip(e);
         pending_.push_back(f1);
         pending_.push_back(f2);
@@ -325,21 +335,46 @@ std::vector<Triangle> WingedEdgeDelaunay::real_triangles() const {
 }
 
 std::vector<Triangle> WingedEdgeDelaunay::release_triangles() {
-    // Triangle t's corners only read tris_[t] and the edges: overwriting the kept ones in
-    // order, at k <= t, never touches a triangle still to be read.
-    std::size_t kept = 0;
-    for (TriangleIndex t = 0; t < tris_.size(); ++t) {
-        const auto c = corners(t);
-        if (st_.is_corner(c[0]) || st_.is_corner(c[1]) || st_.is_corner(c[2])) continue;
-        tris_[kept++].e = c;
-    }
-    free_storage(edges_);
+    // The triangles touching a corner of T_pom are O(hull) many: a kept triangle's new number
+    // is its old one minus the dropped ones before it. The links come from the edges (the
+    // triangle across each side), 12 bytes per kept triangle, before the edges are freed;
+    // the corners are written over the triangle list (at k <= t, never over a triangle
+    // still to be read), then the edges are freed and the output assembled.
     free_storage(vertex_edge_);
     free_storage(pending_);
-    std::vector<Triangle> out(kept);
-    for (std::size_t t = 0; t < kept; ++t) out[t].v = tris_[t].e;
+    std::vector<TriangleIndex> dropped;
+    for (TriangleIndex t = 0; t < tris_.size(); ++t) {
+        const auto c = corners(t);
+        if (st_.is_corner(c[0]) || st_.is_corner(c[1]) || st_.is_corner(c[2])) {
+            dropped.push_back(t);
+        }
+    }
+    auto renumber = [&](TriangleIndex t) -> TriangleIndex {
+        if (t == no_triangle) return no_triangle;
+        const auto it = std::lower_bound(dropped.begin(), dropped.end(), t);
+        if (it != dropped.end() && *it == t) return no_triangle;
+        return t - static_cast<TriangleIndex>(it - dropped.begin());
+    };
+    const std::size_t kept = tris_.size() - dropped.size();
+    std::vector<std::array<TriangleIndex, 3>> links;
+    links.reserve(kept);
+    std::size_t k = 0;
+    std::size_t d = 0;
+    for (TriangleIndex t = 0; t < tris_.size(); ++t) {
+        if (d < dropped.size() && dropped[d] == t) {
+            ++d;
+            continue;
+        }
+        const auto& e = tris_[t].e;
+        links.push_back({renumber(other_side(e[1], t)), renumber(other_side(e[2], t)),
+                         renumber(other_side(e[0], t))});
+        tris_[k++].e = corners(t);
+    }
+    free_storage(edges_);
+    std::vector<Triangle> out;
+    out.reserve(kept);
+    for (std::size_t t = 0; t < kept; ++t) out.push_back(Triangle{tris_[t].e, links[t]});
     free_storage(tris_);
-    link_in_place(out, pts_.size());
     return out;
 }
 

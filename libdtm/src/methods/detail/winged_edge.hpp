@@ -11,8 +11,9 @@
 /// T1 is the triangle on its left, T2 on its right; e12 and e22 are the left triangle's other
 /// edges at v1 and at v2 (first counter-clockwise at v1, first clockwise at v2), e11 and e21
 /// the right triangle's (first clockwise at v1, first counter-clockwise at v2). A triangle
-/// lists its edges counter-clockwise. After every change the wings of the edges touched are
-/// recomputed from the two triangles of each edge, and check() verifies the whole structure.
+/// lists its edges counter-clockwise. After every change the wings of the sides of every
+/// triangle rewritten are set from its edge list (the walk and the legalization read the
+/// quadrilateral around an edge from its wings), and check() verifies the whole structure.
 #pragma once
 
 #include <array>
@@ -53,7 +54,8 @@ public:
     std::uint64_t insert(VertexIndex p, EdgeIndex start = no_edge);
 
     /// The triangle containing @p p (closed), by the walk from @p start's left (or right)
-    /// triangle; @p steps counts the triangles visited.
+    /// triangle; @p steps counts the triangles visited. Every side of the triangle found is
+    /// tested on the way; the one with p on its line (if any) is kept for insert().
     [[nodiscard]] TriangleIndex locate(VertexIndex p, EdgeIndex start, std::uint64_t& steps);
 
     /// An edge out of vertex @p v (no_edge before v is inserted).
@@ -75,9 +77,13 @@ public:
     [[nodiscard]] std::vector<Triangle> real_triangles() const;
 
     /// real_triangles(), in the same order with the same links, built with little memory
-    /// beyond the result: the corners are written over the triangle list, the edges freed,
-    /// then the links made from the corners. The structure is empty afterwards.
+    /// beyond the result: the links (12 bytes per triangle) read from the edges, the corners
+    /// written over the triangle list, the edges freed, then the result assembled. The
+    /// structure is empty afterwards. Its peak: bytes() + release_extra_bytes().
     [[nodiscard]] std::vector<Triangle> release_triangles();
+    [[nodiscard]] std::size_t release_extra_bytes() const noexcept {
+        return tris_.size() * sizeof(std::array<TriangleIndex, 3>);
+    }
 
 private:
     [[nodiscard]] VertexIndex origin_in(EdgeIndex e, TriangleIndex t) const noexcept {
@@ -90,10 +96,18 @@ private:
         const auto& x = tris_[t].e;
         return x[0] == e ? 0 : (x[1] == e ? 1 : 2);
     }
+    /// The end of edge @p e that is not @p v.
+    [[nodiscard]] VertexIndex far_end(EdgeIndex e, VertexIndex v) const noexcept {
+        return edges_[e].v1 == v ? edges_[e].v2 : edges_[e].v1;
+    }
     EdgeIndex new_edge(VertexIndex a, VertexIndex b);
+    /// The wings of side @p w on the side of triangle @p t, where it is followed by @p next
+    /// and preceded by @p prev (counter-clockwise).
+    void set_wing(EdgeIndex w, TriangleIndex t, EdgeIndex next, EdgeIndex prev) noexcept;
+    /// The wings of all three sides of @p t on its side.
+    void wing_triangle(TriangleIndex t) noexcept;
     TriangleIndex new_triangle();
     void replace_side(EdgeIndex e, TriangleIndex from, TriangleIndex to) noexcept;
-    void set_wings(EdgeIndex e) noexcept;
     void split_triangle(TriangleIndex t, VertexIndex p);
     void split_edge(TriangleIndex t, int k, VertexIndex p);
     void legalize(VertexIndex p);
@@ -106,6 +120,7 @@ private:
     std::vector<EdgeIndex> vertex_edge_;
     std::vector<EdgeIndex> pending_;  ///< edges opposite the new point, to test
     EdgeIndex last_ = 0;
+    int on_side_ = -1;  ///< after locate(): the side of the triangle found with p on its line
     std::uint64_t flips_ = 0;
 };
 
