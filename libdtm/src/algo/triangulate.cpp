@@ -34,6 +34,7 @@
 #include <numeric>
 #include <string>
 
+#include "algo/detail/big_array.hpp"
 #include "algo/detail/constraint_batch.hpp"
 #include "algo/detail/delaunay_dc.hpp"
 #include "algo/detail/input_merge.hpp"
@@ -123,7 +124,7 @@ Kernel build_kernel(const MergedInput& in,
         tbb::blocked_range<std::size_t>(0, in.vertices.size(), 1 << 16), [&](const auto& r) {
             std::fill(kernel_of.get() + r.begin(), kernel_of.get() + r.end(), no_vertex);
         });
-    k.z.resize(kernel_count);
+    detail::assign_fresh(k.z, kernel_count, 0.0);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, kernel_count, 1 << 14),
                       [&](const auto& r) {
                           for (std::size_t v = r.begin(); v < r.end(); ++v) {

@@ -16,7 +16,8 @@
 // nearby segments one after another and a fixed hash of the input index within a block, so the
 // mesh a window works on stays in the caches and polyline chains do not serialise the rounds.
 // Before the rounds, the free segments that are already one edge of the mesh (most short
-// breakline segments between survey points) are marked in one parallel pass: marking changes no
+// breakline segments between survey points) are marked in one parallel pass, for every thread
+// count (the test is a turn around one endpoint comparing vertex ids): marking changes no
 // triangle, so it commutes with every other free insertion. With up to two threads the rest are
 // inserted one by one in priority order (the rounds' planning twice and reservations cost more
 // than a second thread wins there), with more threads by the rounds; the result is the same.
@@ -115,41 +116,43 @@ void prefetch_ahead(const MeshEditor& editor,
     }
 }
 
-/// Marks, in parallel, the pending free segments that are already one edge of the mesh, takes
-/// them out of @p pending (the others keep their order) and returns their number. Marking changes
-/// no triangle, and no free segment crosses another, so such an edge exists before and after the
-/// insertion of every other free segment: marking it now gives the result of marking it in its
-/// turn. Short breakline segments between nearby survey points are mostly such edges.
-std::size_t mark_existing_edges(MeshEditor& editor,
-                                const std::vector<InputSegment>& segments,
-                                std::vector<std::uint32_t>& pending) {
-    std::vector<HalfEdge> along(pending.size(), no_half_edge);
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pending.size(), 1024),
+/// Marks, in parallel, the free segments that are already one edge of the mesh and returns
+/// the others, in input order. Marking changes no triangle, and no free segment crosses another,
+/// so such an edge exists before and after the insertion of every other free segment: marking it
+/// now gives the result of marking it in its turn. Short breakline segments between nearby
+/// survey points are mostly such edges. The test is a turn around one endpoint comparing vertex
+/// ids (a segment is one edge exactly when its endpoints are neighbours).
+std::vector<std::uint32_t> mark_existing_edges(MeshEditor& editor,
+                                               const std::vector<InputSegment>& segments,
+                                               const std::vector<bool>& free) {
+    const std::size_t count = segments.size();
+    std::vector<std::uint8_t> rest(count, 0);
+    // Each edge is one segment's (equal segments are not free), and its two half-edges' bits are
+    // bytes of their own: the writes never meet.
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 4096),
                       [&](const tbb::blocked_range<std::size_t>& r) {
-                          MeshEditor::SegmentPlan plan;
-                          for (std::size_t k = r.begin(); k != r.end(); ++k) {
-                              prefetch_ahead(editor, segments, pending, k, r.end());
-                              const InputSegment& s = segments[pending[k]];
-                              editor.plan_segment(s.a, s.b, plan);
-                              if (!plan.crosses_constraint && plan.piece_count == 1 &&
-                                  plan.pieces[0].along != no_half_edge) {
-                                  along[k] = plan.pieces[0].along;
+                          for (std::size_t i = r.begin(); i != r.end(); ++i) {
+                              if (i + 16 < r.end()) {  // the turns start at scattered vertices
+                                  editor.prefetch(segments[i + 16].a, segments[i + 16].a, false);
+                              }
+                              if (i + 6 < r.end()) {
+                                  editor.prefetch(segments[i + 6].a, segments[i + 6].b, true);
+                              }
+                              if (!free[i]) continue;
+                              const InputSegment& s = segments[i];
+                              const HalfEdge along = editor.edge_between(s.a, s.b);
+                              if (along == no_half_edge) {
+                                  rest[i] = 1;
+                              } else {
+                                  editor.mark_edge(along, s.bits);
                               }
                           }
                       });
-    // Each edge is one segment's (equal segments are not free), and its two half-edges' bits are
-    // bytes of their own: the writes never meet.
-    tbb::parallel_for(std::size_t{0}, pending.size(), [&](std::size_t k) {
-        if (along[k] == no_half_edge) return;
-        editor.mark_edge(along[k], segments[pending[k]].bits);
-    });
-    std::size_t kept = 0;
-    for (std::size_t k = 0; k < pending.size(); ++k) {
-        if (along[k] == no_half_edge) pending[kept++] = pending[k];
+    std::vector<std::uint32_t> pending;
+    for (std::size_t i = 0; i < count; ++i) {
+        if (rest[i] != 0) pending.push_back(static_cast<std::uint32_t>(i));
     }
-    const std::size_t marked = pending.size() - kept;
-    pending.resize(kept);
-    return marked;
+    return pending;
 }
 
 }  // namespace
@@ -161,11 +164,12 @@ void insert_segments(MeshEditor& editor,
                      const Progress& progress) {
     const std::vector<bool> free =
         all_free ? std::vector<bool>(segments.size(), true) : find_free_segments(mesh, segments);
-    std::vector<std::uint32_t> pending;
+    std::vector<std::uint32_t> pending = mark_existing_edges(editor, segments, free);
     std::vector<std::uint32_t> later;
     for (std::size_t i = 0; i < segments.size(); ++i) {
-        (free[i] ? pending : later).push_back(static_cast<std::uint32_t>(i));
+        if (!free[i]) later.push_back(static_cast<std::uint32_t>(i));
     }
+    std::size_t done = segments.size() - pending.size() - later.size();
     // Priorities: blocks of nearby segments, in random order within each block. The block is the
     // kernel number of the segment's smaller endpoint divided by 2^16: kernel numbers follow the
     // divide and conquer's cuts, so a block is one region of the mesh, which stays in the caches
@@ -185,9 +189,7 @@ void insert_segments(MeshEditor& editor,
     for (std::size_t k = 0; k < keyed.size(); ++k) pending[k] = keyed[k].second;
     keyed = {};
     const std::size_t total = segments.size();
-    std::size_t done = 0;
     const int threads = tbb::this_task_arena::max_concurrency();
-    if (threads > 1) done += mark_existing_edges(editor, segments, pending);
     // With one thread (or two, where the rounds' bookkeeping costs more than the second thread
     // wins), plain insertion in priority order gives the very result of the rounds (that is what
     // the reservations guarantee).

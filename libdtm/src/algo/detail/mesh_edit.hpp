@@ -76,6 +76,17 @@ public:
         bool crosses_constraint = false;  ///< must go through insert_segment instead
     };
 
+    /// Read-only: the half-edge a -> b when a-b is an edge of the mesh, else no_half_edge (a
+    /// turn around @p a comparing vertex ids: no predicate). Safe from several threads at once.
+    [[nodiscard]] HalfEdge edge_between(VertexId a, VertexId b) const noexcept {
+        const HalfEdge start = vertex_edge_[a];
+        HalfEdge e = start;
+        do {
+            if (mesh_.dest(e) == b) return e;
+            e = mesh_.twin(prev(e));  // the next edge counter-clockwise around a
+        } while (e != start);
+        return no_half_edge;
+    }
     /// Read-only: plans the insertion of a-b into @p plan. Safe to call from several threads at
     /// once (with different plans).
     void plan_segment(VertexId a, VertexId b, SegmentPlan& plan) const;

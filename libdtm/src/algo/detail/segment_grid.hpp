@@ -5,10 +5,12 @@
 /// (constraint_batch). Templates over `point(v)`, which gives vertex v's position (x, y).
 #pragma once
 
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -107,23 +109,35 @@ SegmentGrid segment_grid(const std::vector<InputSegment>& segments, const PointO
     const std::size_t cells = count == 0 ? 0 : cols * rows;
     SegmentGrid grid;
     grid.start.assign(cells + 1, 0);
-    for (std::size_t i = 0; i < count; ++i) {
+    // Counted and scattered by all threads (atomic increments): the order of the segments within
+    // a cell then varies from run to run, which changes nothing for the callers (the touching
+    // pairs are sorted, the free flags only ever go from free to not free).
+    const auto each_cell = [&](std::size_t i, const auto& body) {
         const auto [c0, c1, r0, r1] = cell_range(i);
         for (std::size_t r = r0; r <= r1; ++r) {
-            for (std::size_t c = c0; c <= c1; ++c) ++grid.start[r * cols + c + 1];
+            for (std::size_t c = c0; c <= c1; ++c) body(r * cols + c);
         }
-    }
+    };
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 1 << 12), [&](const auto& range) {
+        for (std::size_t i = range.begin(); i < range.end(); ++i) {
+            each_cell(i, [&](std::size_t c) {
+                std::atomic_ref<std::uint32_t>(grid.start[c + 1])
+                    .fetch_add(1, std::memory_order_relaxed);
+            });
+        }
+    });
     for (std::size_t c = 0; c < cells; ++c) grid.start[c + 1] += grid.start[c];
     grid.listed.resize(grid.start[cells]);
     std::vector<std::uint32_t> at(grid.start.begin(), grid.start.end() - 1);
-    for (std::size_t i = 0; i < count; ++i) {
-        const auto [c0, c1, r0, r1] = cell_range(i);
-        for (std::size_t r = r0; r <= r1; ++r) {
-            for (std::size_t c = c0; c <= c1; ++c) {
-                grid.listed[at[r * cols + c]++] = static_cast<std::uint32_t>(i);
-            }
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 1 << 12), [&](const auto& range) {
+        for (std::size_t i = range.begin(); i < range.end(); ++i) {
+            each_cell(i, [&](std::size_t c) {
+                const std::uint32_t k =
+                    std::atomic_ref<std::uint32_t>(at[c]).fetch_add(1, std::memory_order_relaxed);
+                grid.listed[k] = static_cast<std::uint32_t>(i);
+            });
         }
-    }
+    });
     return grid;
 }
 

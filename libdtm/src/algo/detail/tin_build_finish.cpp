@@ -7,6 +7,7 @@
 
 #include <algorithm>
 
+#include "algo/detail/big_array.hpp"
 #include "algo/detail/tin_build.hpp"
 
 namespace dtm::detail {
@@ -55,10 +56,11 @@ void finish_tin(TinDraft& draft) {
     std::vector<ConstrainedEdge>& constraints = draft.tin.constraints;
     constraints.clear();
     if (!draft.any_constraint()) return;
+    // Two passes per block: count, then write at the block's offset (no per-block lists to
+    // grow and concatenate).
     constexpr std::size_t block = std::size_t{1} << 16;
     const std::size_t blocks = (tris.size() + block - 1) / block;
-    std::vector<std::vector<ConstrainedEdge>> found(blocks);
-    tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
+    const auto for_each_constraint = [&](std::size_t b, const auto& body) {
         const std::size_t end = std::min(tris.size(), (b + 1) * block);
         for (std::size_t t = b * block; t < end; ++t) {
             const Triangle& tri = tris[t];
@@ -69,13 +71,26 @@ void finish_tin(TinDraft& draft) {
                 const VertexIndex c = tri.v[(j + 2) % 3];
                 // An interior edge is seen from both sides: keep it from the side where a < c.
                 if (a < c || tri.n[j] == no_triangle) {
-                    found[b].push_back(
-                        {std::min(a, c), std::max(a, c), constraint_kind_of(bits[j])});
+                    body(ConstrainedEdge{std::min(a, c), std::max(a, c),
+                                         constraint_kind_of(bits[j])});
                 }
             }
         }
+    };
+    std::vector<std::size_t> offset(blocks + 1, 0);
+    tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
+        std::size_t count = 0;
+        for_each_constraint(b, [&](const ConstrainedEdge&) { ++count; });
+        offset[b + 1] = count;
     });
-    for (const auto& list : found) constraints.insert(constraints.end(), list.begin(), list.end());
+    for (std::size_t b = 0; b < blocks; ++b) offset[b + 1] += offset[b];
+    reserve_huge(constraints, offset[blocks]);  // fresh pages faulted in on all threads
+    prefault_in_parallel(constraints);
+    constraints.resize(offset[blocks]);
+    tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
+        std::size_t at = offset[b];
+        for_each_constraint(b, [&](const ConstrainedEdge& e) { constraints[at++] = e; });
+    });
     tbb::parallel_sort(constraints.begin(), constraints.end(), [](const auto& x, const auto& y) {
         return x.a < y.a || (x.a == y.a && x.b < y.b);
     });
