@@ -38,6 +38,7 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_pipeline.h>
+#include <tbb/parallel_reduce.h>
 #include <tbb/task_arena.h>
 
 #include <algorithm>
@@ -573,12 +574,24 @@ bool rows_touching(
 }
 
 Box2 tin_bounds(const Tin& tin) {
-    Box2 box;
-    for (const Triangle& t : tin.triangles) {
-        for (const VertexIndex v : t.v) {
-            box.add(tin.vertices[v]);
-        }
-    }
+    // Exact minima and maxima: the same box for any split of the triangles (-0 and +0 made
+    // one by the + 0.0 below, whichever the split met first).
+    Box2 box = tbb::parallel_reduce(
+        tbb::blocked_range<std::size_t>(0, tin.triangles.size(), 1 << 15), Box2{},
+        [&](const tbb::blocked_range<std::size_t>& r, Box2 part) {
+            for (std::size_t t = r.begin(); t != r.end(); ++t) {
+                for (const VertexIndex v : tin.triangles[t].v) part.add(tin.vertices[v]);
+            }
+            return part;
+        },
+        [](Box2 a, const Box2& b) {
+            if (!b.empty()) {
+                a.add(b.xmin, b.ymin);
+                a.add(b.xmax, b.ymax);
+            }
+            return a;
+        });
+    if (!box.empty()) box = {box.xmin + 0.0, box.ymin + 0.0, box.xmax + 0.0, box.ymax + 0.0};
     return box;
 }
 

@@ -73,7 +73,8 @@ DemResult write_dem(const Tin& tin,
         throw InputError("the inputs give no triangle to rasterise");
     }
     DemResult result;
-    result.spec = dem_grid_spec(tin_bounds(tin), options.cell, options.extent);
+    result.spec =
+        dem_grid_spec(options.extent ? Box2{} : tin_bounds(tin), options.cell, options.extent);
     io::GridWriter writer(output, result.spec,
                           {.crs_wkt = crs_wkt, .nodata = options.nodata, .cog = options.cog});
     CountingSink counter(writer, options.nodata);
