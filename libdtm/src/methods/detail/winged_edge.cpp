@@ -305,8 +305,7 @@ std::string WingedEdgeDelaunay::check() const {
     return {};
 }
 
-std::vector<Triangle> WingedEdgeDelaunay::real_triangles() const {
-    // Triangles touching a corner of T_pom are O(hull) many: renumber by counting them.
+std::vector<TriangleIndex> WingedEdgeDelaunay::corner_triangles() const {
     std::vector<TriangleIndex> dropped;
     for (TriangleIndex t = 0; t < tris_.size(); ++t) {
         const auto c = corners(t);
@@ -314,12 +313,21 @@ std::vector<Triangle> WingedEdgeDelaunay::real_triangles() const {
             dropped.push_back(t);
         }
     }
-    auto renumber = [&](TriangleIndex t) -> TriangleIndex {
-        if (t == no_triangle) return no_triangle;
-        const auto it = std::lower_bound(dropped.begin(), dropped.end(), t);
-        if (it != dropped.end() && *it == t) return no_triangle;
-        return t - static_cast<TriangleIndex>(it - dropped.begin());
-    };
+    return dropped;
+}
+
+TriangleIndex WingedEdgeDelaunay::kept_number(const std::vector<TriangleIndex>& dropped,
+                                              TriangleIndex t) {
+    if (t == no_triangle) return no_triangle;
+    const auto it = std::lower_bound(dropped.begin(), dropped.end(), t);
+    if (it != dropped.end() && *it == t) return no_triangle;
+    return t - static_cast<TriangleIndex>(it - dropped.begin());
+}
+
+std::vector<Triangle> WingedEdgeDelaunay::real_triangles() const {
+    // Triangles touching a corner of T_pom are O(hull) many: renumber by counting them.
+    const std::vector<TriangleIndex> dropped = corner_triangles();
+    auto renumber = [&](TriangleIndex t) { return kept_number(dropped, t); };
     std::vector<Triangle> out;
     out.reserve(tris_.size() - dropped.size());
     for (TriangleIndex t = 0; t < tris_.size(); ++t) {
@@ -342,19 +350,8 @@ std::vector<Triangle> WingedEdgeDelaunay::release_triangles() {
     // still to be read), then the edges are freed and the output assembled.
     free_storage(vertex_edge_);
     free_storage(pending_);
-    std::vector<TriangleIndex> dropped;
-    for (TriangleIndex t = 0; t < tris_.size(); ++t) {
-        const auto c = corners(t);
-        if (st_.is_corner(c[0]) || st_.is_corner(c[1]) || st_.is_corner(c[2])) {
-            dropped.push_back(t);
-        }
-    }
-    auto renumber = [&](TriangleIndex t) -> TriangleIndex {
-        if (t == no_triangle) return no_triangle;
-        const auto it = std::lower_bound(dropped.begin(), dropped.end(), t);
-        if (it != dropped.end() && *it == t) return no_triangle;
-        return t - static_cast<TriangleIndex>(it - dropped.begin());
-    };
+    const std::vector<TriangleIndex> dropped = corner_triangles();
+    auto renumber = [&](TriangleIndex t) { return kept_number(dropped, t); };
     const std::size_t kept = tris_.size() - dropped.size();
     std::vector<std::array<TriangleIndex, 3>> links;
     links.reserve(kept);

@@ -86,6 +86,11 @@ public:
     }
 
 private:
+    /// The triangles touching a corner of T_pom, ascending (O(hull) many).
+    [[nodiscard]] std::vector<TriangleIndex> corner_triangles() const;
+    /// A kept triangle's number once the @p dropped ones are gone; no_triangle for a dropped one.
+    [[nodiscard]] static TriangleIndex kept_number(const std::vector<TriangleIndex>& dropped,
+                                                   TriangleIndex t);
     [[nodiscard]] VertexIndex origin_in(EdgeIndex e, TriangleIndex t) const noexcept {
         return edges_[e].t1 == t ? edges_[e].v1 : edges_[e].v2;
     }
