@@ -190,11 +190,9 @@ MergedShare merge_exact_duplicates(Comm& comm,
 }
 
 void MergedShare::keep_heights() {
-    std::vector<double> z;
-    z.reserve(vertices.size());
-    for (const Vertex& v : vertices) z.push_back(v.p.z);
+    heights.reserve(heights.size() + vertices.size());
+    for (const Vertex& v : vertices) heights.push_back(v.p.z);
     std::vector<Vertex>().swap(vertices);
-    heights.insert(heights.end(), z.begin(), z.end());
 }
 
 }  // namespace dtm::dist

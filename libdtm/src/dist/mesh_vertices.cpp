@@ -24,11 +24,7 @@ RunOwners::RunOwners(Comm& comm, std::uint64_t lo, std::uint64_t hi) {
     }
 }
 
-int RunOwners::of(std::uint64_t number) const {
-    const auto it = std::upper_bound(runs_.begin(), runs_.end(), number,
-                                     [](std::uint64_t n, const Run& r) { return n < r.lo; });
-    return std::prev(it)->rank;
-}
+int RunOwners::of(std::uint64_t number) const { return locate(number).first; }
 
 std::pair<int, std::uint64_t> RunOwners::locate(std::uint64_t number) const {
     const auto it = std::upper_bound(runs_.begin(), runs_.end(), number,

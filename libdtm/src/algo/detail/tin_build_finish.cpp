@@ -84,9 +84,7 @@ void finish_tin(TinDraft& draft) {
         offset[b + 1] = count;
     });
     for (std::size_t b = 0; b < blocks; ++b) offset[b + 1] += offset[b];
-    reserve_huge(constraints, offset[blocks]);  // fresh pages faulted in on all threads
-    prefault_in_parallel(constraints);
-    constraints.resize(offset[blocks]);
+    assign_fresh(constraints, offset[blocks], ConstrainedEdge{});  // faulted in on all threads
     tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
         std::size_t at = offset[b];
         for_each_constraint(b, [&](const ConstrainedEdge& e) { constraints[at++] = e; });

@@ -102,7 +102,7 @@ TriangleIndex WingedEdgeDelaunay::locate(VertexIndex p, EdgeIndex start, std::ui
     for (;;) {
         ++steps;
         const auto& te = tris_[t].e;
-        const int k0 = te[0] == entry ? 0 : (te[1] == entry ? 1 : 2);
+        const int k0 = position(t, entry);
         on_side_ = -1;
         bool moved = false;
         for (int s = 1; s <= 3; ++s) {
