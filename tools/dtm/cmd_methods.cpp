@@ -4,10 +4,8 @@
 //   dtm methods run NAME INPUT -o OUT.ply [--stats] [--param KEY=VALUE]... [--seed S]
 //   dtm methods compare [--methods a,b] [--n 1000,10000] [--dist uniform,gauss] [--repeat R]
 //                       [--sets S] [--seed S] [--threads T] [--cap-seconds C] -o DIR
-// Thin: parse -> methods::registry / MethodFn on lab::method_points -> lab::write_method_output
-// -> print; compare: parse -> lab::run_compare ->
-// lab::write_compare -> print.
-#include <chrono>
+// Thin: parse -> lab::run_method / lab::registry_json / lab::run_compare + lab::write_compare
+// -> print.
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -18,8 +16,6 @@
 
 #include "command.hpp"
 #include "dtm/core/error.hpp"
-#include "dtm/io/json_writer.hpp"
-#include "dtm/io/output_check.hpp"
 #include "dtm/lab/compare.hpp"
 #include "dtm/lab/run.hpp"
 #include "dtm/methods/registry.hpp"
@@ -30,29 +26,15 @@ namespace dtm::cli {
 namespace {
 
 int run_list(bool json) {
-    const auto methods = methods::registry();
-    if (!json) {
-        for (const methods::MethodInfo& m : methods) {
-            std::printf("%-24s %-12s %-30s %s\n", std::string(m.name).c_str(),
-                        std::string(methods::family_name(m.family)).c_str(),
-                        std::string(m.complexity).c_str(), std::string(m.summary).c_str());
-        }
+    if (json) {
+        std::printf("%s\n", lab::registry_json().c_str());
         return 0;
     }
-    std::string out = "[";
-    for (std::size_t i = 0; i < methods.size(); ++i) {
-        const methods::MethodInfo& m = methods[i];
-        out += (i ? ",\n " : "\n ");
-        out += "{\"name\": " + io::json_string(m.name) +
-               ", \"family\": " + io::json_string(methods::family_name(m.family)) +
-               ", \"source\": " + io::json_string(m.source) +
-               ", \"complexity\": " + io::json_string(m.complexity) +
-               ", \"summary\": " + io::json_string(m.summary) +
-               ", \"takes_constraints\": " + (m.takes_constraints ? "true" : "false") +
-               ", \"quadratic\": " + (m.quadratic ? "true" : "false") +
-               ", \"params\": " + io::json_string(m.params) + "}";
+    for (const methods::MethodInfo& m : methods::registry()) {
+        std::printf("%-24s %-12s %-30s %s\n", std::string(m.name).c_str(),
+                    std::string(methods::family_name(m.family)).c_str(),
+                    std::string(m.complexity).c_str(), std::string(m.summary).c_str());
     }
-    std::printf("%s\n]\n", out.c_str());
     return 0;
 }
 
@@ -69,11 +51,6 @@ struct RunArgs {
 };
 
 int run_method(const RunArgs& a) {
-    const methods::MethodInfo* method = methods::find_method(a.name);
-    if (method == nullptr) {
-        throw UsageError("methods run: unknown method '" + a.name +
-                         "' (dtm methods list shows them)");
-    }
     methods::MethodOptions options;
     options.seed = a.seed;
     options.threads = a.threads;
@@ -87,25 +64,10 @@ int run_method(const RunArgs& a) {
         }
         options.params[p.substr(0, eq)] = p.substr(eq + 1);
     }
-    io::check_output(a.output, lab::method_output_kind(*method), "output");
-    if (!a.input.breaklines.empty() && !method->takes_constraints) {
-        throw UsageError("methods run: method '" + a.name + "' takes no breaklines");
-    }
-    const Progress progress = terminal_progress("methods", a.quiet || a.stats);
-    io::LoadedInputs loaded = io::load_inputs(to_load_options(a.input), progress.sub(0.0, 0.1));
-    const lab::MethodPoints input = lab::method_points(loaded.terrain);
-    if (!input.segments.empty() && !method->takes_constraints) {
-        throw UsageError("methods run: method '" + a.name + "' takes no breaklines");
-    }
-    const auto start = std::chrono::steady_clock::now();
-    const methods::MethodResult result = method->run(
-        methods::MethodInput{input.points, input.segments}, options, progress.sub(0.1, 0.95));
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    lab::write_method_output(*method, result, a.output, loaded.crs_wkt);
-    progress.report(1.0, "done");
+    const lab::MethodRun run = lab::run_method(a.name, to_load_options(a.input), options, a.output,
+                                               terminal_progress("methods", a.quiet || a.stats));
     if (a.stats) {
-        std::cout << lab::method_stats_json(*method, input.points.size(), result, seconds)
+        std::cout << lab::method_stats_json(*run.method, run.points, run.result, run.seconds)
                   << std::endl;
     }
     return 0;

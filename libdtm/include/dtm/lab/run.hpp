@@ -40,4 +40,24 @@ void write_method_output(const methods::MethodInfo& method,
                                             const methods::MethodResult& result,
                                             double seconds);
 
+/// One run of `dtm methods run`: the method, its output and seconds.
+struct MethodRun {
+    const methods::MethodInfo* method = nullptr;
+    std::size_t points = 0;  ///< the points the method took
+    methods::MethodResult result;
+    double seconds = 0.0;  ///< the method's call alone
+};
+
+/// `dtm methods run`'s job: the registry method @p name on the inputs of @p load (checked for a
+/// method that takes no breaklines, the output checked before anything is read), timed, its
+/// result written to @p output. @throws UsageError, InputError, Error, Cancelled.
+[[nodiscard]] MethodRun run_method(const std::string& name,
+                                   const io::LoadOptions& load,
+                                   const methods::MethodOptions& options,
+                                   const std::filesystem::path& output,
+                                   const Progress& progress = {});
+
+/// `dtm methods list --json`: every registry field of every method, one JSON array.
+[[nodiscard]] std::string registry_json();
+
 }  // namespace dtm::lab
