@@ -81,8 +81,10 @@ run_fuzzers() {
 run_sanitized_tests() {
     local build="$build_root/build-sanitize"
     # -O1 -g1 (line tables): enough for the sanitizers' stack traces, and the build (the longest
-    # step of CI) compiles much faster than with -O2 -g.
+    # step of CI) compiles much faster than with -O2 -g. The tests and the CLI compile as unity
+    # batches (DTM_UNITY_TESTS: 19 -> about 12 minutes on 2 cores).
     cmake -S "$repo" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDTM_SANITIZE=ON \
+        -DDTM_UNITY_TESTS=ON \
         -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
         -DDTM_BUILD_BENCH=OFF -DDTM_BUILD_SAMPLES=OFF -DDTM_WITH_MPI=OFF >/dev/null || return 1
     cmake --build "$build" -j "$jobs" || return 1

@@ -341,7 +341,7 @@ struct Gathered {
         } else {
             for (unsigned i = 0; i < 3; ++i) {
                 if (now.t.n[i] != before.t.n[i] || now.bits[i] != before.bits[i])
-                    now.changed |= 1u << i;
+                    now.changed = static_cast<std::uint8_t>(now.changed | 1u << i);
             }
         }
         return now;

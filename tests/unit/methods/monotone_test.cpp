@@ -52,7 +52,7 @@ void expect_triangulation_of_hull(const MethodResult& r, std::size_t n) {
 }
 
 TEST(Monotone, RandomPointsWithConstraints) {
-    std::vector<Point3> pts = test::random_points(800, 3);
+    std::vector<Point3> pts = dtm::test::random_points(800, 3);
     std::vector<Segment> segments;
     // A zig-zag breakline and a horizontal one (equal y: the tilted order decides).
     const std::vector<Point3> line{{50, 500, 0}, {300, 620, 0}, {500, 400, 0}, {950, 600, 0}};
@@ -73,8 +73,8 @@ TEST(Monotone, GridsCollinearRunsAndSjtsk) {
     for (const Distribution d : {Distribution::grid, Distribution::collinear, Distribution::circle,
                                  Distribution::arc, Distribution::cluster}) {
         PointSetOptions o;
-        o.x0 = test::sjtsk_e;
-        o.y0 = test::sjtsk_n;
+        o.x0 = dtm::test::sjtsk_e;
+        o.y0 = dtm::test::sjtsk_n;
         o.quantum = d == Distribution::circle ? 0.0 : 0.001;
         const std::vector<Point3> pts = generate_points(d, 600, 5, o);
         detail::CountingPredicates pred;
@@ -112,7 +112,7 @@ TEST(Monotone, ManyConstraintsFromADelaunayTriangulation) {
 }
 
 TEST(Monotone, RectangleDomainAddsTheCorners) {
-    const std::vector<Point3> pts = test::random_points(300, 8, 0, 0, 100);
+    const std::vector<Point3> pts = dtm::test::random_points(300, 8, 0, 0, 100);
     const MethodResult r = monotone(pts, {{0, 1}}, "rectangle");
     ASSERT_TRUE(verify_topology(r.tin).ok()) << verify_topology(r.tin).text();
     EXPECT_EQ(r.tin.vertices.size(), 304u);
@@ -136,7 +136,7 @@ TEST(Monotone, RejectsCrossingConstraintsAndUnknownDomain) {
 
 TEST(Monotone, WorseQualityThanTheCdt) {
     // No criterion is applied: the stack method leaves long thin triangles the CDT avoids.
-    const std::vector<Point3> pts = test::random_points(500, 12);
+    const std::vector<Point3> pts = dtm::test::random_points(500, 12);
     const MethodResult r = monotone(pts);
     EXPECT_GT(count_improvable_edges(r.tin, Criterion::maxmin_angle), 0u);
 }
