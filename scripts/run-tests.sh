@@ -14,7 +14,8 @@ build_dir=${1:-"$repo_root/build"}
 scripts/install-deps.sh
 # Source rules: no flags in library strings, no triangulator in io, clang-format clean.
 scripts/check-sources.sh
-scripts/build.sh "$build_dir" -DDTM_WERROR=ON
+# The tests and the CLI compile as unity batches (about 3.5 minutes less on 2 cores).
+scripts/build.sh "$build_dir" -DDTM_WERROR=ON -DDTM_UNITY_TESTS=ON
 
 ctest_options=(--test-dir "$build_dir" --output-on-failure -j2)
 if [[ "${DTM_SLOW_TESTS:-0}" != "1" ]]; then
