@@ -1,6 +1,12 @@
 // SPDX-License-Identifier: MIT
 #include "distributed.hpp"
 
+#include <tbb/global_control.h>
+#include <tbb/info.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <memory>
 #include <string>
 
 #include "dtm/core/error.hpp"
@@ -15,6 +21,26 @@ dist::Comm* job = nullptr;
 dist::Comm* distributed_comm() noexcept { return job; }
 void set_distributed_comm(dist::Comm* comm) noexcept { job = comm; }
 bool prints() noexcept { return job == nullptr || job->rank() == 0; }
+
+unsigned threads_per_rank(unsigned cores, unsigned local_ranks) noexcept {
+    if (local_ranks == 0) return std::max(cores, 1u);
+    return std::max(cores / local_ranks, 1u);
+}
+
+unsigned launched_local_ranks() noexcept {
+    for (const char* name : {"OMPI_COMM_WORLD_LOCAL_SIZE", "MPI_LOCALNRANKS"}) {
+        if (const char* value = std::getenv(name)) return static_cast<unsigned>(std::atoi(value));
+    }
+    return 0;
+}
+
+void share_cores_among_local_ranks() {
+    static std::unique_ptr<tbb::global_control> control;
+    const auto cores = static_cast<unsigned>(std::max(tbb::info::default_concurrency(), 1));
+    control =
+        std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                              threads_per_rank(cores, launched_local_ranks()));
+}
 
 void check_distributed_input(const char* command,
                              const InputArgs& in,

@@ -43,6 +43,7 @@ int main(int argc, char** argv) {
         }
         session = std::make_unique<dtm::dist::MpiSession>(argc, argv);
         set_distributed_comm(&session->world());
+        share_cores_among_local_ranks();  // e.g. one TBB thread per rank at -np 2 on 2 cores
     }
     const auto say = [](const std::string& text) {
         if (prints()) std::cerr << "dtm: " << text << '\n';
