@@ -2,8 +2,6 @@
 // Threads per rank under mpirun: the machine's cores shared among the job's ranks on it.
 #include <gtest/gtest.h>
 
-#include <cstdlib>
-
 #include "distributed.hpp"
 
 namespace dtm::cli {
@@ -16,18 +14,6 @@ TEST(DistributedThreads, CoresAreSharedAmongTheRanksOfOneMachine) {
     EXPECT_EQ(threads_per_rank(7, 2), 3u);
     EXPECT_EQ(threads_per_rank(8, 0), 8u);  // the launcher does not say: all of them
     EXPECT_EQ(threads_per_rank(0, 0), 1u);
-}
-
-TEST(DistributedThreads, LocalRanksComeFromTheLaunchersEnvironment) {
-    unsetenv("OMPI_COMM_WORLD_LOCAL_SIZE");
-    unsetenv("MPI_LOCALNRANKS");
-    EXPECT_EQ(launched_local_ranks(), 0u);
-    setenv("MPI_LOCALNRANKS", "3", 1);
-    EXPECT_EQ(launched_local_ranks(), 3u);
-    setenv("OMPI_COMM_WORLD_LOCAL_SIZE", "4", 1);
-    EXPECT_EQ(launched_local_ranks(), 4u);
-    unsetenv("OMPI_COMM_WORLD_LOCAL_SIZE");
-    unsetenv("MPI_LOCALNRANKS");
 }
 
 }  // namespace

@@ -5,11 +5,11 @@
 #include <tbb/info.h>
 
 #include <algorithm>
-#include <cstdlib>
 #include <memory>
 #include <string>
 
 #include "dtm/core/error.hpp"
+#include "dtm/dist/mpi_comm.hpp"
 #include "dtm/io/extension.hpp"
 #include "dtm/io/reader.hpp"
 
@@ -27,19 +27,12 @@ unsigned threads_per_rank(unsigned cores, unsigned local_ranks) noexcept {
     return std::max(cores / local_ranks, 1u);
 }
 
-unsigned launched_local_ranks() noexcept {
-    for (const char* name : {"OMPI_COMM_WORLD_LOCAL_SIZE", "MPI_LOCALNRANKS"}) {
-        if (const char* value = std::getenv(name)) return static_cast<unsigned>(std::atoi(value));
-    }
-    return 0;
-}
-
 void share_cores_among_local_ranks() {
     static std::unique_ptr<tbb::global_control> control;
     const auto cores = static_cast<unsigned>(std::max(tbb::info::default_concurrency(), 1));
-    control =
-        std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
-                                              threads_per_rank(cores, launched_local_ranks()));
+    const auto local = static_cast<unsigned>(std::max(dist::launched_local_ranks(), 0));
+    control = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                                    threads_per_rank(cores, local));
 }
 
 void check_distributed_input(const char* command,

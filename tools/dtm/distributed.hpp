@@ -19,10 +19,8 @@ void set_distributed_comm(dist::Comm* comm) noexcept;
 /// One rank's share of its machine: @p cores (what this process may run on) divided among the
 /// @p local_ranks of the job on that machine, at least one; @p cores when local_ranks is 0.
 [[nodiscard]] unsigned threads_per_rank(unsigned cores, unsigned local_ranks) noexcept;
-/// The job's ranks on this machine as the launcher says (Open MPI's OMPI_COMM_WORLD_LOCAL_SIZE,
-/// MPICH's MPI_LOCALNRANKS); 0 when it does not.
-[[nodiscard]] unsigned launched_local_ranks() noexcept;
-/// Bounds this rank's TBB threads to threads_per_rank for the whole run, so that ranks sharing
+/// Bounds this rank's TBB threads to threads_per_rank (local ranks from
+/// dist::launched_local_ranks) for the whole run, so that ranks sharing
 /// a machine do not oversubscribe it (`--threads` may lower it further, not raise it).
 void share_cores_among_local_ranks();
 

@@ -7,6 +7,7 @@
 #include "dtm/dist/mpi_comm.hpp"
 
 #include <cstdlib>
+#include <initializer_list>
 #include <string>
 
 #include "dtm/core/error.hpp"
@@ -25,11 +26,24 @@
 
 namespace dtm::dist {
 
-int launched_ranks() noexcept {
-    for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMIX_SIZE", "PMI_SIZE"}) {
+namespace {
+
+/// The first of the launcher's variables @p names that is set, as a number; 0 when none is.
+int launcher_count(std::initializer_list<const char*> names) noexcept {
+    for (const char* name : names) {
         if (const char* value = std::getenv(name)) return std::atoi(value);
     }
     return 0;
+}
+
+}  // namespace
+
+int launched_ranks() noexcept {
+    return launcher_count({"OMPI_COMM_WORLD_SIZE", "PMIX_SIZE", "PMI_SIZE"});
+}
+
+int launched_local_ranks() noexcept {
+    return launcher_count({"OMPI_COMM_WORLD_LOCAL_SIZE", "MPI_LOCALNRANKS"});
 }
 
 #if DTM_WITH_MPI

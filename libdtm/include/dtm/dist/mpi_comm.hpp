@@ -15,6 +15,9 @@ namespace dtm::dist {
 /// The number of ranks the process was launched with by mpirun/srun (OMPI_COMM_WORLD_SIZE,
 /// PMI_SIZE, PMIX_SIZE), 0 when it was not launched by one.
 [[nodiscard]] int launched_ranks() noexcept;
+/// The job's ranks on this machine as the launcher says (Open MPI's OMPI_COMM_WORLD_LOCAL_SIZE,
+/// MPICH's MPI_LOCALNRANKS), 0 when it does not.
+[[nodiscard]] int launched_local_ranks() noexcept;
 
 /// MPI for the lifetime of the object (MPI_Init_thread with MPI_THREAD_FUNNELED: TBB threads
 /// compute, the main thread communicates) and the world communicator as a Comm.
