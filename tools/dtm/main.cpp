@@ -89,11 +89,12 @@ int main(int argc, char** argv) {
             std::string(chosen) + "` on one machine");
         return 2;
     }
-    // The products and analyses reuse freed memory instead of fresh pages (memory_policy.cpp);
-    // `tin` and the methods lab keep malloc's defaults, under which their memory is measured.
+    // The products and analyses reuse freed memory instead of fresh pages (huge_page_new.cpp);
+    // `tin`, the methods lab and every distributed rank keep malloc's defaults, under which
+    // their memory is measured (a rank's phases differ in size: its peak is what R-M1 bounds).
     for (const std::string_view name :
          {"grid", "contour", "build", "map", "volume", "profile", "check", "sections"}) {
-        if (chosen == name) keep_freed_memory();
+        if (chosen == name && distributed_comm() == nullptr) keep_freed_memory();
     }
     try {
         return run ? run() : 0;

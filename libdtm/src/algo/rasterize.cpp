@@ -521,7 +521,10 @@ void rasterize(const Tin& tin,
     if (window.count == 0) {
         return;
     }
-    const Tin local = detail::with_coherent_vertices(interpolant.surface(tin));
+    const Tin& surface = interpolant.surface(tin);
+    Tin copy;  // only when the vertices are not in first-use order already
+    if (!detail::has_coherent_vertices(surface)) copy = detail::with_coherent_vertices(surface);
+    const Tin& local = copy.triangles.empty() ? surface : copy;
     const Buckets buckets =
         make_buckets(local, spec, window, choose_band_rows(spec, window, options));
     progress.report(0.0, "rasterize");

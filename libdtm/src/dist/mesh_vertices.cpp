@@ -91,10 +91,15 @@ std::uint64_t serial_face(std::uint64_t slot,
     return ghosts[slot - real - between];
 }
 
-SurfaceMesh surface_mesh(Comm& comm,
-                         const MergedShare& merged,
-                         const DistributedMesh& k,
-                         const SurfaceMeshOptions& options) {
+namespace {
+
+/// surface_mesh(); with @p release, the kernel's triangles (and their bits) are freed once the
+/// faces are listed.
+SurfaceMesh faces_and_vertices(Comm& comm,
+                               const MergedShare& merged,
+                               const DistributedMesh& k,
+                               const SurfaceMeshOptions& options,
+                               LocalMesh* release) {
     const LocalMesh& mesh = k.mesh;
     const auto foreign = foreign_vertex_numbers(comm, k);
     const auto ghosts = all_ghost_slots(comm, mesh);
@@ -119,13 +124,11 @@ SurfaceMesh surface_mesh(Comm& comm,
     const FaceNumbers kept = trimmed ? kept_face_numbers(comm, mesh, ghosts) : FaceNumbers{};
     SurfaceMesh out;
     out.faces.reserve(mesh.tris.size());
-    struct Corner {
-        std::uint64_t id;      // vertex number
-        std::uint64_t corner;  // 3 f + i
-        std::uint32_t local;   // the kernel's vertex (its x and y)
-    };
-    std::vector<Corner> corners;
-    corners.reserve(3 * mesh.tris.size());
+    // Faces name the kernel's local vertices first; each used local vertex is then numbered
+    // by one sort of (vertex number, local) pairs, 16 bytes a vertex (not 24 a corner).
+    const std::size_t local_count = mesh.own_points.size() + mesh.foreign_vertices.size();
+    constexpr std::uint32_t unused = ~std::uint32_t{0};
+    std::vector<std::uint32_t> index_of(local_count, unused);
     for (std::uint64_t s = 0; s < mesh.tris.size(); ++s) {
         const Triangle& t = mesh.tris[s];
         if (!mesh.kept(s)) continue;
@@ -133,35 +136,44 @@ SurfaceMesh surface_mesh(Comm& comm,
         SurfaceFace f;
         f.face = trimmed ? kept.face[s] : serial_face(mesh.first_slot + s, ghosts, real);
         for (unsigned i = 0; i < 3; ++i) {
-            corners.push_back({number(t.v[i]), 3 * out.faces.size() + i, t.v[i]});
+            f.v[i] = t.v[i];
+            index_of[t.v[i]] = 0;
             // Kernel half-edge i runs v[i] -> v[i + 1], opposite corner i + 2
             // (tin_build_triangles).
             if (g.n[i] == global_ghost || outside(g.n[i] >> 2)) f.border |= 1U << ((i + 2) % 3);
         }
         out.faces.push_back(f);
     }
-    // Each vertex once, in ascending number; the sorted corners take their index in one pass.
-    // With every own vertex, the positions no triangle names come too (marked by no corner).
-    constexpr std::uint64_t no_corner = ~std::uint64_t{0};
+    if (release != nullptr) {
+        std::vector<Triangle>().swap(release->tris);
+        std::vector<std::array<std::uint8_t, 3>>().swap(release->bits);
+        std::vector<std::uint8_t>().swap(release->removed);
+    }
+    // With every own vertex, the positions no triangle names come too.
     if (options.every_own_vertex) {
-        for (std::size_t v = 0; v < k.input_ids.size(); ++v) {
-            corners.push_back({k.input_ids[v], no_corner, static_cast<std::uint32_t>(v)});
-        }
+        std::fill(index_of.begin(), index_of.begin() + std::ptrdiff_t(mesh.own_points.size()), 0);
     }
-    std::sort(corners.begin(), corners.end(), [](const Corner& a, const Corner& b) {
-        return a.id < b.id || (a.id == b.id && a.corner < b.corner);
-    });
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> used;  // (number, local), ascending
+    for (std::uint32_t local = 0; local < local_count; ++local) {
+        if (index_of[local] != unused) used.emplace_back(number(local), local);
+    }
+    std::sort(used.begin(), used.end());
     std::vector<std::uint64_t> wanted;
-    for (const Corner& c : corners) {
-        if (wanted.empty() || wanted.back() != c.id) {
-            wanted.push_back(c.id);
-            const XY xy = mesh.point(mesh.global_vertex(c.local));
-            out.vertices.push_back({c.id, {xy.x, xy.y, 0.0}});
+    wanted.reserve(used.size());
+    out.vertices.reserve(used.size());
+    for (const auto& [id, local] : used) {
+        if (wanted.empty() || wanted.back() != id) {
+            wanted.push_back(id);
+            const XY xy = mesh.point(mesh.global_vertex(local));
+            out.vertices.push_back({id, {xy.x, xy.y, 0.0}});
         }
-        if (c.corner == no_corner) continue;
-        out.faces[c.corner / 3].v[c.corner % 3] = static_cast<std::uint32_t>(wanted.size() - 1);
+        index_of[local] = static_cast<std::uint32_t>(wanted.size() - 1);
     }
-    std::vector<Corner>().swap(corners);
+    std::vector<std::pair<std::uint64_t, std::uint32_t>>().swap(used);
+    for (SurfaceFace& f : out.faces) {
+        for (std::uint32_t& v : f.v) v = index_of[v];
+    }
+    std::vector<std::uint32_t>().swap(index_of);
     // The heights from the vertices' owners in the merge.
     const RunOwners owners(comm, merged.first_vertex, merged.first_vertex + merged.count());
     const auto asked = ask_owners(comm, owners, wanted);
@@ -176,6 +188,23 @@ SurfaceMesh surface_mesh(Comm& comm,
     const auto heights = concatenated<double>(comm.alltoallv(std::move(answer)));
     for (std::size_t w = 0; w < wanted.size(); ++w) out.vertices[w].p.z = heights[w];
     return out;
+}
+
+}  // namespace
+
+SurfaceMesh surface_mesh(Comm& comm,
+                         const MergedShare& merged,
+                         const DistributedMesh& kernel,
+                         const SurfaceMeshOptions& options) {
+    return faces_and_vertices(comm, merged, kernel, options, nullptr);
+}
+
+SurfaceMesh surface_mesh(Comm& comm,
+                         const MergedShare& merged,
+                         DistributedMesh&& kernel,
+                         const SurfaceMeshOptions& options) {
+    DistributedMesh k = std::move(kernel);
+    return faces_and_vertices(comm, merged, k, options, &k.mesh);
 }
 
 void merged_vertex_runs(Comm& comm,

@@ -84,6 +84,12 @@ struct SurfaceMeshOptions {
                                        const MergedShare& merged,
                                        const DistributedMesh& kernel,
                                        const SurfaceMeshOptions& options = {});
+/// As above, consuming @p kernel: its triangles are freed once the faces are listed, before the
+/// vertices are numbered (a rank's peak is then the kernel or the surface, not both whole).
+[[nodiscard]] SurfaceMesh surface_mesh(Comm& comm,
+                                       const MergedShare& merged,
+                                       DistributedMesh&& kernel,
+                                       const SurfaceMeshOptions& options = {});
 
 /// Collective: this rank's merged vertices [merged.first_vertex, + merged.count()) as x, y, z in
 /// consecutive runs of at most a sixteenth of the largest rank's count (at least 65536), passed

@@ -171,7 +171,7 @@ BuildReport distributed_build(dist::Comm& comm,
     run.widenings = static_cast<std::uint32_t>(comm.allreduce(
         static_cast<std::int64_t>(surface.kernel.stats.widenings), dist::Reduce::max));
     comm.set_phase("surface vertices");
-    dist::SurfaceMesh mine = dist::surface_mesh(comm, surface.merged, surface.kernel);
+    dist::SurfaceMesh mine = dist::surface_mesh(comm, surface.merged, std::move(surface.kernel));
     surface = {};  // the kernel's mesh is no longer needed
     report.surface = detail::distributed_surface_stats(comm, mine, counts.vertices,
                                                        counts.triangles, constrained);

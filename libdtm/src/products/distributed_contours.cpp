@@ -180,7 +180,7 @@ DistributedContourResult distributed_contours(dist::Comm& comm,
 
     detail::report_progress(progress, 0.6, "tracing");
     comm.set_phase("contour vertices");
-    dist::SurfaceMesh mine = dist::surface_mesh(comm, surface.merged, surface.kernel);
+    dist::SurfaceMesh mine = dist::surface_mesh(comm, surface.merged, std::move(surface.kernel));
     const io::ContourWriteOptions write{.crs_wkt = std::move(surface.crs_wkt),
                                         .layer = options.layer};
     surface = {};  // the kernel's mesh is no longer needed

@@ -162,7 +162,7 @@ DistributedDemResult distributed_dem(dist::Comm& comm,
 
     detail::report_progress(progress, 0.6, "rasterize");
     comm.set_phase("dem vertices");
-    dist::SurfaceMesh mine = dist::surface_mesh(comm, surface.merged, surface.kernel);
+    dist::SurfaceMesh mine = dist::surface_mesh(comm, surface.merged, std::move(surface.kernel));
     const io::GridWriteOptions write{.crs_wkt = std::move(surface.crs_wkt),
                                      .nodata = options.nodata};
     surface = {};  // the kernel's mesh is no longer needed

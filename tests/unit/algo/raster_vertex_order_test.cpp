@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // First-use renumbering of a TIN's vertices (algo/detail/raster_vertex_order.hpp): the numbering
-// of one sequential pass over the corners, on one thread and on two, unused vertices dropped.
+// of one sequential pass over the corners, on one thread and on two, unused vertices dropped;
+// the same renumbering in place, and the test that tells whether a TIN needs it.
 #include "algo/detail/raster_vertex_order.hpp"
 
 #include <gtest/gtest.h>
@@ -8,6 +9,7 @@
 
 #include <algorithm>
 #include <random>
+#include <string>
 
 #include "dtm/algo/triangulate.hpp"
 #include "support/terrain_fixtures.hpp"
@@ -31,7 +33,8 @@ Tin sequential_reference(const Tin& tin) {
     return out;
 }
 
-TEST(CoherentVertices, EqualsOneSequentialPassOnEveryThreadCount) {
+/// A triangulation with its vertices in a random order, one of them used by no triangle.
+Tin shuffled_tin() {
     TerrainInput input;
     input.points = test::random_points(120000, 4);
     Tin tin = triangulate(input).tin;
@@ -46,17 +49,39 @@ TEST(CoherentVertices, EqualsOneSequentialPassOnEveryThreadCount) {
         for (VertexIndex& v : t.v) v = shuffle[v];
     }
     tin.vertices = std::move(moved);
+    return tin;
+}
+
+void expect_same(const Tin& got, const Tin& want) {
+    ASSERT_EQ(got.vertices, want.vertices);
+    ASSERT_EQ(got.triangles.size(), want.triangles.size());
+    for (std::size_t t = 0; t < want.triangles.size(); ++t) {
+        ASSERT_EQ(got.triangles[t].v, want.triangles[t].v) << "triangle " << t;
+        ASSERT_EQ(got.triangles[t].n, want.triangles[t].n) << "triangle " << t;
+    }
+}
+
+TEST(CoherentVertices, EqualsOneSequentialPassOnEveryThreadCount) {
+    const Tin tin = shuffled_tin();
     const Tin want = sequential_reference(tin);
     for (const int threads : {1, 2}) {
         tbb::task_arena arena(threads);
-        const Tin got = arena.execute([&] { return with_coherent_vertices(tin); });
-        ASSERT_EQ(got.vertices, want.vertices) << threads << " threads";
-        ASSERT_EQ(got.triangles.size(), want.triangles.size());
-        for (std::size_t t = 0; t < want.triangles.size(); ++t) {
-            ASSERT_EQ(got.triangles[t].v, want.triangles[t].v) << "triangle " << t;
-            ASSERT_EQ(got.triangles[t].n, want.triangles[t].n) << "triangle " << t;
-        }
+        SCOPED_TRACE(std::to_string(threads) + " threads");
+        expect_same(arena.execute([&] { return with_coherent_vertices(tin); }), want);
     }
+}
+
+TEST(CoherentVertices, InPlaceEqualsTheCopyAndIsRecognised) {
+    Tin tin = shuffled_tin();
+    const Tin want = sequential_reference(tin);
+    EXPECT_FALSE(has_coherent_vertices(tin));
+    make_vertices_coherent(tin);
+    expect_same(tin, want);
+    EXPECT_TRUE(has_coherent_vertices(tin));
+    // One swapped pair of first uses is enough to need the renumbering again.
+    std::swap(tin.triangles[0].v[0], tin.triangles[0].v[1]);
+    EXPECT_FALSE(has_coherent_vertices(tin));
+    EXPECT_TRUE(has_coherent_vertices(Tin{}));
 }
 
 }  // namespace

@@ -85,4 +85,31 @@ Tin with_coherent_vertices(const Tin& tin) {
     return out;
 }
 
+bool has_coherent_vertices(const Tin& tin) noexcept {
+    std::size_t next = 0;  // the number the next first use must carry
+    for (const Triangle& t : tin.triangles) {
+        for (const VertexIndex v : t.v) {
+            if (v > next) return false;
+            next += v == next ? 1 : 0;
+        }
+    }
+    return true;
+}
+
+void make_vertices_coherent(Tin& tin) {
+    std::vector<VertexIndex> renumber(tin.vertices.size(), no_vertex);
+    std::vector<Point3> vertices;
+    vertices.reserve(tin.vertices.size());
+    for (Triangle& t : tin.triangles) {
+        for (VertexIndex& v : t.v) {
+            if (renumber[v] == no_vertex) {
+                renumber[v] = static_cast<VertexIndex>(vertices.size());
+                vertices.push_back(tin.vertices[v]);
+            }
+            v = renumber[v];
+        }
+    }
+    tin.vertices = std::move(vertices);
+}
+
 }  // namespace dtm::detail

@@ -1,84 +1,161 @@
 // SPDX-License-Identifier: MIT
 // Routing the TIN's faces to the ranks that need them (surface_routing.hpp): per destination a
-// list of the vertices its faces name and the faces with indices into that list (16-24 bytes a
-// face and 32 a vertex instead of three coordinates per corner), one alltoallv each; the
-// receiver numbers the vertices by one sort of (number, received index) and orders the faces by
-// their serial index, so the rebuilt Tin keeps the serial TIN's relative orders.
+// list of the vertices its faces name and the faces with indices into that list (24 bytes a
+// face and 32 a vertex instead of three coordinates per corner), each list allocated once at
+// its counted size, one alltoallv each; the receiver numbers the vertices by one sort of
+// (number, source, index), read in place from what it received, and, for contours, orders the
+// faces by their serial index, so the rebuilt Tin keeps the serial TIN's relative orders; for a
+// DEM the faces stay as received and the vertices take first-use order, the order rasterize
+// reads without a copy. A rank's peak is its faces and their outgoing lists, then what it
+// received and the Tin (docs/distributed.md, R-M1).
 #include "products/detail/surface_routing.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "algo/detail/raster_vertex_order.hpp"
+
 namespace dtm::products::detail {
+
+namespace {
+
+/// The per-destination lists of route_faces: vertices (each once per destination unless its
+/// faces alternate between destinations) and faces indexing them. Two passes over the faces,
+/// the first counting, so each list is allocated once at its size.
+struct Outgoing {
+    std::vector<dist::Bytes> vertices, faces;
+};
+
+Outgoing outgoing_lists(std::size_t ranks,
+                        const dist::SurfaceMesh& surface,
+                        const Destinations& destinations) {
+    constexpr std::size_t none = ~std::size_t{0};
+    std::vector<std::size_t> last_rank(surface.vertices.size());
+    std::vector<std::uint32_t> index_there(surface.vertices.size(), 0);
+    std::vector<std::size_t> vertex_count(ranks), face_count(ranks);
+    Outgoing out{std::vector<dist::Bytes>(ranks), std::vector<dist::Bytes>(ranks)};
+    for (const bool fill : {false, true}) {
+        std::fill(last_rank.begin(), last_rank.end(), none);
+        std::vector<std::uint32_t> sent(ranks, 0);  // vertices listed for each rank so far
+        for (const dist::SurfaceFace& f : surface.faces) {
+            const RankRange to = destinations(f, surface.vertices);
+            for (std::size_t r = to.first; r <= to.last && r < ranks; ++r) {
+                dist::SurfaceFace there = f;
+                for (std::uint32_t& v : there.v) {
+                    if (last_rank[v] != r) {
+                        last_rank[v] = r;
+                        index_there[v] = sent[r]++;
+                        if (fill) dist::append_value(out.vertices[r], surface.vertices[v]);
+                    }
+                    v = index_there[v];
+                }
+                if (fill) dist::append_value(out.faces[r], there);
+                ++face_count[r];
+            }
+        }
+        if (fill) break;
+        for (std::size_t r = 0; r < ranks; ++r) {
+            out.vertices[r].reserve(sent[r] * sizeof(dist::SurfaceVertex));
+            out.faces[r].reserve(face_count[r] * sizeof(dist::SurfaceFace));
+        }
+    }
+    return out;
+}
+
+template <class T>
+T value_at(const dist::Bytes& bytes, std::size_t i) {
+    T value;
+    std::memcpy(&value, bytes.data() + i * sizeof(T), sizeof(T));
+    return value;
+}
+
+}  // namespace
 
 Tin route_faces(dist::Comm& comm,
                 dist::SurfaceMesh surface,
                 const Destinations& destinations,
                 Links links) {
     const auto p = static_cast<std::size_t>(comm.size());
-    std::vector<dist::Bytes> vertices(p), faces(p);
-    std::vector<std::uint32_t> sent(p, 0);  // vertices sent to each rank so far
-    constexpr std::size_t none = ~std::size_t{0};
-    std::vector<std::size_t> last_rank(surface.vertices.size(), none);
-    std::vector<std::uint32_t> index_there(surface.vertices.size(), 0);
-    for (const dist::SurfaceFace& f : surface.faces) {
-        const RankRange to = destinations(f, surface.vertices);
-        for (std::size_t r = to.first; r <= to.last && r < p; ++r) {
-            dist::SurfaceFace there = f;
-            for (std::uint32_t& v : there.v) {
-                if (last_rank[v] != r) {
-                    last_rank[v] = r;
-                    index_there[v] = sent[r]++;
-                    dist::append_value(vertices[r], surface.vertices[v]);
-                }
-                v = index_there[v];
-            }
-            dist::append_value(faces[r], there);
-        }
-    }
+    Outgoing out = outgoing_lists(p, surface, destinations);
     surface = {};
-    std::vector<std::size_t>().swap(last_rank);
-    std::vector<std::uint32_t>().swap(index_there);
-    const auto got_vertices = comm.alltoallv(std::move(vertices));
-    const auto got_faces = comm.alltoallv(std::move(faces));
+    auto got_vertices = comm.alltoallv(std::move(out.vertices));
+    auto got_faces = comm.alltoallv(std::move(out.faces));
 
-    std::vector<std::pair<std::uint64_t, std::uint64_t>> order;  // (number, received index)
-    std::vector<Point3> received;
-    std::vector<std::size_t> offset;  // of each source's vertices in `received`
-    for (const dist::Bytes& bytes : got_vertices) {
-        offset.push_back(received.size());
-        for (const dist::SurfaceVertex& v : dist::from_bytes<dist::SurfaceVertex>(bytes)) {
-            order.emplace_back(v.id, received.size());
-            received.push_back(v.p);
+    // Vertices once each in ascending number, read in place from what was received.
+    struct Received {
+        std::uint64_t id;
+        std::uint32_t source, index;
+    };
+    std::vector<Received> order;
+    std::vector<std::size_t> offset;  // of each source's vertices in the received order
+    for (std::size_t src = 0; src < p; ++src) {
+        offset.push_back(order.size());
+        const std::size_t n = got_vertices[src].size() / sizeof(dist::SurfaceVertex);
+        for (std::size_t i = 0; i < n; ++i) {
+            order.push_back({value_at<dist::SurfaceVertex>(got_vertices[src], i).id,
+                             static_cast<std::uint32_t>(src), static_cast<std::uint32_t>(i)});
         }
     }
-    std::sort(order.begin(), order.end());
+    offset.push_back(order.size());
+    std::sort(order.begin(), order.end(), [](const Received& a, const Received& b) {
+        return a.id < b.id || (a.id == b.id && (a.source < b.source ||
+                                                (a.source == b.source && a.index < b.index)));
+    });
     Tin tin;
-    std::vector<VertexIndex> vertex_of(received.size());
+    std::vector<VertexIndex> vertex_of(order.size());
     for (std::size_t i = 0; i < order.size(); ++i) {
-        if (i == 0 || order[i - 1].first != order[i].first) {
-            tin.vertices.push_back(received[order[i].second]);
+        const Received& r = order[i];
+        if (i == 0 || order[i - 1].id != r.id) {
+            tin.vertices.push_back(
+                value_at<dist::SurfaceVertex>(got_vertices[r.source], r.index).p);
         }
-        vertex_of[order[i].second] = static_cast<VertexIndex>(tin.vertices.size() - 1);
+        vertex_of[offset[r.source] + r.index] = static_cast<VertexIndex>(tin.vertices.size() - 1);
+    }
+    std::vector<Received>().swap(order);
+    std::vector<dist::Bytes>().swap(got_vertices);
+
+    const auto triangle_of = [&](std::size_t src, const dist::SurfaceFace& f) {
+        Triangle t;
+        for (unsigned i = 0; i < 3; ++i) {
+            t.v[i] = vertex_of[offset[src] + f.v[i]];
+            t.n[i] = (f.border >> i & 1U) != 0 ? no_triangle : 0;
+        }
+        return t;
+    };
+    std::size_t face_count = 0;
+    for (const dist::Bytes& bytes : got_faces)
+        face_count += bytes.size() / sizeof(dist::SurfaceFace);
+    if (links == Links::border_only) {
+        // The rasteriser reads no triangle or vertex order: the faces as received.
+        tin.triangles.reserve(face_count);
+        for (std::size_t src = 0; src < p; ++src) {
+            const std::size_t n = got_faces[src].size() / sizeof(dist::SurfaceFace);
+            for (std::size_t i = 0; i < n; ++i)
+                tin.triangles.push_back(
+                    triangle_of(src, value_at<dist::SurfaceFace>(got_faces[src], i)));
+            dist::Bytes().swap(got_faces[src]);
+        }
+        ::dtm::detail::make_vertices_coherent(tin);  // rasterize then reads it without a copy
+        return tin;
     }
     std::vector<std::pair<std::uint64_t, Triangle>> ordered;  // (serial index, triangle)
-    for (std::size_t src = 0; src < got_faces.size(); ++src) {
-        for (const dist::SurfaceFace& f : dist::from_bytes<dist::SurfaceFace>(got_faces[src])) {
-            Triangle t;
-            for (unsigned i = 0; i < 3; ++i) {
-                t.v[i] = vertex_of[offset[src] + f.v[i]];
-                t.n[i] = (f.border >> i & 1U) != 0 ? no_triangle : 0;
-            }
-            ordered.emplace_back(f.face, t);
+    ordered.reserve(face_count);
+    for (std::size_t src = 0; src < p; ++src) {
+        const std::size_t n = got_faces[src].size() / sizeof(dist::SurfaceFace);
+        for (std::size_t i = 0; i < n; ++i) {
+            const auto f = value_at<dist::SurfaceFace>(got_faces[src], i);
+            ordered.emplace_back(f.face, triangle_of(src, f));
         }
+        dist::Bytes().swap(got_faces[src]);
     }
     std::sort(ordered.begin(), ordered.end(),
               [](const auto& a, const auto& b) { return a.first < b.first; });
     tin.triangles.reserve(ordered.size());
     for (const auto& [face, t] : ordered) tin.triangles.push_back(t);
-    if (links == Links::shared_edges) link_neighbours(tin);
+    link_neighbours(tin);
     return tin;
 }
 
