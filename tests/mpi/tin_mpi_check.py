@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
 """`mpirun -np P dtm tin POINTS.csv -o tin.ply` against `dtm tin` on one process (issue 18):
-the same PLY bytes (also with hard breaklines crossing the seams and each other), the tiled TIN
+the same PLY bytes (also with hard breaklines crossing the seams and each other, and a 2-D breakline
+through survey points in every rank's part of the file), the tiled TIN
 (`-o tin.json`) put together by `dtm tin` and `dtm grid` as the same TIN, a GeoPackage read by
 feature ranges (also filtered by `--where`), the serial reader's
 message and exit code 2 for a bad line in the last
@@ -65,6 +66,25 @@ with tempfile.TemporaryDirectory() as tmp:
         a, b = json.loads(serial.stdout), json.loads(dist.stdout)
         for key in ("points_in", "duplicates_merged", "vertices", "triangles", "constrained_edges"):
             check(a[key] == b[key], f"breaklines --stats {key}: {a[key]} serial, {b[key]} distributed")
+
+    # A 2-D breakline (no z column) through survey points in every rank's part of the file: its
+    # vertices take the first such point's z, which the mean rule then averages in.
+    lines2d = os.path.join(tmp, "lines2d.csv")
+    with open(points) as f:
+        rows = [r.split(",") for r in f.read().splitlines() if r.startswith("P")]
+    with open(lines2d, "w") as out:
+        out.write("shapeid,x,y\n")
+        for k in range(9):
+            r = rows[k * (len(rows) - 1) // 8]
+            out.write(f"1,{r[1]},{r[2]}\n")
+    two_d = ["--breaklines", lines2d, "--crs", "EPSG:5514", "--duplicates", "mean", "-q"]
+    serial = run(["tin", points, "-o", os.path.join(tmp, "serial-2d.ply")] + two_d, False)
+    dist = run(["tin", points, "-o", os.path.join(tmp, "dist-2d.ply")] + two_d, True)
+    check(serial.returncode == 0 and dist.returncode == 0,
+          f"2-D breakline: exit {serial.returncode} / {dist.returncode}: {serial.stderr} {dist.stderr}")
+    if serial.returncode == 0 and dist.returncode == 0:
+        with open(os.path.join(tmp, "serial-2d.ply"), "rb") as a, open(os.path.join(tmp, "dist-2d.ply"), "rb") as b:
+            check(a.read() == b.read(), "2-D breakline: the PLY differs from the serial one")
 
     boundary, hole = os.path.join(tmp, "boundary.csv"), os.path.join(tmp, "hole.csv")
     write_ring(boundary, -751000, -1051000, 880, 262)

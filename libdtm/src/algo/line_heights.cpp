@@ -34,35 +34,16 @@ bool lacks_height(const std::vector<Polyline>& lines) {
     });
 }
 
-/// Step 1 (and the error of a hard breakline vertex left without a height).
+/// Step 1 with the heights of the input's own points.
 std::size_t heights_from_points(TerrainInput& t) {
     std::unordered_map<Point2, double, XyHash> z_at;
     z_at.reserve(t.points.size());
     for (const Point3& p : t.points) z_at.emplace(p.xy(), p.z);
-    std::size_t filled = 0;
-    const auto fill = [&](std::vector<Polyline>& lines, const char* kind, bool required) {
-        for (Polyline& l : lines) {
-            for (Point3& p : l.points) {
-                if (!std::isnan(p.z)) continue;
-                const auto it = z_at.find(p.xy());
-                if (it != z_at.end()) {
-                    p.z = it->second;
-                    ++filled;
-                } else if (required) {
-                    throw InputError(l.source + ": " + kind + " vertex (" + std::to_string(p.x) +
-                                     ", " + std::to_string(p.y) +
-                                     ") has no height: expected a z column/geometry z, `z_field`, "
-                                     "or a survey point at that position (2-D lines: use "
-                                     "`soft_breaklines`)");
-                }
-            }
-        }
-    };
-    fill(t.breaklines, "breakline", true);
-    fill(t.boundaries, "boundary", false);
-    fill(t.holes, "hole", false);
-    fill(t.soft_breaklines, "soft breakline", false);
-    return filled;
+    return heights_from_survey_points(t, [&](const Point2& p) -> std::optional<double> {
+        const auto it = z_at.find(p);
+        if (it == z_at.end()) return std::nullopt;
+        return it->second;
+    });
 }
 
 /// Step 2: boundary and hole vertices from the surface of the points and hard breaklines.
@@ -102,6 +83,32 @@ std::size_t rings_from_surface(TerrainInput& t,
 }
 
 }  // namespace
+
+std::size_t heights_from_survey_points(TerrainInput& t, const SurveyHeightAt& height_at) {
+    std::size_t filled = 0;
+    const auto fill = [&](std::vector<Polyline>& lines, const char* kind, bool required) {
+        for (Polyline& l : lines) {
+            for (Point3& p : l.points) {
+                if (!std::isnan(p.z)) continue;
+                if (const std::optional<double> z = height_at(p.xy())) {
+                    p.z = *z;
+                    ++filled;
+                } else if (required) {
+                    throw InputError(l.source + ": " + kind + " vertex (" + std::to_string(p.x) +
+                                     ", " + std::to_string(p.y) +
+                                     ") has no height: expected a z column/geometry z, `z_field`, "
+                                     "or a survey point at that position (2-D lines: use "
+                                     "`soft_breaklines`)");
+                }
+            }
+        }
+    };
+    fill(t.breaklines, "breakline", true);
+    fill(t.boundaries, "boundary", false);
+    fill(t.holes, "hole", false);
+    fill(t.soft_breaklines, "soft breakline", false);
+    return filled;
+}
 
 LineHeightReport resolve_line_heights(TerrainInput& input,
                                       const LineHeightOptions& options,

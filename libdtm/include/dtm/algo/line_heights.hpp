@@ -6,6 +6,8 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
+#include <optional>
 
 #include "dtm/core/progress.hpp"
 #include "dtm/core/terrain.hpp"
@@ -38,5 +40,14 @@ struct LineHeightReport {
 LineHeightReport resolve_line_heights(TerrainInput& input,
                                       const LineHeightOptions& options = {},
                                       const Progress& progress = {});
+
+/// The z of the first survey point (in input order) at exactly a position, if any.
+using SurveyHeightAt = std::function<std::optional<double>(const Point2&)>;
+
+/// Step 1 of resolve_line_heights() alone, the survey points' heights given by @p height_at
+/// (a distributed run looks them up over all ranks): fills the NaN z of the lines' vertices
+/// that lie on a survey point. @return the vertices filled. @throws InputError as
+/// resolve_line_heights() for a hard breakline vertex left without a height.
+std::size_t heights_from_survey_points(TerrainInput& lines, const SurveyHeightAt& height_at);
 
 }  // namespace dtm

@@ -2,6 +2,8 @@
 //
 // Hard breaklines in a distributed run. The lines are few against the points, so every rank
 // reads them whole (departure from R-D2: no feature ranges) and computes the same things: the
+// heights of 2-D vertices from the survey points at their positions (each rank looks in its run
+// of the input, the lowest rank's find wins: the serial first point), the
 // serial combined order (add_lines), and after the distributed duplicate merge the serial
 // segments in vertex numbers. The split pre-pass (split_segments, docs/algorithms/cdt.md) then
 // runs on every rank over the line vertices alone, renumbered monotonically: its decisions read
@@ -15,9 +17,13 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <optional>
+#include <span>
+#include <unordered_map>
 #include <unordered_set>
 
 #include "algo/detail/segment_split.hpp"
+#include "dtm/algo/line_heights.hpp"
 #include "dtm/core/error.hpp"
 #include "dtm/io/inputs.hpp"
 
@@ -42,37 +48,78 @@ struct KeyHash {
 
 }  // namespace
 
-DistributedLines load_distributed_lines(const DistributedSource& source,
-                                        const std::string& crs_wkt) {
-    DistributedLines lines;
-    if (source.lines.empty()) return lines;
+TerrainInput read_distributed_lines(const DistributedSource& source, const std::string& crs_wkt) {
+    if (source.lines.empty()) return {};
     io::LoadOptions load;
     load.files = source.lines;
     load.read = source.read;
     load.crs = {source.default_crs, crs_wkt};
-    const io::LoadedInputs loaded = io::load_inputs(load);
-    const TerrainInput& t = loaded.terrain;
+    TerrainInput t = io::load_inputs(load).terrain;
     if (!t.points.empty() || !t.soft_breaklines.empty()) {
         throw UsageError(
             "a distributed run takes lines only from breakline, boundary and hole files (no "
             "points or soft lines in them yet)");
     }
-    for (const auto* kind : {&t.breaklines, &t.boundaries, &t.holes}) {
+    return t;
+}
+
+void distributed_line_heights(dist::Comm& comm,
+                              std::span<const dist::InputPoint> mine,
+                              TerrainInput& lines) {
+    // The positions of the vertices without a height, each once; every rank holds the lines.
+    std::unordered_map<std::pair<std::uint64_t, std::uint64_t>, std::size_t, KeyHash> slot;
+    for (const auto* kind : {&lines.breaklines, &lines.boundaries, &lines.holes}) {
         for (const Polyline& line : *kind) {
             for (const Point3& p : line.points) {
-                if (std::isnan(p.z) && std::isfinite(p.x) && std::isfinite(p.y)) {
-                    throw UsageError(
-                        (line.source.empty() ? std::string("a line") : line.source) +
-                        ": a 2-D line (its heights come from the surface) is not taken by a "
-                        "distributed run yet");
-                }
+                if (std::isnan(p.z)) slot.emplace(key(p.x, p.y), slot.size());
             }
         }
     }
-    ::dtm::detail::add_lines(t, lines.combined);
-    lines.has_boundary = !t.boundaries.empty();
-    lines.hole_seeds = t.hole_seeds;
-    return lines;
+    if (slot.empty()) return;
+    // This rank's first survey point at each (its points are a contiguous run of the input, in
+    // order), then over ranks the lowest rank's: the serial first point in input order.
+    struct Found {
+        double z = 0.0;
+        std::uint64_t found = 0;
+    };
+    std::vector<Found> here(slot.size());
+    for (const dist::InputPoint& q : mine) {
+        const auto it = slot.find(key(q.p.x, q.p.y));
+        if (it != slot.end() && here[it->second].found == 0) here[it->second] = {q.p.z, 1};
+    }
+    comm.set_phase("line heights");
+    const std::vector<dist::Bytes> all =
+        comm.allgatherv(dist::to_bytes(std::span<const Found>(here)));
+    std::vector<Found> first(slot.size());
+    for (const dist::Bytes& bytes : all) {
+        const std::vector<Found> theirs = dist::from_bytes<Found>(bytes);
+        for (std::size_t i = 0; i < theirs.size() && i < first.size(); ++i) {
+            if (first[i].found == 0) first[i] = theirs[i];
+        }
+    }
+    (void)heights_from_survey_points(lines, [&](const Point2& p) -> std::optional<double> {
+        const auto it = slot.find(key(p.x, p.y));
+        if (it == slot.end() || first[it->second].found == 0) return std::nullopt;
+        return first[it->second].z;
+    });
+    for (const auto* kind : {&lines.boundaries, &lines.holes}) {
+        for (const Polyline& line : *kind) {
+            for (const Point3& p : line.points) {
+                if (!std::isnan(p.z)) continue;
+                throw UsageError((line.source.empty() ? std::string("a ring") : line.source) +
+                                 ": a boundary or hole vertex on no survey point (its height "
+                                 "comes from the surface) is not taken by a distributed run yet");
+            }
+        }
+    }
+}
+
+DistributedLines combine_lines(const TerrainInput& lines) {
+    DistributedLines out;
+    ::dtm::detail::add_lines(lines, out.combined);
+    out.has_boundary = !lines.boundaries.empty();
+    out.hole_seeds = lines.hole_seeds;
+    return out;
 }
 
 PlacedLines place_lines(dist::Comm& comm,

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -23,12 +24,22 @@ struct DistributedLines {
 };
 
 /// Every rank: the breakline, boundary and hole files read by the serial readers into @p crs_wkt
-/// (the points' CRS; empty: as they come), their vertices and segments numbered from 0 in the
-/// serial order. @throws InputError (the readers' messages); UsageError for what a distributed
-/// run does not take yet (2-D lines, which take heights from the surface; points or soft lines in
-/// those files)
-[[nodiscard]] DistributedLines load_distributed_lines(const DistributedSource& source,
-                                                      const std::string& crs_wkt);
+/// (the points' CRS; empty: as they come). @throws InputError (the readers' messages);
+/// UsageError for points or soft lines in those files (not taken by a distributed run yet)
+[[nodiscard]] TerrainInput read_distributed_lines(const DistributedSource& source,
+                                                  const std::string& crs_wkt);
+
+/// Collective: the heights of 2-D line vertices from the survey points at the same position,
+/// the first in input order over all ranks (@p mine: this rank's run of the input, in order),
+/// as resolve_line_heights() step 1. @throws on every rank: InputError as the serial run for a
+/// breakline vertex on no survey point; UsageError for a boundary or hole vertex on none (the
+/// serial run takes its height from a first surface, not done distributed yet)
+void distributed_line_heights(dist::Comm& comm,
+                              std::span<const dist::InputPoint> mine,
+                              TerrainInput& lines);
+
+/// Every rank: the lines' vertices and segments numbered from 0 in the serial order.
+[[nodiscard]] DistributedLines combine_lines(const TerrainInput& lines);
 
 struct PlacedLines {
     std::vector<dist::GlobalSegment> segments;  ///< vertex numbers, split at crossings

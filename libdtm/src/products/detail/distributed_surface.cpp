@@ -86,8 +86,12 @@ DistributedSurface distributed_surface(dist::Comm& comm,
     out.points = read.total;
     out.skipped_lines = read.skipped_lines;
     // Breakline vertices follow the points in the merge (the last rank holds the last inputs).
+    TerrainInput line_files;
+    on_ranks(comm, true, [&] { line_files = read_distributed_lines(source, out.crs_wkt); });
+    distributed_line_heights(comm, read.points, line_files);
     DistributedLines loaded;
-    on_ranks(comm, true, [&] { loaded = load_distributed_lines(source, out.crs_wkt); });
+    on_ranks(comm, true, [&] { loaded = combine_lines(line_files); });
+    line_files = {};
     ::dtm::detail::CombinedInput& lines = loaded.combined;
     const std::uint64_t first_line_input = read.points.size();
     if (comm.rank() == comm.size() - 1) {
