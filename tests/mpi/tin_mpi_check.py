@@ -2,13 +2,14 @@
 # SPDX-License-Identifier: MIT
 """`mpirun -np P dtm tin POINTS.csv -o tin.ply` against `dtm tin` on one process (issue 18):
 the same PLY bytes (also with hard breaklines crossing the seams and each other, and a 2-D breakline
-through survey points in every rank's part of the file), the tiled TIN
+through survey points in every rank's part of the file, a 2-D boundary off them), the tiled TIN
 (`-o tin.json`) put together by `dtm tin` and `dtm grid` as the same TIN, a GeoPackage read by
 feature ranges (also filtered by `--where`), the serial reader's
 message and exit code 2 for a bad line in the last
 rank's byte range (printed once), a clear refusal of what the distributed run does not take yet,
 and `--stats` naming the ranks. Usage: tin_mpi_check.py DTM MPIEXEC NP"""
 import json
+import math
 import os
 import random
 import subprocess
@@ -85,6 +86,23 @@ with tempfile.TemporaryDirectory() as tmp:
     if serial.returncode == 0 and dist.returncode == 0:
         with open(os.path.join(tmp, "serial-2d.ply"), "rb") as a, open(os.path.join(tmp, "dist-2d.ply"), "rb") as b:
             check(a.read() == b.read(), "2-D breakline: the PLY differs from the serial one")
+    # A 2-D boundary off the survey points, partly beyond their hull: heights from a first
+    # surface of the points and the breakline (nearest vertex beyond the hull).
+    ring2d = os.path.join(tmp, "ring2d.csv")
+    with open(ring2d, "w") as out:
+        out.write("shapeid,x,y\n")
+        for k in range(31):
+            a = 2 * math.pi * (k % 30) / 30
+            r = 1050 * (1 + 0.08 * math.sin(3 * (k % 30)))
+            out.write(f"1,{-751000 + r * math.cos(a):.4f},{-1051000 + r * math.sin(a):.4f}\n")
+    two_d += ["--boundary", ring2d]
+    serial = run(["tin", points, "-o", os.path.join(tmp, "serial-r2d.ply")] + two_d, False)
+    dist = run(["tin", points, "-o", os.path.join(tmp, "dist-r2d.ply")] + two_d, True)
+    check(serial.returncode == 0 and dist.returncode == 0,
+          f"2-D boundary: exit {serial.returncode} / {dist.returncode}: {serial.stderr} {dist.stderr}")
+    if serial.returncode == 0 and dist.returncode == 0:
+        with open(os.path.join(tmp, "serial-r2d.ply"), "rb") as a, open(os.path.join(tmp, "dist-r2d.ply"), "rb") as b:
+            check(a.read() == b.read(), "2-D boundary: the PLY differs from the serial one")
 
     boundary, hole = os.path.join(tmp, "boundary.csv"), os.path.join(tmp, "hole.csv")
     write_ring(boundary, -751000, -1051000, 880, 262)

@@ -102,16 +102,6 @@ void distributed_line_heights(dist::Comm& comm,
         if (it == slot.end() || first[it->second].found == 0) return std::nullopt;
         return first[it->second].z;
     });
-    for (const auto* kind : {&lines.boundaries, &lines.holes}) {
-        for (const Polyline& line : *kind) {
-            for (const Point3& p : line.points) {
-                if (!std::isnan(p.z)) continue;
-                throw UsageError((line.source.empty() ? std::string("a ring") : line.source) +
-                                 ": a boundary or hole vertex on no survey point (its height "
-                                 "comes from the surface) is not taken by a distributed run yet");
-            }
-        }
-    }
 }
 
 DistributedLines combine_lines(const TerrainInput& lines) {

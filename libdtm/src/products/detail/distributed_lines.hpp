@@ -31,9 +31,9 @@ struct DistributedLines {
 
 /// Collective: the heights of 2-D line vertices from the survey points at the same position,
 /// the first in input order over all ranks (@p mine: this rank's run of the input, in order),
-/// as resolve_line_heights() step 1. @throws on every rank: InputError as the serial run for a
-/// breakline vertex on no survey point; UsageError for a boundary or hole vertex on none (the
-/// serial run takes its height from a first surface, not done distributed yet)
+/// as resolve_line_heights() step 1 (boundary and hole vertices on none are left to
+/// ring_heights_from_surface). @throws InputError on every rank, as the serial run, for a
+/// breakline vertex on no survey point
 void distributed_line_heights(dist::Comm& comm,
                               std::span<const dist::InputPoint> mine,
                               TerrainInput& lines);

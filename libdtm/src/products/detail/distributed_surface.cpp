@@ -18,6 +18,7 @@
 #include "io/formats/csv/csv_distributed.hpp"
 #include "io/formats/ogr_distributed.hpp"
 #include "products/detail/distributed_lines.hpp"
+#include "products/detail/distributed_ring_heights.hpp"
 
 namespace dtm::products::detail {
 namespace {
@@ -55,40 +56,61 @@ std::uint64_t bytes_sent(dist::Comm& comm) {
     return static_cast<std::uint64_t>(comm.allreduce(bytes, dist::Reduce::sum));
 }
 
+namespace {
+
+/// This rank's run of the input's points, in the CRS the serial load_inputs gives them; the
+/// file's CRS (or the default) in @p crs_wkt.
+io::DistributedPoints read_points(dist::Comm& comm,
+                                  const DistributedSource& source,
+                                  std::string& crs_wkt) {
+    // Text point lists by byte ranges, OGR sources by feature ranges; the file's CRS first.
+    crs_wkt.clear();
+    const std::string_view reader = io::find_reader(source.input.path).name;
+    io::DistributedPoints read =
+        reader == "ogr" || reader == "csv-wkt"
+            ? io::read_ogr_points_distributed(comm, source.input, source.read, crs_wkt)
+            : io::read_text_points_distributed(comm, source.input, source.read);
+    if (crs_wkt.empty() && !source.default_crs.empty()) {
+        try {
+            crs_wkt = io::crs_to_wkt(source.default_crs);
+        } catch (const UsageError& e) {
+            throw OptionError("default_crs", "`default_crs`: " + std::string(e.what()));
+        }
+    }
+    if (!crs_wkt.empty()) {
+        if (io::crs_is_geographic(crs_wkt)) {
+            throw UsageError(
+                "a distributed run takes projected coordinates only (no UTM projection of "
+                "geographic points yet)");
+        }
+        if (io::crs_is_sjtsk(crs_wkt)) {
+            for (dist::InputPoint& p : read.points) io::sjtsk_to_east_north(p.p.x, p.p.y);
+        }
+    }
+    return read;
+}
+
+}  // namespace
+
 DistributedSurface distributed_surface(dist::Comm& comm,
                                        const DistributedSource& source,
                                        const Progress& progress) {
     DistributedSurface out;
     report_progress(progress, 0.0, "reading");
-    // Text point lists by byte ranges, OGR sources by feature ranges; the file's CRS first.
-    const std::string_view reader = io::find_reader(source.input.path).name;
-    io::DistributedPoints read =
-        reader == "ogr" || reader == "csv-wkt"
-            ? io::read_ogr_points_distributed(comm, source.input, source.read, out.crs_wkt)
-            : io::read_text_points_distributed(comm, source.input, source.read);
-    if (out.crs_wkt.empty() && !source.default_crs.empty()) {
-        try {
-            out.crs_wkt = io::crs_to_wkt(source.default_crs);
-        } catch (const UsageError& e) {
-            throw OptionError("default_crs", "`default_crs`: " + std::string(e.what()));
-        }
-    }
-    if (!out.crs_wkt.empty()) {
-        if (io::crs_is_geographic(out.crs_wkt)) {
-            throw UsageError(
-                "a distributed run takes projected coordinates only (no UTM projection of "
-                "geographic points yet)");
-        }
-        if (io::crs_is_sjtsk(out.crs_wkt)) {
-            for (dist::InputPoint& p : read.points) io::sjtsk_to_east_north(p.p.x, p.p.y);
-        }
-    }
+    io::DistributedPoints read = read_points(comm, source, out.crs_wkt);
     out.points = read.total;
     out.skipped_lines = read.skipped_lines;
     // Breakline vertices follow the points in the merge (the last rank holds the last inputs).
     TerrainInput line_files;
     on_ranks(comm, true, [&] { line_files = read_distributed_lines(source, out.crs_wkt); });
     distributed_line_heights(comm, read.points, line_files);
+    Progress rest = progress;
+    if (rings_lack_heights(line_files)) {  // serial step 2: a first surface without the rings
+        std::vector<dist::InputPoint>().swap(read.points);  // read again after it
+        ring_heights_from_surface(comm, source, out.points, line_files, progress.sub(0.0, 0.5));
+        read = read_points(comm, source, out.crs_wkt);
+        rest = progress.sub(0.5, 1.0);
+    }
     DistributedLines loaded;
     on_ranks(comm, true, [&] { loaded = combine_lines(line_files); });
     line_files = {};
@@ -99,7 +121,7 @@ DistributedSurface distributed_surface(dist::Comm& comm,
             read.points.push_back({lines.points[i], lines.z_known[i]});
         }
     }
-    report_progress(progress, 0.25, "triangulating");
+    report_progress(rest, 0.25, "triangulating");
     out.merged = dist::merge_exact_duplicates(comm, read.points, source.duplicates);
     std::vector<dist::InputPoint>().swap(read.points);
     const PlacedLines placed =
@@ -114,19 +136,18 @@ DistributedSurface distributed_surface(dist::Comm& comm,
     points.reserve(out.merged.vertices.size());
     for (const dist::Vertex& v : out.merged.vertices) points.push_back({v.p.x, v.p.y, v.id});
     out.merged.keep_heights();  // the kernel's positions hold x and y from here on
-    dist::Share share =
-        dist::partition_points(comm, std::move(points), {}, progress.sub(0.25, 0.5));
-    out.kernel = dist::triangulate_share(comm, std::move(share), {}, progress.sub(0.5, 0.9));
+    dist::Share share = dist::partition_points(comm, std::move(points), {}, rest.sub(0.25, 0.5));
+    out.kernel = dist::triangulate_share(comm, std::move(share), {}, rest.sub(0.5, 0.9));
     out.triangles = check_not_degenerate(comm, out.merged.total_vertices, out.kernel);
     if (!placed.segments.empty()) {
-        dist::insert_constraints(comm, out.kernel, placed.segments, progress.sub(0.9, 1.0));
+        dist::insert_constraints(comm, out.kernel, placed.segments, rest.sub(0.9, 1.0));
     }
     out.removed_triangles =
-        dist::apply_distributed_domain(comm, out.kernel, loaded.has_boundary, progress).removed;
-    out.removed_triangles += dist::remove_hole_seeds(comm, out.kernel, loaded.hole_seeds, progress);
+        dist::apply_distributed_domain(comm, out.kernel, loaded.has_boundary, rest).removed;
+    out.removed_triangles += dist::remove_hole_seeds(comm, out.kernel, loaded.hole_seeds, rest);
     if (source.max_edge > 0.0) {
         out.removed_triangles +=
-            dist::trim_distributed_long_edges(comm, out.kernel, source.max_edge, progress);
+            dist::trim_distributed_long_edges(comm, out.kernel, source.max_edge, rest);
     }
     if (out.removed_triangles == out.triangles) {
         throw InputError("no triangle is left inside the boundary and outside the holes");
