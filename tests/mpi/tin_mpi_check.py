@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: MIT
 """`mpirun -np P dtm tin POINTS.csv -o tin.ply` against `dtm tin` on one process (issue 18):
 the same PLY bytes (also with hard breaklines crossing the seams and each other, and a 2-D breakline
-through survey points in every rank's part of the file, a 2-D boundary off them), the tiled TIN
+through survey points in every rank's part of the file, soft 2-D lines, a 2-D boundary off the
+points), the tiled TIN
 (`-o tin.json`) put together by `dtm tin` and `dtm grid` as the same TIN, a GeoPackage read by
 feature ranges (also filtered by `--where`), the serial reader's
 message and exit code 2 for a bad line in the last
@@ -95,6 +96,19 @@ with tempfile.TemporaryDirectory() as tmp:
             a = 2 * math.pi * (k % 30) / 30
             r = 1050 * (1 + 0.08 * math.sin(3 * (k % 30)))
             out.write(f"1,{-751000 + r * math.cos(a):.4f},{-1051000 + r * math.sin(a):.4f}\n")
+    # Soft 2-D lines across the seams and the hard line: heights from a first surface.
+    soft2d = os.path.join(tmp, "soft2d.csv")
+    with open(soft2d, "w") as out:
+        out.write("shapeid,x,y\n1,-751990.5,-1051000.25\n1,-750010.5,-1050990.75\n"
+                  "2,-751003.5,-1051990.5\n2,-750997.25,-1050010.5\n")
+    soft = ["--soft-breaklines", soft2d]
+    serial = run(["tin", points, "-o", os.path.join(tmp, "serial-s.ply")] + two_d + soft, False)
+    dist = run(["tin", points, "-o", os.path.join(tmp, "dist-s.ply")] + two_d + soft, True)
+    check(serial.returncode == 0 and dist.returncode == 0,
+          f"soft breaklines: exit {serial.returncode} / {dist.returncode}: {serial.stderr} {dist.stderr}")
+    if serial.returncode == 0 and dist.returncode == 0:
+        with open(os.path.join(tmp, "serial-s.ply"), "rb") as a, open(os.path.join(tmp, "dist-s.ply"), "rb") as b:
+            check(a.read() == b.read(), "soft breaklines: the PLY differs from the serial one")
     two_d += ["--boundary", ring2d]
     serial = run(["tin", points, "-o", os.path.join(tmp, "serial-r2d.ply")] + two_d, False)
     dist = run(["tin", points, "-o", os.path.join(tmp, "dist-r2d.ply")] + two_d, True)
@@ -217,9 +231,9 @@ with tempfile.TemporaryDirectory() as tmp:
     check(not os.path.exists(os.path.join(tmp, "y.ply")), "no output after a bad line")
 
     if ranks > 1:  # -np 1 is the single-process run, which takes everything
-        refused = run(["tin", points, "--soft-breaklines", points, "-o", os.path.join(tmp, "z.ply")], True)
+        refused = run(["tin", points, "--flat-areas", points, "-o", os.path.join(tmp, "z.ply")], True)
         check(refused.returncode == 2 and refused.stderr.count("does not take") == 1,
-              f"soft breaklines refused: exit {refused.returncode}: {refused.stderr!r}")
+              f"flat areas refused: exit {refused.returncode}: {refused.stderr!r}")
         other = run(["info", points], True)
         check(other.returncode == 2 and "only `dtm tin`, `dtm grid`, `dtm contour` and `dtm build`" in other.stderr,
               f"dtm info under mpirun: {other.stderr!r}")

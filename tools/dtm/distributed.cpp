@@ -43,9 +43,7 @@ void check_distributed_input(const char* command,
                          what + " yet");
     };
     if (in.inputs.size() != 1) refuse("more than one input file");
-    if (!in.soft_breaklines.empty() || !in.flat_areas.empty()) {
-        refuse("soft breaklines or flat areas");
-    }
+    if (!in.flat_areas.empty()) refuse("flat areas");
     const std::string_view reader = io::find_reader(in.inputs[0]).name;
     if (reader != "csv" && reader != "ogr" && reader != "csv-wkt") {
         refuse("a ." + io::lower_extension(in.inputs[0]) +
@@ -68,6 +66,8 @@ products::DistributedSource distributed_source(const InputArgs& in,
     source.duplicates = triangulate.duplicates;
     for (const std::string& f : in.breaklines)
         source.lines.push_back({f, io::InputRole::breaklines});
+    for (const std::string& f : in.soft_breaklines)
+        source.lines.push_back({f, io::InputRole::soft_breaklines});
     for (const std::string& f : in.boundaries) source.lines.push_back({f, io::InputRole::boundary});
     for (const std::string& f : in.holes) source.lines.push_back({f, io::InputRole::holes});
     source.z_tolerance = triangulate.z_tolerance;

@@ -197,6 +197,41 @@ TEST(DistributedLineHeights, RingVerticesEquallyNearTwoVerticesTakeTheLowerNumbe
     }
 }
 
+TEST(DistributedLineHeights, SoftBreaklinesTakeTheFirstSurfacesHeightsOnAnyRankCount) {
+    const dtm::test::ScratchDir dir;
+    const std::vector<dtm::Point3> points = survey_points();
+    dtm::test::write_file(dir / "points.csv", xyz_text(points));
+    // A hard line through survey points; soft 2-D lines crossing it, crossing each other, one
+    // vertex on a survey point, one beyond the hull (mutation check: a soft height 1 ulp off
+    // fails 10 of 10).
+    dtm::test::write_file(dir / "hard.csv", lines_2d({{points[5], points[100], points[2000]}}));
+    const double x0 = -751000.0, y0 = -1051000.0;
+    const std::vector<std::vector<dtm::Point3>> soft{
+        {{x0 + 20.0, y0 + 500.25, 0}, {x0 + 500.5, y0 + 510.0, 0}, {x0 + 990.0, y0 + 480.5, 0}},
+        {{x0 + 480.0, y0 - 30.0, 0}, points[7], {x0 + 515.5, y0 + 990.0, 0}},
+        {{x0 + 100.0, y0 + 100.0, 0}, {x0 + 900.0, y0 + 900.0, 0}}};
+    dtm::test::write_file(dir / "soft.csv", lines_2d(soft));
+    // A soft line ending exactly on a hard 3-D segment: its end takes the segment's height.
+    dtm::test::write_file(dir / "hard3d.csv",
+                          "shapeid,x,y,z\n1,-750900,-1050700,270\n1,-750100,-1050700,280\n");
+    dtm::test::write_file(dir / "tee.csv",
+                          "shapeid,x,y\n1,-750600,-1050900.5\n1,-750600,-1050700\n");
+    const std::vector<dtm::io::InputFile> files{{dir / "points.csv", InputRole::points},
+                                                {dir / "hard.csv", InputRole::breaklines},
+                                                {dir / "hard3d.csv", InputRole::breaklines},
+                                                {dir / "soft.csv", InputRole::soft_breaklines},
+                                                {dir / "tee.csv", InputRole::soft_breaklines}};
+    for (const auto rule : {dtm::DuplicateRule::first, dtm::DuplicateRule::mean}) {
+        const std::string expected = serial_ply(dir.path(), files, rule);
+        for (const int ranks : {1, 2, 3, 7, 16}) {
+            const fs::path out = dir / ("soft-" + std::to_string(ranks) + ".ply");
+            run_distributed(ranks, files, out, rule);
+            EXPECT_TRUE(dtm::test::read_file(out) == expected)
+                << ranks << " ranks, rule " << static_cast<int>(rule);
+        }
+    }
+}
+
 TEST(DistributedLineHeights, ABreaklineVertexOnNoSurveyPointGivesTheSerialError) {
     const dtm::test::ScratchDir dir;
     const std::vector<dtm::Point3> points = survey_points();

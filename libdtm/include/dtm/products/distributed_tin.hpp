@@ -23,8 +23,8 @@ struct DistributedSource {
     io::ReadOptions read;     ///< columns, skip_bad_lines
     std::string default_crs;  ///< the CRS of the points (the file carries none)
     DuplicateRule duplicates = DuplicateRule::first;
-    /// Hard 3-D breakline, boundary and hole files (roles breaklines, boundary, holes), read
-    /// whole by every rank.
+    /// Breakline, soft breakline, boundary and hole files (roles breaklines, soft_breaklines,
+    /// boundary, holes), read whole by every rank.
     std::vector<io::InputFile> lines;
     double z_tolerance = TriangulateOptions{}.z_tolerance;  ///< at breakline crossings
     double max_edge = 0.0;  ///< border triangles with longer unconstrained edges peeled; 0: none

@@ -1,17 +1,16 @@
 // SPDX-License-Identifier: MIT
 //
-// Hard breaklines in a distributed run. The lines are few against the points, so every rank
-// reads them whole (departure from R-D2: no feature ranges) and computes the same things: the
-// heights of 2-D vertices from the survey points at their positions (each rank looks in its run
-// of the input, the lowest rank's find wins: the serial first point), the
-// serial combined order (add_lines), and after the distributed duplicate merge the serial
-// segments in vertex numbers. The split pre-pass (split_segments, docs/algorithms/cdt.md) then
-// runs on every rank over the line vertices alone, renumbered monotonically: its decisions read
-// coordinates and segment indices only, except that a crossing falling exactly on an existing
-// vertex becomes that vertex; line vertices are in the copy, and survey points that crossings
-// land on (which only their ranks know) are looked up on all ranks and added, the split run
-// again, until none lands on a new one. Crossing vertices are numbered after every merged
-// vertex, in pair order, as serially.
+// Breaklines (hard and soft), boundaries and holes in a distributed run. The lines are few against
+// the points, so every rank reads them whole (departure from R-D2: no feature ranges) and computes
+// the same things: the heights of 2-D vertices from the survey points at their positions (each rank
+// looks in its run of the input, the lowest rank's find wins: the serial first point), the serial
+// combined order (add_lines), and after the distributed duplicate merge the serial segments in
+// vertex numbers. The split pre-pass (split_segments, docs/algorithms/cdt.md) then runs on every
+// rank over the line vertices alone, renumbered monotonically: its decisions read coordinates and
+// segment indices only, except that a crossing falling exactly on an existing vertex becomes that
+// vertex; line vertices are in the copy, and survey points that crossings land on (which only their
+// ranks know) are looked up on all ranks and added, the split run again, until none lands on a new
+// one. Crossing vertices are numbered after every merged vertex, in pair order, as serially.
 #include "products/detail/distributed_lines.hpp"
 
 #include <algorithm>
@@ -33,6 +32,7 @@ namespace {
 struct NumberedPoint {
     std::uint64_t id;
     Point3 p;
+    std::uint64_t z_known;  ///< 0 for a soft line's vertex without a height yet
 };
 
 std::pair<std::uint64_t, std::uint64_t> key(double x, double y) {
@@ -55,10 +55,10 @@ TerrainInput read_distributed_lines(const DistributedSource& source, const std::
     load.read = source.read;
     load.crs = {source.default_crs, crs_wkt};
     TerrainInput t = io::load_inputs(load).terrain;
-    if (!t.points.empty() || !t.soft_breaklines.empty()) {
+    if (!t.points.empty()) {
         throw UsageError(
-            "a distributed run takes lines only from breakline, boundary and hole files (no "
-            "points or soft lines in them yet)");
+            "a distributed run takes lines only from breakline, soft breakline, boundary and "
+            "hole files (no points in them yet)");
     }
     return t;
 }
@@ -68,7 +68,8 @@ void distributed_line_heights(dist::Comm& comm,
                               TerrainInput& lines) {
     // The positions of the vertices without a height, each once; every rank holds the lines.
     std::unordered_map<std::pair<std::uint64_t, std::uint64_t>, std::size_t, KeyHash> slot;
-    for (const auto* kind : {&lines.breaklines, &lines.boundaries, &lines.holes}) {
+    for (const auto* kind :
+         {&lines.breaklines, &lines.boundaries, &lines.holes, &lines.soft_breaklines}) {
         for (const Polyline& line : *kind) {
             for (const Point3& p : line.points) {
                 if (std::isnan(p.z)) slot.emplace(key(p.x, p.y), slot.size());
@@ -151,6 +152,7 @@ PlacedLines place_lines(dist::Comm& comm,
     // rounds: a crossing that lands exactly on a survey point becomes that point serially, so
     // the point joins the copy and the split runs again, until no new crossing lands on one.
     ::dtm::detail::MergedInput in;
+    std::vector<bool> known_before;  // of the split's vertices, as merged
     for (int round = 0;; ++round) {
         if (round == 16) {
             throw Error("breaklines: crossings keep landing on survey points after 16 rounds");
@@ -158,15 +160,20 @@ PlacedLines place_lines(dist::Comm& comm,
         // Kept positions and heights (after the duplicate rule), from the ranks holding them.
         std::vector<NumberedPoint> mine;
         for (const dist::Vertex& v : merged.vertices) {
-            if (std::binary_search(used.begin(), used.end(), v.id)) mine.push_back({v.id, v.p});
+            if (std::binary_search(used.begin(), used.end(), v.id)) {
+                mine.push_back({v.id, v.p, v.z_known ? 1U : 0U});
+            }
         }
         std::vector<NumberedPoint> kept = dist::concatenated<NumberedPoint>(
             comm.allgatherv(dist::to_bytes(std::span<const NumberedPoint>(mine))));
         std::sort(kept.begin(), kept.end(),
                   [](const NumberedPoint& a, const NumberedPoint& b) { return a.id < b.id; });
         in = {};
-        for (const NumberedPoint& k : kept) in.vertices.push_back(k.p);
-        in.z_known.assign(in.vertices.size(), true);
+        for (const NumberedPoint& k : kept) {
+            in.vertices.push_back(k.p);
+            in.z_known.push_back(k.z_known != 0);
+        }
+        known_before = in.z_known;
         const auto compact = [&](std::uint64_t v) {
             return static_cast<VertexIndex>(std::lower_bound(used.begin(), used.end(), v) -
                                             used.begin());
@@ -200,11 +207,23 @@ PlacedLines place_lines(dist::Comm& comm,
     const std::size_t first_crossing = used.size();
     out.crossings = in.vertices.size() - first_crossing;
 
+    // A soft line's vertex on a hard segment took the segment's height in the split: its owner
+    // keeps it.
+    for (std::size_t v = 0; v < first_crossing; ++v) {
+        if (known_before[v] || !in.z_known[v]) continue;
+        const std::uint64_t id = used[v];
+        if (id >= merged.first_vertex && id - merged.first_vertex < merged.vertices.size()) {
+            dist::Vertex& kept = merged.vertices[id - merged.first_vertex];
+            kept.p.z = in.vertices[v].z;
+            kept.z_known = true;
+        }
+    }
     const std::uint64_t first_new = merged.total_vertices;
     if (comm.rank() == last) {
         for (std::size_t v = first_crossing; v < in.vertices.size(); ++v) {
-            merged.vertices.push_back(
-                {in.vertices[v], (first_new + (v - first_crossing)) & dist::vertex_id_bits, true});
+            merged.vertices.push_back({in.vertices[v],
+                                       (first_new + (v - first_crossing)) & dist::vertex_id_bits,
+                                       static_cast<bool>(in.z_known[v])});
         }
     }
     merged.total_vertices += out.crossings;

@@ -23,9 +23,9 @@ struct DistributedLines {
     std::vector<Point2> hole_seeds;  ///< points of the hole files
 };
 
-/// Every rank: the breakline, boundary and hole files read by the serial readers into @p crs_wkt
-/// (the points' CRS; empty: as they come). @throws InputError (the readers' messages);
-/// UsageError for points or soft lines in those files (not taken by a distributed run yet)
+/// Every rank: the breakline, soft breakline, boundary and hole files read by the serial readers
+/// into @p crs_wkt (the points' CRS; empty: as they come). @throws InputError (the readers'
+/// messages); UsageError for points in those files (not taken by a distributed run yet)
 [[nodiscard]] TerrainInput read_distributed_lines(const DistributedSource& source,
                                                   const std::string& crs_wkt);
 

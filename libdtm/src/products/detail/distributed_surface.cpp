@@ -129,6 +129,12 @@ DistributedSurface distributed_surface(dist::Comm& comm,
     std::vector<std::uint64_t>().swap(out.merged.vertex_of_input);  // the lines were its last use
     out.segments = placed.segments.size();
     out.crossings = placed.crossings;
+    std::int64_t unknown = 0;  // soft breakline vertices without heights: a first surface
+    for (const dist::Vertex& v : out.merged.vertices) unknown += v.z_known ? 0 : 1;
+    if (comm.allreduce(unknown, dist::Reduce::sum) > 0) {
+        soft_heights_from_surface(comm, out.merged, placed.segments, rest.sub(0.25, 0.5));
+        rest = rest.sub(0.5, 1.0);
+    }
     out.line_vertices = lines.points.size();  // every rank holds the lines
     out.points += out.line_vertices;
     lines = {};
