@@ -36,6 +36,18 @@ def write_points(path, n, bad_line=None):
             out.write("P-bad,-750000.25,no-number,251\n")
 
 
+def same_ply(tmp, label, points, args):
+    """`dtm tin POINTS ARGS` on one process and under mpirun: both succeed, same PLY bytes."""
+    serial_ply, dist_ply = os.path.join(tmp, "serial-x.ply"), os.path.join(tmp, "dist-x.ply")
+    serial = run(["tin", points, "-o", serial_ply] + args, False)
+    dist = run(["tin", points, "-o", dist_ply] + args, True)
+    check(serial.returncode == 0 and dist.returncode == 0,
+          f"{label}: exit {serial.returncode} / {dist.returncode}: {serial.stderr} {dist.stderr}")
+    if serial.returncode == 0 and dist.returncode == 0:
+        with open(serial_ply, "rb") as a, open(dist_ply, "rb") as b:
+            check(a.read() == b.read(), f"{label}: the PLY differs from the serial one")
+
+
 with tempfile.TemporaryDirectory() as tmp:
     points = os.path.join(tmp, "points.csv")
     write_points(points, 20000)
@@ -80,13 +92,7 @@ with tempfile.TemporaryDirectory() as tmp:
             r = rows[k * (len(rows) - 1) // 8]
             out.write(f"1,{r[1]},{r[2]}\n")
     two_d = ["--breaklines", lines2d, "--crs", "EPSG:5514", "--duplicates", "mean", "-q"]
-    serial = run(["tin", points, "-o", os.path.join(tmp, "serial-2d.ply")] + two_d, False)
-    dist = run(["tin", points, "-o", os.path.join(tmp, "dist-2d.ply")] + two_d, True)
-    check(serial.returncode == 0 and dist.returncode == 0,
-          f"2-D breakline: exit {serial.returncode} / {dist.returncode}: {serial.stderr} {dist.stderr}")
-    if serial.returncode == 0 and dist.returncode == 0:
-        with open(os.path.join(tmp, "serial-2d.ply"), "rb") as a, open(os.path.join(tmp, "dist-2d.ply"), "rb") as b:
-            check(a.read() == b.read(), "2-D breakline: the PLY differs from the serial one")
+    same_ply(tmp, "2-D breakline", points, two_d)
     # A 2-D boundary off the survey points, partly beyond their hull: heights from a first
     # surface of the points and the breakline (nearest vertex beyond the hull).
     ring2d = os.path.join(tmp, "ring2d.csv")
@@ -102,21 +108,8 @@ with tempfile.TemporaryDirectory() as tmp:
         out.write("shapeid,x,y\n1,-751990.5,-1051000.25\n1,-750010.5,-1050990.75\n"
                   "2,-751003.5,-1051990.5\n2,-750997.25,-1050010.5\n")
     soft = ["--soft-breaklines", soft2d]
-    serial = run(["tin", points, "-o", os.path.join(tmp, "serial-s.ply")] + two_d + soft, False)
-    dist = run(["tin", points, "-o", os.path.join(tmp, "dist-s.ply")] + two_d + soft, True)
-    check(serial.returncode == 0 and dist.returncode == 0,
-          f"soft breaklines: exit {serial.returncode} / {dist.returncode}: {serial.stderr} {dist.stderr}")
-    if serial.returncode == 0 and dist.returncode == 0:
-        with open(os.path.join(tmp, "serial-s.ply"), "rb") as a, open(os.path.join(tmp, "dist-s.ply"), "rb") as b:
-            check(a.read() == b.read(), "soft breaklines: the PLY differs from the serial one")
-    two_d += ["--boundary", ring2d]
-    serial = run(["tin", points, "-o", os.path.join(tmp, "serial-r2d.ply")] + two_d, False)
-    dist = run(["tin", points, "-o", os.path.join(tmp, "dist-r2d.ply")] + two_d, True)
-    check(serial.returncode == 0 and dist.returncode == 0,
-          f"2-D boundary: exit {serial.returncode} / {dist.returncode}: {serial.stderr} {dist.stderr}")
-    if serial.returncode == 0 and dist.returncode == 0:
-        with open(os.path.join(tmp, "serial-r2d.ply"), "rb") as a, open(os.path.join(tmp, "dist-r2d.ply"), "rb") as b:
-            check(a.read() == b.read(), "2-D boundary: the PLY differs from the serial one")
+    same_ply(tmp, "soft breaklines", points, two_d + soft)
+    same_ply(tmp, "2-D boundary", points, two_d + ["--boundary", ring2d])
 
     boundary, hole = os.path.join(tmp, "boundary.csv"), os.path.join(tmp, "hole.csv")
     write_ring(boundary, -751000, -1051000, 880, 262)

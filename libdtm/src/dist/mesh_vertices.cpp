@@ -91,6 +91,19 @@ std::uint64_t serial_face(std::uint64_t slot,
     return ghosts[slot - real - between];
 }
 
+Tin surface_tin(const SurfaceMesh& mesh) {
+    Tin tin;
+    tin.vertices.reserve(mesh.vertices.size());
+    for (const SurfaceVertex& v : mesh.vertices) tin.vertices.push_back(v.p);
+    tin.triangles.reserve(mesh.faces.size());
+    for (const SurfaceFace& f : mesh.faces) {
+        Triangle t;
+        t.v = {f.v[0], f.v[1], f.v[2]};
+        tin.triangles.push_back(t);
+    }
+    return tin;
+}
+
 namespace {
 
 /// surface_mesh(); with @p release, the kernel's triangles (and their bits) are freed once the

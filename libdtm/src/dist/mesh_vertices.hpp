@@ -15,6 +15,7 @@
 
 #include "dist/kernel.hpp"
 #include "dtm/core/point.hpp"
+#include "dtm/core/tin.hpp"
 #include "dtm/dist/duplicates.hpp"
 
 namespace dtm::dist {
@@ -77,6 +78,9 @@ struct SurfaceMeshOptions {
     /// the tiled TIN holds each vertex of the TIN on its kernel owner's tile).
     bool every_own_vertex = false;
 };
+
+/// @p mesh as a Tin of its own: vertices in ascending number, the faces' corners, no links.
+[[nodiscard]] Tin surface_tin(const SurfaceMesh& mesh);
 
 /// Collective: this rank's real triangles (in slot order) with their vertices as the merge keeps
 /// them (x and y from the kernel's positions, z asked of the vertices' owners in @p merged).

@@ -86,20 +86,6 @@ private:
     std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
 
-/// Rank r's triangles as a Tin of their own (vertices in number order, as the mesh has them).
-Tin piece_tin(const dist::SurfaceMesh& mine) {
-    Tin tin;
-    tin.vertices.reserve(mine.vertices.size());
-    for (const dist::SurfaceVertex& v : mine.vertices) tin.vertices.push_back(v.p);
-    tin.triangles.reserve(mine.faces.size());
-    for (const dist::SurfaceFace& f : mine.faces) {
-        Triangle t;
-        for (int k = 0; k < 3; ++k) t.v[k] = static_cast<VertexIndex>(f.v[k]);
-        tin.triangles.push_back(t);
-    }
-    return tin;
-}
-
 /// surface-r-of-P.vtp on every rank with triangles, surface.pvtp over them (rank 0).
 std::vector<fs::path> write_vtk_pieces(dist::Comm& comm,
                                        SharedStaging& out,
@@ -117,8 +103,8 @@ std::vector<fs::path> write_vtk_pieces(dist::Comm& comm,
     detail::on_ranks(comm, !mine.faces.empty(), [&] {
         io::TinWriteOptions write;
         write.crs_wkt = crs_wkt;
-        io::write_vtp(piece_tin(mine), out.add(detail::piece_path("surface", rank, ranks, "vtp")),
-                      write);
+        io::write_vtp(dist::surface_tin(mine),
+                      out.add(detail::piece_path("surface", rank, ranks, "vtp")), write);
     });
     detail::on_ranks(comm, rank == 0, [&] { io::write_pvtp(out.add("surface.pvtp"), pieces); });
     return pieces;

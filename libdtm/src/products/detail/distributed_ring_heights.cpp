@@ -37,26 +37,13 @@ struct Sample {
     double nearest_z = 0.0;
 };
 
-Tin tin_of(const dist::SurfaceMesh& mesh) {
-    Tin tin;
-    tin.vertices.reserve(mesh.vertices.size());
-    for (const dist::SurfaceVertex& v : mesh.vertices) tin.vertices.push_back(v.p);
-    tin.triangles.reserve(mesh.faces.size());
-    for (const dist::SurfaceFace& f : mesh.faces) {
-        Triangle t;
-        t.v = {f.v[0], f.v[1], f.v[2]};
-        tin.triangles.push_back(t);
-    }
-    link_neighbours(tin);
-    return tin;
-}
-
 }  // namespace
 
 std::vector<double> heights_on_surface(dist::Comm& comm,
                                        const dist::SurfaceMesh& mine,
                                        std::span<const Point2> at) {
-    const Tin tin = tin_of(mine);
+    Tin tin = dist::surface_tin(mine);
+    link_neighbours(tin);  // the sampler walks them
     const SurfaceSampler sampler(tin);
     SurfaceSampler::Cursor cursor;
     std::vector<Sample> here(at.size());
