@@ -24,9 +24,10 @@ void set_distributed_comm(dist::Comm* comm) noexcept;
 /// a machine do not oversubscribe it (`--threads` may lower it further, not raise it).
 void share_cores_among_local_ranks();
 
-/// What a distributed run covers of the inputs and TIN options (one text point list and hard
-/// breakline files, the constrained Delaunay TIN without domain or optimisation). @throws
-/// UsageError "COMMAND: a distributed run (mpirun) does not take ... yet"
+/// What a distributed run covers of the inputs and TIN options (one text point list or OGR point
+/// source; breakline, soft breakline, boundary and hole files; the constrained Delaunay TIN with
+/// its domain and `max_edge`, without `snap`, optimisation, flat areas, CRS change or DEM
+/// thinning). @throws UsageError "COMMAND: a distributed run (mpirun) does not take ... yet"
 void check_distributed_input(const char* command,
                              const InputArgs& in,
                              const TriangulateOptions& triangulate);

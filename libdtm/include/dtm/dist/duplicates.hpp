@@ -59,6 +59,12 @@ struct MergedShare {
     [[nodiscard]] double z(std::size_t i) const {
         return vertices.empty() ? heights[i] : vertices[i].p.z;
     }
+    /// The kept vertex numbered @p number when this rank holds it (before keep_heights()),
+    /// else nullptr.
+    [[nodiscard]] Vertex* kept(std::uint64_t number) noexcept {
+        if (number < first_vertex || number - first_vertex >= vertices.size()) return nullptr;
+        return &vertices[number - first_vertex];
+    }
 };
 
 /// Collective: every point goes to the rank of a hash of its exact coordinates (-0 as 0), which

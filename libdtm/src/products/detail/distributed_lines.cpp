@@ -211,11 +211,9 @@ PlacedLines place_lines(dist::Comm& comm,
     // keeps it.
     for (std::size_t v = 0; v < first_crossing; ++v) {
         if (known_before[v] || !in.z_known[v]) continue;
-        const std::uint64_t id = used[v];
-        if (id >= merged.first_vertex && id - merged.first_vertex < merged.vertices.size()) {
-            dist::Vertex& kept = merged.vertices[id - merged.first_vertex];
-            kept.p.z = in.vertices[v].z;
-            kept.z_known = true;
+        if (dist::Vertex* kept = merged.kept(used[v])) {
+            kept->p.z = in.vertices[v].z;
+            kept->z_known = true;
         }
     }
     const std::uint64_t first_new = merged.total_vertices;

@@ -163,12 +163,10 @@ void soft_heights_from_surface(dist::Comm& comm,
     for (const Unknown& u : all) at.push_back(u.at);
     const std::vector<double> z = heights_on_surface(comm, mine, at);
     for (std::size_t i = 0; i < all.size(); ++i) {
-        const std::uint64_t id = all[i].id;
-        if (id < merged.first_vertex || id - merged.first_vertex >= merged.vertices.size())
-            continue;
-        dist::Vertex& v = merged.vertices[id - merged.first_vertex];
-        v.p.z = z[i];
-        v.z_known = true;
+        if (dist::Vertex* v = merged.kept(all[i].id)) {
+            v->p.z = z[i];
+            v->z_known = true;
+        }
     }
 }
 

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cstring>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -35,7 +36,7 @@ Outgoing outgoing_lists(std::size_t ranks,
     constexpr std::size_t none = ~std::size_t{0};
     std::vector<std::size_t> last_rank(surface.vertices.size());
     std::vector<std::uint32_t> index_there(surface.vertices.size(), 0);
-    std::vector<std::size_t> vertex_count(ranks), face_count(ranks);
+    std::vector<std::size_t> face_count(ranks);
     Outgoing out{std::vector<dist::Bytes>(ranks), std::vector<dist::Bytes>(ranks)};
     for (const bool fill : {false, true}) {
         std::fill(last_rank.begin(), last_rank.end(), none);
@@ -52,8 +53,11 @@ Outgoing outgoing_lists(std::size_t ranks,
                     }
                     v = index_there[v];
                 }
-                if (fill) dist::append_value(out.faces[r], there);
-                ++face_count[r];
+                if (fill) {
+                    dist::append_value(out.faces[r], there);
+                } else {
+                    ++face_count[r];
+                }
             }
         }
         if (fill) break;
@@ -101,8 +105,7 @@ Tin route_faces(dist::Comm& comm,
     }
     offset.push_back(order.size());
     std::sort(order.begin(), order.end(), [](const Received& a, const Received& b) {
-        return a.id < b.id || (a.id == b.id && (a.source < b.source ||
-                                                (a.source == b.source && a.index < b.index)));
+        return std::tie(a.id, a.source, a.index) < std::tie(b.id, b.source, b.index);
     });
     Tin tin;
     std::vector<VertexIndex> vertex_of(order.size());
