@@ -146,8 +146,9 @@ int run_grid(const GridArgs& args) {
     if (surface.contour_flats && !args.quiet) print_contour_flats(*surface.contour_flats, "grid");
     if (surface.dem && !args.quiet) print_dem_report(*surface.dem, "grid");
     options.crease_at_breaklines = !surface.contour_input;
-    const products::DemResult dem = products::write_dem(surface.result.tin, inputs.crs_wkt, options,
-                                                        args.output, progress.sub(0.5, 1.0));
+    const products::DemResult dem =
+        products::write_dem(std::move(surface.result.tin), inputs.crs_wkt, options, args.output,
+                            progress.sub(0.5, 1.0));
     print_summary(dem.spec, dem.filled, args.output);
     return 0;
 }

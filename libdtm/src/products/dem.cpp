@@ -5,6 +5,7 @@
 
 #include <utility>
 
+#include "algo/detail/raster_vertex_order.hpp"
 #include "dtm/algo/rasterize.hpp"
 #include "dtm/core/error.hpp"
 #include "dtm/io/extension.hpp"
@@ -96,6 +97,18 @@ DemResult write_dem(const Tin& tin,
     }
     progress.report(1.0, "done");
     return result;
+}
+
+DemResult write_dem(Tin&& tin,
+                    const std::string& crs_wkt,
+                    const DemOptions& options,
+                    const std::filesystem::path& output,
+                    const Progress& progress) {
+    if (options.interpolation == Interpolation::linear && !detail::has_coherent_vertices(tin)) {
+        detail::make_vertices_coherent(tin);  // rasterize then reads it without a copy
+    }
+    const Tin& owned = tin;
+    return write_dem(owned, crs_wkt, options, output, progress);
 }
 
 }  // namespace dtm::products

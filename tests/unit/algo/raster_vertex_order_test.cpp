@@ -71,12 +71,18 @@ TEST(CoherentVertices, EqualsOneSequentialPassOnEveryThreadCount) {
     }
 }
 
-TEST(CoherentVertices, InPlaceEqualsTheCopyAndIsRecognised) {
-    Tin tin = shuffled_tin();
-    const Tin want = sequential_reference(tin);
-    EXPECT_FALSE(has_coherent_vertices(tin));
+TEST(CoherentVertices, InPlaceEqualsOneSequentialPassAndIsRecognised) {
+    const Tin shuffled = shuffled_tin();
+    const Tin want = sequential_reference(shuffled);
+    EXPECT_FALSE(has_coherent_vertices(shuffled));
+    for (const int threads : {1, 2}) {
+        SCOPED_TRACE(std::to_string(threads) + " threads");
+        Tin copy = shuffled;
+        tbb::task_arena(threads).execute([&] { make_vertices_coherent(copy); });
+        expect_same(copy, want);
+    }
+    Tin tin = shuffled;
     make_vertices_coherent(tin);
-    expect_same(tin, want);
     EXPECT_TRUE(has_coherent_vertices(tin));
     // One swapped pair of first uses is enough to need the renumbering again.
     std::swap(tin.triangles[0].v[0], tin.triangles[0].v[1]);

@@ -19,8 +19,9 @@ namespace dtm::detail {
 /// Whether @p tin's vertices are already in first-use order (no copy needed); no memory.
 [[nodiscard]] bool has_coherent_vertices(const Tin& tin) noexcept;
 
-/// The same renumbering in place, in one sequential pass (4 bytes a vertex beside the new
-/// vertex array instead of a whole copy): for a TIN that is its owner's to change.
+/// The same renumbering in place: a new vertex array, the triangles renumbered where they are
+/// (36 bytes a vertex while it runs instead of a whole copy): for a TIN that is its owner's to
+/// change.
 void make_vertices_coherent(Tin& tin);
 
 }  // namespace dtm::detail
