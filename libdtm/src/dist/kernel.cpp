@@ -24,12 +24,9 @@
 #include <algorithm>
 #include <map>
 
-#if defined(__linux__)
-#include <sys/mman.h>
-#endif
-
 #include "algo/detail/delaunay_dc.hpp"
 #include "dist/band_merge.hpp"
+#include "dist/drop_pages.hpp"
 #include "dist/tree.hpp"
 #include "dtm/core/error.hpp"
 
@@ -57,20 +54,6 @@ struct HullNote {
 };
 
 using NodeKey = std::pair<std::uint64_t, std::uint64_t>;
-
-/// Gives the whole pages inside [from, to) back to the system: their contents are not read
-/// again (they read as zeros if they are).
-void drop_pages(const void* from, const void* to) {
-#if defined(__linux__)
-    constexpr std::uintptr_t page = 4096;
-    const std::uintptr_t first = (reinterpret_cast<std::uintptr_t>(from) + page - 1) / page * page;
-    const std::uintptr_t last = reinterpret_cast<std::uintptr_t>(to) / page * page;
-    if (last > first) madvise(reinterpret_cast<void*>(first), last - first, MADV_DONTNEED);
-#else
-    (void)from;
-    (void)to;
-#endif
-}
 
 /// Who owns which position (leaves in tree order, contiguous runs per rank).
 class Owners {

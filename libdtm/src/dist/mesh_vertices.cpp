@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "dist/domain.hpp"
+#include "dist/drop_pages.hpp"
 
 namespace dtm::dist {
 
@@ -106,13 +107,14 @@ Tin surface_tin(const SurfaceMesh& mesh) {
 
 namespace {
 
-/// surface_mesh(); with @p release, the kernel's triangles (and their bits) are freed once the
-/// faces are listed.
+/// surface_mesh(); with @p release (the kernel itself, given up), the kernel's arrays are freed
+/// as soon as they are read no more: the triangles' pages behind the listing of the faces, the
+/// points once the vertices hold their coordinates.
 SurfaceMesh faces_and_vertices(Comm& comm,
                                const MergedShare& merged,
                                const DistributedMesh& k,
                                const SurfaceMeshOptions& options,
-                               LocalMesh* release) {
+                               DistributedMesh* release) {
     const LocalMesh& mesh = k.mesh;
     const auto foreign = foreign_vertex_numbers(comm, k);
     const auto ghosts = all_ghost_slots(comm, mesh);
@@ -135,6 +137,9 @@ SurfaceMesh faces_and_vertices(Comm& comm,
         comm.allreduce(static_cast<std::int64_t>(mesh.tris.size()), Reduce::sum));
     const std::uint64_t real = slots - ghosts.size();
     const FaceNumbers kept = trimmed ? kept_face_numbers(comm, mesh, ghosts) : FaceNumbers{};
+    if (release != nullptr) {  // not read below
+        std::vector<std::array<std::uint8_t, 3>>().swap(release->mesh.bits);
+    }
     SurfaceMesh out;
     out.faces.reserve(mesh.tris.size());
     // Faces name the kernel's local vertices first; each used local vertex is then numbered
@@ -156,11 +161,15 @@ SurfaceMesh faces_and_vertices(Comm& comm,
             if (g.n[i] == global_ghost || outside(g.n[i] >> 2)) f.border |= 1U << ((i + 2) % 3);
         }
         out.faces.push_back(f);
+        // The slots behind are read no more: their pages go while the faces grow.
+        constexpr std::uint64_t drop_every = std::uint64_t{1} << 16;
+        if (release != nullptr && (s + 1) % drop_every == 0) {
+            drop_pages(mesh.tris.data(), mesh.tris.data() + s + 1);
+        }
     }
     if (release != nullptr) {
-        std::vector<Triangle>().swap(release->tris);
-        std::vector<std::array<std::uint8_t, 3>>().swap(release->bits);
-        std::vector<std::uint8_t>().swap(release->removed);
+        std::vector<Triangle>().swap(release->mesh.tris);
+        std::vector<std::uint8_t>().swap(release->mesh.removed);
     }
     // With every own vertex, the positions no triangle names come too.
     if (options.every_own_vertex) {
@@ -171,22 +180,31 @@ SurfaceMesh faces_and_vertices(Comm& comm,
         if (index_of[local] != unused) used.emplace_back(number(local), local);
     }
     std::sort(used.begin(), used.end());
-    std::vector<std::uint64_t> wanted;
-    wanted.reserve(used.size());
     out.vertices.reserve(used.size());
     for (const auto& [id, local] : used) {
-        if (wanted.empty() || wanted.back() != id) {
-            wanted.push_back(id);
+        if (out.vertices.empty() || out.vertices.back().id != id) {
             const XY xy = mesh.point(mesh.global_vertex(local));
             out.vertices.push_back({id, {xy.x, xy.y, 0.0}});
         }
-        index_of[local] = static_cast<std::uint32_t>(wanted.size() - 1);
+        index_of[local] = static_cast<std::uint32_t>(out.vertices.size() - 1);
     }
     std::vector<std::pair<std::uint64_t, std::uint32_t>>().swap(used);
     for (SurfaceFace& f : out.faces) {
         for (std::uint32_t& v : f.v) v = index_of[v];
     }
     std::vector<std::uint32_t>().swap(index_of);
+    if (release != nullptr) {  // the kernel's points are read no more
+        LocalMesh& m = release->mesh;
+        std::vector<XY>().swap(m.own_points);
+        std::vector<std::uint64_t>().swap(m.foreign_vertices);
+        std::vector<XY>().swap(m.foreign_xy);
+        std::unordered_map<std::uint64_t, std::uint32_t>().swap(m.foreign_index);
+        std::vector<std::uint64_t>().swap(m.foreign_edges);
+        std::vector<std::uint64_t>().swap(release->input_ids);
+    }
+    std::vector<std::uint64_t> wanted;  // the vertices' numbers, ascending
+    wanted.reserve(out.vertices.size());
+    for (const SurfaceVertex& v : out.vertices) wanted.push_back(v.id);
     // The heights from the vertices' owners in the merge.
     const RunOwners owners(comm, merged.first_vertex, merged.first_vertex + merged.count());
     const auto asked = ask_owners(comm, owners, wanted);
@@ -217,7 +235,7 @@ SurfaceMesh surface_mesh(Comm& comm,
                          DistributedMesh&& kernel,
                          const SurfaceMeshOptions& options) {
     DistributedMesh k = std::move(kernel);
-    return faces_and_vertices(comm, merged, k, options, &k.mesh);
+    return faces_and_vertices(comm, merged, k, options, &k);
 }
 
 void merged_vertex_runs(Comm& comm,

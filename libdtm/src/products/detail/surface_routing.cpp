@@ -6,8 +6,9 @@
 // (number, source, index), read in place from what it received, and, for contours, orders the
 // faces by their serial index, so the rebuilt Tin keeps the serial TIN's relative orders; for a
 // DEM the faces stay as received and the vertices take first-use order, the order rasterize
-// reads without a copy. A rank's peak is its faces and their outgoing lists, then what it
-// received and the Tin (docs/distributed.md, R-M1).
+// reads without a copy. A rank's peak is its vertices and their outgoing lists beside the faces
+// not yet listed (their pages go as the listing passes them), then what it received and the Tin
+// (docs/distributed.md, R-M1).
 #include "products/detail/surface_routing.hpp"
 
 #include <algorithm>
@@ -18,6 +19,7 @@
 #include <vector>
 
 #include "algo/detail/raster_vertex_order.hpp"
+#include "dist/drop_pages.hpp"
 
 namespace dtm::products::detail {
 
@@ -25,13 +27,14 @@ namespace {
 
 /// The per-destination lists of route_faces: vertices (each once per destination unless its
 /// faces alternate between destinations) and faces indexing them. Two passes over the faces,
-/// the first counting, so each list is allocated once at its size.
+/// the first counting, so each list is allocated once at its size; the second gives the pages
+/// of the faces it has passed back to the system (the faces are not read again).
 struct Outgoing {
     std::vector<dist::Bytes> vertices, faces;
 };
 
 Outgoing outgoing_lists(std::size_t ranks,
-                        const dist::SurfaceMesh& surface,
+                        dist::SurfaceMesh& surface,
                         const Destinations& destinations) {
     constexpr std::size_t none = ~std::size_t{0};
     std::vector<std::size_t> last_rank(surface.vertices.size());
@@ -41,7 +44,12 @@ Outgoing outgoing_lists(std::size_t ranks,
     for (const bool fill : {false, true}) {
         std::fill(last_rank.begin(), last_rank.end(), none);
         std::vector<std::uint32_t> sent(ranks, 0);  // vertices listed for each rank so far
-        for (const dist::SurfaceFace& f : surface.faces) {
+        for (std::size_t i = 0; i < surface.faces.size(); ++i) {
+            const dist::SurfaceFace& f = surface.faces[i];
+            constexpr std::size_t drop_every = std::size_t{1} << 16;
+            if (fill && i % drop_every == 0) {
+                dist::drop_pages(surface.faces.data(), surface.faces.data() + i);
+            }
             const RankRange to = destinations(f, surface.vertices);
             for (std::size_t r = to.first; r <= to.last && r < ranks; ++r) {
                 dist::SurfaceFace there = f;
