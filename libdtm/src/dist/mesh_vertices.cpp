@@ -142,8 +142,8 @@ SurfaceMesh faces_and_vertices(Comm& comm,
     }
     SurfaceMesh out;
     out.faces.reserve(mesh.tris.size());
-    // Faces name the kernel's local vertices first; each used local vertex is then numbered
-    // by one sort of (vertex number, local) pairs, 16 bytes a vertex (not 24 a corner).
+    // Faces name the kernel's local vertices first; the used local vertices are then numbered
+    // by one sort of the vertices themselves (below), not of a record per corner.
     const std::size_t local_count = mesh.own_points.size() + mesh.foreign_vertices.size();
     constexpr std::uint32_t unused = ~std::uint32_t{0};
     std::vector<std::uint32_t> index_of(local_count, unused);
@@ -175,24 +175,17 @@ SurfaceMesh faces_and_vertices(Comm& comm,
     if (options.every_own_vertex) {
         std::fill(index_of.begin(), index_of.begin() + std::ptrdiff_t(mesh.own_points.size()), 0);
     }
-    std::vector<std::pair<std::uint64_t, std::uint32_t>> used;  // (number, local), ascending
+    // Every used local vertex with its number and coordinates, p.z holding its local index (exact
+    // in a double) until the heights arrive; then the kernel's points can go, and one sort by
+    // (number, local) with repeats of a number merged gives the vertices in ascending number.
+    std::size_t used = 0;
+    for (std::uint32_t local = 0; local < local_count; ++local) used += index_of[local] != unused;
+    out.vertices.reserve(used);
     for (std::uint32_t local = 0; local < local_count; ++local) {
-        if (index_of[local] != unused) used.emplace_back(number(local), local);
+        if (index_of[local] == unused) continue;
+        const XY xy = mesh.point(mesh.global_vertex(local));
+        out.vertices.push_back({number(local), {xy.x, xy.y, static_cast<double>(local)}});
     }
-    std::sort(used.begin(), used.end());
-    out.vertices.reserve(used.size());
-    for (const auto& [id, local] : used) {
-        if (out.vertices.empty() || out.vertices.back().id != id) {
-            const XY xy = mesh.point(mesh.global_vertex(local));
-            out.vertices.push_back({id, {xy.x, xy.y, 0.0}});
-        }
-        index_of[local] = static_cast<std::uint32_t>(out.vertices.size() - 1);
-    }
-    std::vector<std::pair<std::uint64_t, std::uint32_t>>().swap(used);
-    for (SurfaceFace& f : out.faces) {
-        for (std::uint32_t& v : f.v) v = index_of[v];
-    }
-    std::vector<std::uint32_t>().swap(index_of);
     if (release != nullptr) {  // the kernel's points are read no more
         LocalMesh& m = release->mesh;
         std::vector<XY>().swap(m.own_points);
@@ -202,6 +195,23 @@ SurfaceMesh faces_and_vertices(Comm& comm,
         std::vector<std::uint64_t>().swap(m.foreign_edges);
         std::vector<std::uint64_t>().swap(release->input_ids);
     }
+    std::sort(out.vertices.begin(), out.vertices.end(),
+              [](const SurfaceVertex& a, const SurfaceVertex& b) {
+                  return a.id < b.id || (a.id == b.id && a.p.z < b.p.z);
+              });
+    std::size_t distinct = 0;
+    for (std::size_t i = 0; i < out.vertices.size(); ++i) {
+        const auto local = static_cast<std::uint32_t>(out.vertices[i].p.z);
+        if (distinct == 0 || out.vertices[distinct - 1].id != out.vertices[i].id) {
+            out.vertices[distinct++] = out.vertices[i];
+        }
+        index_of[local] = static_cast<std::uint32_t>(distinct - 1);
+    }
+    out.vertices.resize(distinct);
+    for (SurfaceFace& f : out.faces) {
+        for (std::uint32_t& v : f.v) v = index_of[v];
+    }
+    std::vector<std::uint32_t>().swap(index_of);
     std::vector<std::uint64_t> wanted;  // the vertices' numbers, ascending
     wanted.reserve(out.vertices.size());
     for (const SurfaceVertex& v : out.vertices) wanted.push_back(v.id);
