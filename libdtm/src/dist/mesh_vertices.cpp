@@ -212,22 +212,26 @@ SurfaceMesh faces_and_vertices(Comm& comm,
         for (std::uint32_t& v : f.v) v = index_of[v];
     }
     std::vector<std::uint32_t>().swap(index_of);
-    std::vector<std::uint64_t> wanted;  // the vertices' numbers, ascending
-    wanted.reserve(out.vertices.size());
-    for (const SurfaceVertex& v : out.vertices) wanted.push_back(v.id);
-    // The heights from the vertices' owners in the merge.
+    // The heights from the vertices' owners in the merge: each owner is asked for the numbers
+    // it holds, in ascending order, straight from the vertices (no list of them beside).
     const RunOwners owners(comm, merged.first_vertex, merged.first_vertex + merged.count());
-    const auto asked = ask_owners(comm, owners, wanted);
+    std::vector<Bytes> ask(static_cast<std::size_t>(comm.size()));
+    for (const SurfaceVertex& v : out.vertices) {
+        append_value(ask[static_cast<std::size_t>(owners.of(v.id))], v.id);
+    }
+    auto asked = comm.alltoallv(std::move(ask));
     std::vector<Bytes> answer(asked.size());
     for (std::size_t r = 0; r < asked.size(); ++r) {
+        answer[r].reserve(asked[r].size());  // a height (8 bytes) for each number (8 bytes)
         for (const std::uint64_t v : from_bytes<std::uint64_t>(asked[r])) {
             append_value(answer[r], merged.z(v - merged.first_vertex));
         }
+        Bytes().swap(asked[r]);
     }
-    // Answers come back in source-rank order, each in the asked (ascending) order: that is
-    // `wanted`'s order, since owners hold ascending runs.
+    // Answers come back in source-rank order, each in the asked (ascending) order: that is the
+    // vertices' order, since owners hold ascending runs.
     const auto heights = concatenated<double>(comm.alltoallv(std::move(answer)));
-    for (std::size_t w = 0; w < wanted.size(); ++w) out.vertices[w].p.z = heights[w];
+    for (std::size_t w = 0; w < out.vertices.size(); ++w) out.vertices[w].p.z = heights[w];
     return out;
 }
 
