@@ -6,6 +6,7 @@
 #include "dist/mesh_vertices.hpp"
 
 #include <algorithm>
+#include <ranges>
 #include <span>
 #include <unordered_set>
 #include <utility>
@@ -35,11 +36,10 @@ std::pair<int, std::uint64_t> RunOwners::locate(std::uint64_t number) const {
 
 namespace {
 
-/// Sends each owner the numbers it holds of @p wanted (sorted, unique) and returns, per
-/// source rank, the numbers it asked for.
-std::vector<Bytes> ask_owners(Comm& comm,
-                              const RunOwners& owners,
-                              const std::vector<std::uint64_t>& wanted) {
+/// Sends each owner the numbers it holds of @p wanted (sorted, unique; any range of numbers)
+/// and returns, per source rank, the numbers it asked for.
+template <std::ranges::input_range Numbers>
+std::vector<Bytes> ask_owners(Comm& comm, const RunOwners& owners, Numbers&& wanted) {
     std::vector<Bytes> ask(static_cast<std::size_t>(comm.size()));
     for (const std::uint64_t v : wanted)
         append_value(ask[static_cast<std::size_t>(owners.of(v))], v);
@@ -178,9 +178,8 @@ SurfaceMesh faces_and_vertices(Comm& comm,
     // Every used local vertex with its number and coordinates, p.z holding its local index (exact
     // in a double) until the heights arrive; then the kernel's points can go, and one sort by
     // (number, local) with repeats of a number merged gives the vertices in ascending number.
-    std::size_t used = 0;
-    for (std::uint32_t local = 0; local < local_count; ++local) used += index_of[local] != unused;
-    out.vertices.reserve(used);
+    out.vertices.reserve(local_count -
+                         static_cast<std::size_t>(std::ranges::count(index_of, unused)));
     for (std::uint32_t local = 0; local < local_count; ++local) {
         if (index_of[local] == unused) continue;
         const XY xy = mesh.point(mesh.global_vertex(local));
@@ -215,11 +214,7 @@ SurfaceMesh faces_and_vertices(Comm& comm,
     // The heights from the vertices' owners in the merge: each owner is asked for the numbers
     // it holds, in ascending order, straight from the vertices (no list of them beside).
     const RunOwners owners(comm, merged.first_vertex, merged.first_vertex + merged.count());
-    std::vector<Bytes> ask(static_cast<std::size_t>(comm.size()));
-    for (const SurfaceVertex& v : out.vertices) {
-        append_value(ask[static_cast<std::size_t>(owners.of(v.id))], v.id);
-    }
-    auto asked = comm.alltoallv(std::move(ask));
+    auto asked = ask_owners(comm, owners, std::views::transform(out.vertices, &SurfaceVertex::id));
     std::vector<Bytes> answer(asked.size());
     for (std::size_t r = 0; r < asked.size(); ++r) {
         answer[r].reserve(asked[r].size());  // a height (8 bytes) for each number (8 bytes)
