@@ -6,7 +6,7 @@
 #include "dist/mesh_vertices.hpp"
 
 #include <algorithm>
-#include <ranges>
+#include <functional>
 #include <span>
 #include <unordered_set>
 #include <utility>
@@ -36,13 +36,20 @@ std::pair<int, std::uint64_t> RunOwners::locate(std::uint64_t number) const {
 
 namespace {
 
-/// Sends each owner the numbers it holds of @p wanted (sorted, unique; any range of numbers)
-/// and returns, per source rank, the numbers it asked for.
-template <std::ranges::input_range Numbers>
-std::vector<Bytes> ask_owners(Comm& comm, const RunOwners& owners, Numbers&& wanted) {
+/// Sends each owner the numbers it holds of @p wanted (sorted, unique; the numbers are
+/// @p number of each element) and returns, per source rank, the numbers it asked for.
+/// (A projection rather than a transform view: clang 14, which builds the fuzzers, cannot
+/// compile libstdc++ 12's views.)
+template <class Range, class Number = std::identity>
+std::vector<Bytes> ask_owners(Comm& comm,
+                              const RunOwners& owners,
+                              const Range& wanted,
+                              Number number = {}) {
     std::vector<Bytes> ask(static_cast<std::size_t>(comm.size()));
-    for (const std::uint64_t v : wanted)
+    for (const auto& w : wanted) {
+        const std::uint64_t v = std::invoke(number, w);
         append_value(ask[static_cast<std::size_t>(owners.of(v))], v);
+    }
     return comm.alltoallv(std::move(ask));
 }
 
@@ -214,7 +221,7 @@ SurfaceMesh faces_and_vertices(Comm& comm,
     // The heights from the vertices' owners in the merge: each owner is asked for the numbers
     // it holds, in ascending order, straight from the vertices (no list of them beside).
     const RunOwners owners(comm, merged.first_vertex, merged.first_vertex + merged.count());
-    auto asked = ask_owners(comm, owners, std::views::transform(out.vertices, &SurfaceVertex::id));
+    auto asked = ask_owners(comm, owners, out.vertices, &SurfaceVertex::id);
     std::vector<Bytes> answer(asked.size());
     for (std::size_t r = 0; r < asked.size(); ++r) {
         answer[r].reserve(asked[r].size());  // a height (8 bytes) for each number (8 bytes)
