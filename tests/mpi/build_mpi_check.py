@@ -2,6 +2,7 @@
 # SPDX-License-Identifier: MIT
 """`mpirun -np P dtm build POINTS.csv -o OUT` against `dtm build` on one process (issue 18,
 R-E3 and R-P5): tin.ply byte for byte, dem.vrt the serial dem.tif cell for cell (GDAL XYZ),
+hillshade.vrt the serial hillshade.tif cell for cell,
 contours.vrt the serial contour layer line for line (OGR CSV), report.json's TIN, extent, z
 range, areas (exact sums), DEM grid and contour figures equal, surface.pvtp naming one VTK piece
 per rank whose triangles add up to the TIN's, dtm.qgs opening in the real QGIS (PyQGIS) with
@@ -92,6 +93,9 @@ with tempfile.TemporaryDirectory() as tmp:
         dem_a = text(["gdal_translate", "-q", "-of", "XYZ", os.path.join(serial_dir, "dem.tif"), "/vsistdout/"])
         dem_b = text(["gdal_translate", "-q", "-of", "XYZ", os.path.join(dist_dir, "dem.vrt"), "/vsistdout/"])
         check(dem_a.count("\n") > 1000 and dem_a == dem_b, f"{name}: dem.vrt differs from dem.tif")
+        hs_a = text(["gdal_translate", "-q", "-of", "XYZ", os.path.join(serial_dir, "hillshade.tif"), "/vsistdout/"])
+        hs_b = text(["gdal_translate", "-q", "-of", "XYZ", os.path.join(dist_dir, "hillshade.vrt"), "/vsistdout/"])
+        check(hs_a.count("\n") > 1000 and hs_a == hs_b, f"{name}: hillshade.vrt differs from hillshade.tif")
         layer = lambda path: text(["ogr2ogr", "-f", "GeoJSON", "/vsistdout/", path, "contours",
                                    "-lco", "COORDINATE_PRECISION=17", "-lco", "RFC7946=NO"])
         features = lambda t: [l for l in t.splitlines() if l.startswith('{ "type": "Feature"')]
@@ -117,7 +121,8 @@ with tempfile.TemporaryDirectory() as tmp:
         if qgis:
             opened = subprocess.run(["/usr/bin/python3", "-c", QGIS_OPEN, os.path.join(dist_dir, "dtm.qgs")],
                                     capture_output=True, text=True, env={**os.environ, "QT_QPA_PLATFORM": "offscreen"})
-            check(opened.returncode == 0 and "contours.vrt" in opened.stdout and "dem.vrt" in opened.stdout,
+            check(opened.returncode == 0 and "contours.vrt" in opened.stdout and "dem.vrt" in opened.stdout
+                  and "hillshade.vrt" in opened.stdout,
                   f"{name}: QGIS opens dtm.qgs: {opened.stdout} {opened.stderr[-500:]}")
         else:
             print("note: no PyQGIS at /usr/bin/python3: dtm.qgs not opened in QGIS")

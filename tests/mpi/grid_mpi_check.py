@@ -4,7 +4,8 @@
 process (issue 18, R-P3): the VRT over one GeoTIFF per rank has the serial DEM's cells bit for
 bit (both read by GDAL's gdal_translate as raw Float32), its geotransform and CRS; inputs: S-JTSK
 survey points with duplicates and a cocircular lattice whose vertices and edges fall on cell
-centres and whose rows the rank blocks cut. Usage: grid_mpi_check.py DTM MPIEXEC NP"""
+centres and whose rows the rank blocks cut; gdaldem's hillshade, slope and aspect of the tiled DEM equal
+the serial ones cell for cell. Usage: grid_mpi_check.py DTM MPIEXEC NP"""
 import os
 import random
 import subprocess
@@ -74,6 +75,30 @@ with tempfile.TemporaryDirectory() as tmp:
         check(a[1] == b[1], f"{name}: georeference differs: {a[1]} vs {b[1]}")
         tiles = [f for f in os.listdir(tmp) if f.startswith(f"dem-{len(name)}-") and f.endswith(".tif")]
         check(len(tiles) == ranks, f"{name}: {len(tiles)} tiles for {ranks} ranks")
+
+    # gdaldem's hillshade, slope and aspect of the tiled DEM: one GeoTIFF per rank from its rows
+    # and one more on each side, the serial derivative's cells (NoData holes and edges included).
+    name, points, options = cases[-1]
+    derived = [("hillshade", "--hillshade"), ("slope", "--slope"), ("aspect", "--aspect")]
+    serial = run(["grid", points, "-o", os.path.join(tmp, "s.tif"), "-q"] + options +
+                 [a for k, o in derived for a in (o, os.path.join(tmp, f"s-{k}.tif"))], False)
+    dist = run(["grid", points, "-o", os.path.join(tmp, "d.vrt"), "-q"] + options +
+               [a for k, o in derived for a in (o, os.path.join(tmp, f"d-{k}.vrt"))], True)
+    check(serial.returncode == 0 and dist.returncode == 0,
+          f"derivatives: exit {serial.returncode} / {dist.returncode}: {serial.stderr} {dist.stderr}")
+    if serial.returncode == 0 and dist.returncode == 0:
+        for k, _ in derived:
+            a, b = raw(os.path.join(tmp, f"s-{k}.tif")), raw(os.path.join(tmp, f"d-{k}.vrt"))
+            check(len(a[0]) > 0 and a[0] == b[0], f"{k}: the cells differ from the serial {k}")
+            check(a[1] == b[1], f"{k}: georeference or NoData differs: {a[1]} vs {b[1]}")
+            tiles = [f for f in os.listdir(tmp) if f.startswith(f"d-{k}-") and f.endswith(".tif")]
+            check(len(tiles) == ranks, f"{k}: {len(tiles)} tiles for {ranks} ranks")
+    if ranks > 1:
+        bad = run(["grid", survey, "--cell", "1", "-o", os.path.join(tmp, "e.vrt"),
+                   "--slope", os.path.join(tmp, "e.tif")], True)
+        check(bad.returncode == 2 and "give --slope NAME.vrt" in bad.stderr,
+              f"--slope .tif under mpirun: exit {bad.returncode}: {bad.stderr!r}")
+        check(not os.path.exists(os.path.join(tmp, "e.vrt")), "refused run wrote the DEM")
 
     if ranks > 1:
         refused = run(["grid", survey, "--cell", "1", "--interpolation", "cubic",

@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdlib>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <sstream>
@@ -262,38 +263,118 @@ void write_grid(const Grid& grid, const fs::path& target, const GridWriteOptions
     writer.commit();
 }
 
-void write_dem_derivative(const fs::path& dem, const fs::path& target, DemDerivative kind) {
-    const std::string driver = raster_driver_for(target);
-    GDALDatasetH src = GDALOpen(dem.c_str(), GA_ReadOnly);
-    if (src == nullptr) {
-        throw_gdal("cannot open " + dem.string());
-    }
-    AtomicOutput out(target);
+namespace {
+
+struct CloseDataset {
+    void operator()(void* ds) const { GDALClose(ds); }
+};
+using DatasetPtr = std::unique_ptr<void, CloseDataset>;
+
+const char* derivative_mode(DemDerivative kind) {
+    return kind == DemDerivative::hillshade ? "hillshade"
+           : kind == DemDerivative::slope   ? "slope"
+                                            : "aspect";
+}
+
+/// GDALDEMProcessing of @p src into @p path with @p driver (MEM: in memory, no path), edges
+/// computed; GeoTIFFs tiled and DEFLATE-compressed. @throws Error naming @p dem
+DatasetPtr dem_processing(const std::string& path,
+                          GDALDatasetH src,
+                          DemDerivative kind,
+                          const std::string& driver,
+                          const fs::path& dem) {
     Options args;
     args.arg("-of").arg(driver).arg("-compute_edges");
     if (driver == "GTiff") {
         args.arg("-co").arg("TILED=YES").arg("-co").arg("COMPRESS=DEFLATE");
     }
     GDALDEMProcessingOptions* options = GDALDEMProcessingOptionsNew(args.get(), nullptr);
-    const char* mode = kind == DemDerivative::hillshade ? "hillshade"
-                       : kind == DemDerivative::slope   ? "slope"
-                                                        : "aspect";
     int usage_error = FALSE;
     CPLErrorReset();
-    GDALDatasetH result =
-        GDALDEMProcessing(out.temp_path().c_str(), src, mode, nullptr, options, &usage_error);
+    DatasetPtr result(GDALDEMProcessing(path.c_str(), src, derivative_mode(kind), nullptr, options,
+                                        &usage_error));
     GDALDEMProcessingOptionsFree(options);
-    GDALClose(src);
-    if (result == nullptr) {
-        throw_gdal(std::string("cannot compute the ") + mode + " of " + dem.string());
+    if (!result) {
+        throw_gdal(std::string("cannot compute the ") + derivative_mode(kind) + " of " +
+                   dem.string());
     }
+    return result;
+}
+
+/// gdal_translate of the whole columns, rows [first, first + rows) of @p src into @p path.
+DatasetPtr row_window(const std::string& path,
+                      GDALDatasetH src,
+                      const char* driver,
+                      std::size_t first,
+                      std::size_t rows) {
+    Options args;
+    args.arg("-of").arg(driver).arg("-srcwin").arg("0").arg(std::to_string(first));
+    args.arg(std::to_string(GDALGetRasterXSize(src))).arg(std::to_string(rows));
+    if (std::string(driver) == "GTiff") {
+        args.arg("-co").arg("TILED=YES").arg("-co").arg("COMPRESS=DEFLATE");
+    }
+    GDALTranslateOptions* options = GDALTranslateOptionsNew(args.get(), nullptr);
+    CPLErrorReset();
+    DatasetPtr window(GDALTranslate(path.c_str(), src, options, nullptr));
+    GDALTranslateOptionsFree(options);
+    return window;
+}
+
+}  // namespace
+
+void write_dem_derivative(const fs::path& dem, const fs::path& target, DemDerivative kind) {
+    const std::string driver = raster_driver_for(target);
+    DatasetPtr src(GDALOpen(dem.c_str(), GA_ReadOnly));
+    if (!src) {
+        throw_gdal("cannot open " + dem.string());
+    }
+    AtomicOutput out(target);
+    DatasetPtr result = dem_processing(out.temp_path().string(), src.get(), kind, driver, dem);
+    src.reset();
     // GDAL reports a failed write (full disk, file-size limit) as an error and still returns
     // the dataset: the error, not the pointer, says whether the file is whole.
-    GDALClose(result);
+    result.reset();
     if (CPLGetLastErrorType() >= CE_Failure) {
-        throw_gdal(std::string("cannot write the ") + mode + " " + target.string());
+        throw_gdal(std::string("cannot write the ") + derivative_mode(kind) + " " +
+                   target.string());
     }
     if (driver == "GTiff") check_geotiff_blocks(out.temp_path(), target);
+    out.commit();
+}
+
+void write_dem_derivative_rows(const fs::path& dem,
+                               const fs::path& target,
+                               DemDerivative kind,
+                               std::size_t first_row,
+                               std::size_t rows) {
+    register_gdal();
+    DatasetPtr src(GDALOpen(dem.c_str(), GA_ReadOnly));
+    if (!src) {
+        throw_gdal("cannot open " + dem.string());
+    }
+    const auto height = static_cast<std::size_t>(GDALGetRasterYSize(src.get()));
+    if (rows == 0 || first_row > height || rows > height - first_row) {
+        throw Error("grid: rows " + std::to_string(first_row) + " + " + std::to_string(rows) +
+                    " are not within the " + std::to_string(height) + " rows of " + dem.string());
+    }
+    // Each cell of a derivative is a function of its 3 x 3 neighbourhood (the raster's edge
+    // rows extrapolated, -compute_edges): the rows and one more on each side that exists give
+    // the whole raster's cells.
+    const std::size_t lo = first_row > 0 ? first_row - 1 : 0;
+    const std::size_t hi = std::min(height, first_row + rows + 1);
+    const DatasetPtr window = row_window("", src.get(), "VRT", lo, hi - lo);
+    if (!window) throw_gdal("cannot read rows of " + dem.string());
+    const DatasetPtr derived = dem_processing("", window.get(), kind, "MEM", dem);
+    AtomicOutput out(target);
+    DatasetPtr tile =
+        row_window(out.temp_path().string(), derived.get(), "GTiff", first_row - lo, rows);
+    const bool failed = !tile || CPLGetLastErrorType() >= CE_Failure;
+    tile.reset();  // a failed write shows as an error once the file is closed, too
+    if (failed || CPLGetLastErrorType() >= CE_Failure) {
+        throw_gdal(std::string("cannot write the ") + derivative_mode(kind) + " " +
+                   target.string());
+    }
+    check_geotiff_blocks(out.temp_path(), target);
     out.commit();
 }
 
@@ -317,49 +398,68 @@ std::vector<std::string> grid_extensions() {
     return out;
 }
 
+namespace {
+
+/// A VRT of @p spec mosaicking @p tiles at their rows (integer offsets: no resampling); the
+/// band's type, and its NoData unless @p nodata is given, are the first tile's.
+void write_mosaic_vrt(const fs::path& target,
+                      const GridSpec& spec,
+                      const std::vector<DemTile>& tiles,
+                      const std::string& crs_wkt,
+                      std::optional<double> nodata) {
+    register_gdal();
+    std::vector<DatasetPtr> sources;
+    for (const DemTile& tile : tiles) {
+        // Opened by the path the VRT will name, relative to it when beside it.
+        sources.emplace_back(GDALOpen(tile.file.c_str(), GA_ReadOnly));
+        if (!sources.back()) throw_gdal("cannot open the tile " + tile.file.string());
+    }
+    GDALDataType type = GDT_Float32;
+    if (!sources.empty()) {
+        GDALRasterBandH first = GDALGetRasterBand(sources.front().get(), 1);
+        type = GDALGetRasterDataType(first);
+        int has = FALSE;
+        const double value = GDALGetRasterNoDataValue(first, &has);
+        if (!nodata && has) nodata = value;
+    }
+    AtomicOutput out(target);
+    DatasetPtr vrt(GDALCreate(GDALGetDriverByName("VRT"), out.temp_path().c_str(),
+                              static_cast<int>(spec.cols), static_cast<int>(spec.rows), 0, type,
+                              nullptr));
+    if (!vrt) throw_gdal("cannot create " + target.string());
+    double transform[6] = {spec.xmin, spec.cell, 0.0, spec.ymax, 0.0, -spec.cell};
+    GDALSetGeoTransform(vrt.get(), transform);
+    if (!crs_wkt.empty()) GDALSetProjection(vrt.get(), crs_wkt.c_str());
+    GDALAddBand(vrt.get(), type, nullptr);
+    GDALRasterBandH band = GDALGetRasterBand(vrt.get(), 1);
+    if (nodata) GDALSetRasterNoDataValue(band, *nodata);
+    for (std::size_t i = 0; i < tiles.size(); ++i) {
+        const int cols = static_cast<int>(spec.cols), rows = static_cast<int>(tiles[i].rows);
+        if (VRTAddSimpleSource(static_cast<VRTSourcedRasterBandH>(band),
+                               GDALGetRasterBand(sources[i].get(), 1), 0, 0, cols, rows, 0,
+                               static_cast<int>(tiles[i].first_row), cols, rows, "near",
+                               VRT_NODATA_UNSET) != CE_None) {
+            throw_gdal("cannot add " + tiles[i].file.string() + " to " + target.string());
+        }
+    }
+    vrt.reset();  // writes the VRT, before the sources are let go
+    out.commit();
+}
+
+}  // namespace
+
 void write_dem_vrt(const fs::path& target,
                    const GridSpec& spec,
                    const std::vector<DemTile>& tiles,
                    const GridWriteOptions& options) {
-    register_gdal();
-    AtomicOutput out(target);
-    GDALDatasetH vrt =
-        GDALCreate(GDALGetDriverByName("VRT"), out.temp_path().c_str(), static_cast<int>(spec.cols),
-                   static_cast<int>(spec.rows), 0, GDT_Float32, nullptr);
-    if (vrt == nullptr) {
-        throw_gdal("cannot create " + target.string());
-    }
-    std::vector<GDALDatasetH> sources;
-    const auto close_all = [&] {
-        GDALClose(vrt);  // writes the VRT, then lets go of the sources
-        for (GDALDatasetH ds : sources) GDALClose(ds);
-    };
-    try {
-        double transform[6] = {spec.xmin, spec.cell, 0.0, spec.ymax, 0.0, -spec.cell};
-        GDALSetGeoTransform(vrt, transform);
-        if (!options.crs_wkt.empty()) GDALSetProjection(vrt, options.crs_wkt.c_str());
-        GDALAddBand(vrt, GDT_Float32, nullptr);
-        GDALRasterBandH band = GDALGetRasterBand(vrt, 1);
-        GDALSetRasterNoDataValue(band, static_cast<double>(options.nodata));
-        for (const DemTile& tile : tiles) {
-            // Opened by the path the VRT will name, relative to it when beside it.
-            GDALDatasetH ds = GDALOpen(tile.file.c_str(), GA_ReadOnly);
-            if (ds == nullptr) throw_gdal("cannot open the DEM tile " + tile.file.string());
-            sources.push_back(ds);
-            const int cols = static_cast<int>(spec.cols), rows = static_cast<int>(tile.rows);
-            if (VRTAddSimpleSource(static_cast<VRTSourcedRasterBandH>(band),
-                                   GDALGetRasterBand(ds, 1), 0, 0, cols, rows, 0,
-                                   static_cast<int>(tile.first_row), cols, rows, "near",
-                                   VRT_NODATA_UNSET) != CE_None) {
-                throw_gdal("cannot add " + tile.file.string() + " to " + target.string());
-            }
-        }
-    } catch (...) {
-        close_all();
-        throw;
-    }
-    close_all();
-    out.commit();
+    write_mosaic_vrt(target, spec, tiles, options.crs_wkt, static_cast<double>(options.nodata));
+}
+
+void write_derivative_vrt(const fs::path& target,
+                          const GridSpec& spec,
+                          const std::vector<DemTile>& tiles,
+                          const std::string& crs_wkt) {
+    write_mosaic_vrt(target, spec, tiles, crs_wkt, std::nullopt);
 }
 
 }  // namespace dtm::io

@@ -9,7 +9,8 @@
 //      build takes them, exactly (detail/distributed_measures), and from them the serial rules'
 //      cell and interval;
 //   4. rank r's triangles as surface-r-of-P.vtp, rank 0 the surface.pvtp over them;
-//   5. the DEM tiles and dem.vrt, the contour pieces and contours.vrt (detail/distributed_pieces);
+//   5. the DEM tiles and dem.vrt, its hillshade tiles and hillshade.vrt, the contour pieces and
+//      contours.vrt (detail/distributed_pieces);
 //   6. rank 0: dtm.qgs over the VRTs, report.json, and the commit, once every rank is done.
 #include "dtm/products/distributed_build.hpp"
 
@@ -114,6 +115,7 @@ void write_project(SharedStaging& out, const BuildReport& report) {
     io::QgisProject project = detail::build_project(report.crs_wkt, report.surface, report);
     project.title = "dtm build (distributed)";
     project.dem = "dem.vrt";
+    project.hillshade = "hillshade.vrt";
     project.contours = "contours.vrt";
     io::write_qgis_project(project, out.add("dtm.qgs"));
 }
@@ -182,6 +184,13 @@ BuildReport distributed_build(dist::Comm& comm,
                                                      shows ? progress.sub(0.65, 0.8) : Progress{});
     for (const fs::path& tile : tiles.tiles) (void)out.add(tile.filename().string());
     clock.lap("dem");
+    comm.set_phase("hillshade");
+    for (const fs::path& tile :
+         detail::write_derivative_tiles(comm, report.dem, dem_vrt, out.add("hillshade.vrt"),
+                                        io::DemDerivative::hillshade, report.crs_wkt)) {
+        (void)out.add(tile.filename().string());
+    }
+    clock.lap("hillshade");
 
     const bool interval_given = options.interval > 0.0;
     ContourOptions contour;

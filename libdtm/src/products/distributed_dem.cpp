@@ -12,7 +12,10 @@
 //   4. each rank builds a Tin of what it received and rasterises its rows only (the row window
 //      of rasterize): a cell's value depends only on the triangle that owns its centre, never on
 //      the vertex numbers or triangle order, so it is the serial DEM's value;
-//   5. tiles are written (GridWriter, atomic), then rank 0 writes the VRT (write_dem_vrt).
+//   5. tiles are written (GridWriter, atomic), then rank 0 writes the VRT (write_dem_vrt);
+//   6. hillshade, slope and aspect (gdaldem) in the same row blocks, each rank reading its rows
+//      and one more on each side from the DEM's VRT (write_dem_derivative_rows), rank 0 writing
+//      a VRT over them: a derivative's cell depends on its 3 x 3 neighbourhood only.
 #include "dtm/products/distributed_dem.hpp"
 
 #include <algorithm>
@@ -150,6 +153,30 @@ DemTiles write_dem_tiles(dist::Comm& comm,
     return result;
 }
 
+std::vector<std::filesystem::path> write_derivative_tiles(dist::Comm& comm,
+                                                          const GridSpec& spec,
+                                                          const std::filesystem::path& dem,
+                                                          const std::filesystem::path& target,
+                                                          io::DemDerivative kind,
+                                                          const std::string& crs_wkt) {
+    const int rank = comm.rank(), ranks = comm.size();
+    const std::size_t first = block_start(spec, rank, ranks);
+    const std::size_t rows = block_start(spec, rank + 1, ranks) - first;
+    on_ranks(comm, rows > 0, [&] {
+        io::write_dem_derivative_rows(dem, dem_tile_path(target, rank, ranks), kind, first, rows);
+    });
+    std::vector<io::DemTile> tiles;
+    std::vector<std::filesystem::path> files;
+    for (int r = 0; r < ranks; ++r) {
+        const std::size_t lo = block_start(spec, r, ranks), hi = block_start(spec, r + 1, ranks);
+        if (hi == lo) continue;
+        tiles.push_back({dem_tile_path(target, r, ranks), lo, hi - lo});
+        files.push_back(tiles.back().file);
+    }
+    on_ranks(comm, rank == 0, [&] { io::write_derivative_vrt(target, spec, tiles, crs_wkt); });
+    return files;
+}
+
 }  // namespace detail
 
 DistributedDemResult distributed_dem(dist::Comm& comm,
@@ -172,6 +199,18 @@ DistributedDemResult distributed_dem(dist::Comm& comm,
                                 comm.rank() == 0 ? progress.sub(0.7, 0.95) : Progress{});
     result.filled = tiles.filled;
     result.tiles = std::move(tiles.tiles);
+    const std::pair<const std::filesystem::path*, io::DemDerivative> derived[] = {
+        {&options.hillshade, io::DemDerivative::hillshade},
+        {&options.slope, io::DemDerivative::slope},
+        {&options.aspect, io::DemDerivative::aspect}};
+    for (const auto& [file, kind] : derived) {
+        if (file->empty()) continue;
+        comm.set_phase("dem derivatives");
+        for (std::filesystem::path& tile : detail::write_derivative_tiles(
+                 comm, result.spec, options.output, *file, kind, write.crs_wkt)) {
+            result.derived_tiles.push_back(std::move(tile));
+        }
+    }
     result.bytes_sent = detail::bytes_sent(comm);
     detail::report_progress(progress, 1.0, "done");
     return result;

@@ -180,4 +180,77 @@ TEST(GridWriter, DemDerivativesComeFromGdalDemProcessing) {
     EXPECT_TRUE(open_raster(dir / "aspect.tif"));
 }
 
+/// Every cell of @p path as doubles (exact for Byte and Float32), with its type and NoData.
+struct Cells {
+    std::vector<double> values;
+    GDALDataType type = GDT_Unknown;
+    double nodata = 0.0;
+    int has_nodata = 0;
+    std::string crs;
+};
+
+Cells read_cells(const std::filesystem::path& path) {
+    Dataset ds = open_raster(path);
+    EXPECT_TRUE(ds) << path;
+    Cells out;
+    if (!ds) return out;
+    GDALRasterBand* band = ds->GetRasterBand(1);
+    out.type = band->GetRasterDataType();
+    out.nodata = band->GetNoDataValue(&out.has_nodata);
+    out.crs = ds->GetProjectionRef();
+    const int cols = ds->GetRasterXSize(), rows = ds->GetRasterYSize();
+    out.values.resize(static_cast<std::size_t>(cols) * static_cast<std::size_t>(rows));
+    EXPECT_EQ(band->RasterIO(GF_Read, 0, 0, cols, rows, out.values.data(), cols, rows, GDT_Float64,
+                             0, 0, nullptr),
+              CE_None);
+    return out;
+}
+
+TEST(GridWriter, DerivativeRowTilesEqualTheWholeRastersDerivative) {
+    const dtm::test::ScratchDir dir;
+    dtm::Grid grid = sample_grid();  // made rough, with NoData inside, so every row differs
+    for (std::size_t i = 0; i < grid.values.size(); ++i) {
+        if (grid.values[i] == grid.nodata) continue;
+        grid.values[i] += static_cast<float>((i * 7919) % 23) * 0.37F;
+        if (i % 97 == 5) grid.values[i] = grid.nodata;
+    }
+    dtm::io::write_grid(grid, dir / "dem.tif", {.crs_wkt = epsg_wkt(5514)});
+    const std::vector<std::size_t> starts = {0, 1, 2, 100, 101, 269, grid.spec.rows};
+    const std::pair<dtm::io::DemDerivative, const char*> kinds[] = {
+        {dtm::io::DemDerivative::hillshade, "hs"},
+        {dtm::io::DemDerivative::slope, "slope"},
+        {dtm::io::DemDerivative::aspect, "aspect"}};
+    for (const auto& [kind, name] : kinds) {
+        const auto whole = dir / (std::string(name) + ".tif");
+        dtm::io::write_dem_derivative(dir / "dem.tif", whole, kind);
+        std::vector<dtm::io::DemTile> tiles;
+        for (std::size_t i = 0; i + 1 < starts.size(); ++i) {
+            const auto tile = dir / (std::string(name) + "-" + std::to_string(i) + ".tif");
+            dtm::io::write_dem_derivative_rows(dir / "dem.tif", tile, kind, starts[i],
+                                               starts[i + 1] - starts[i]);
+            tiles.push_back({tile, starts[i], starts[i + 1] - starts[i]});
+        }
+        const auto vrt = dir / (std::string(name) + ".vrt");
+        dtm::io::write_derivative_vrt(vrt, grid.spec, tiles, epsg_wkt(5514));
+        const Cells a = read_cells(whole), b = read_cells(vrt);
+        EXPECT_EQ(a.type, b.type) << name;
+        EXPECT_EQ(a.has_nodata, b.has_nodata) << name;
+        EXPECT_EQ(a.nodata, b.nodata) << name;
+        EXPECT_EQ(a.crs, b.crs) << name;
+        ASSERT_EQ(a.values.size(), b.values.size()) << name;
+        std::size_t differ = 0, nodata = 0;
+        for (std::size_t i = 0; i < a.values.size(); ++i) {
+            differ += a.values[i] != b.values[i] ? 1 : 0;
+            nodata += a.values[i] == a.nodata ? 1 : 0;
+        }
+        EXPECT_EQ(differ, 0u) << name;
+        EXPECT_GT(nodata, 0u) << name;  // the holes' neighbourhoods are NoData in both
+        EXPECT_LT(nodata, a.values.size() / 2) << name;
+    }
+    EXPECT_THROW(dtm::io::write_dem_derivative_rows(dir / "dem.tif", dir / "bad.tif",
+                                                    dtm::io::DemDerivative::slope, 200, 71),
+                 dtm::Error);
+    EXPECT_FALSE(std::filesystem::exists(dir / "bad.tif"));
+}
+
 }  // namespace

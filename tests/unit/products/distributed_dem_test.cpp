@@ -4,7 +4,7 @@
 // `dtm grid` picks (an independent path: triangulate + rasterize on one thread); uniform points,
 // a cocircular lattice whose rows of centres run along triangle edges, S-JTSK magnitudes, a given
 // extent, fewer grid rows than ranks, fewer points than ranks, and random delays before every
-// send.
+// send; the hillshade and slope tiles against gdaldem of the serial DEM.
 #include "dtm/products/distributed_dem.hpp"
 
 #include <gdal_priv.h>
@@ -22,6 +22,7 @@
 #include "dtm/algo/triangulate.hpp"
 #include "dtm/core/terrain.hpp"
 #include "dtm/dist/in_process.hpp"
+#include "dtm/io/grid_writer.hpp"
 #include "support/test_support.hpp"
 
 namespace {
@@ -113,8 +114,13 @@ std::vector<float> read_vrt(const fs::path& vrt, const dtm::GridSpec& spec) {
 dtm::products::DistributedDemResult run(const Case& c,
                                         const fs::path& folder,
                                         int ranks,
-                                        unsigned jitter = 0) {
+                                        unsigned jitter = 0,
+                                        bool derivatives = false) {
     dtm::products::DistributedDemOptions options;
+    if (derivatives) {
+        options.hillshade = folder / ("hs-" + std::to_string(ranks) + ".vrt");
+        options.slope = folder / ("slope-" + std::to_string(ranks) + ".vrt");
+    }
     options.source.input = {folder / "points.csv", dtm::io::InputRole::points};
     options.cell = c.cell;
     options.extent = c.extent;
@@ -173,6 +179,47 @@ TEST(DistributedDem, RandomDelaysChangeNoCell) {
         const std::vector<float> cells =
             read_vrt(dir / ("dem-" + std::to_string(ranks) + ".vrt"), serial.spec);
         EXPECT_TRUE(cells == serial.values) << ranks << " ranks";
+    }
+}
+
+/// Every cell of the raster @p path as doubles (exact for Byte and Float32).
+std::vector<double> cells_of(const fs::path& path) {
+    GDALAllRegister();
+    GDALDataset* ds = GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY);
+    EXPECT_NE(ds, nullptr) << path;
+    if (ds == nullptr) return {};
+    const int cols = ds->GetRasterXSize(), rows = ds->GetRasterYSize();
+    std::vector<double> values(static_cast<std::size_t>(cols) * static_cast<std::size_t>(rows));
+    EXPECT_EQ(ds->GetRasterBand(1)->RasterIO(GF_Read, 0, 0, cols, rows, values.data(), cols, rows,
+                                             GDT_Float64, 0, 0, nullptr),
+              CE_None);
+    GDALClose(ds);
+    return values;
+}
+
+TEST(DistributedDem, HillshadeAndSlopeTilesEqualGdaldemOfTheSerialDem) {
+    const std::vector<Case> all = cases();
+    for (const Case& c : {all[0], all[3]}) {  // uniform; 3 rows: one-row tiles, idle ranks
+        const dtm::test::ScratchDir dir;
+        dtm::test::write_file(dir / "points.csv", csv(c.points));
+        dtm::io::write_grid(serial_dem(c), dir / "serial.tif", {});
+        dtm::io::write_dem_derivative(dir / "serial.tif", dir / "serial-hs.tif",
+                                      dtm::io::DemDerivative::hillshade);
+        dtm::io::write_dem_derivative(dir / "serial.tif", dir / "serial-slope.tif",
+                                      dtm::io::DemDerivative::slope);
+        const std::vector<double> hs = cells_of(dir / "serial-hs.tif");
+        const std::vector<double> slope = cells_of(dir / "serial-slope.tif");
+        ASSERT_FALSE(hs.empty());
+        for (const int ranks : {2, 7, 16}) {
+            const std::string what = c.name + " on " + std::to_string(ranks) + " ranks";
+            const auto result = run(c, dir.path(), ranks, 0, true);
+            const std::size_t tiles =
+                std::min<std::size_t>(result.spec.rows, static_cast<std::size_t>(ranks));
+            EXPECT_EQ(result.derived_tiles.size(), 2 * tiles) << what;
+            EXPECT_TRUE(cells_of(dir / ("hs-" + std::to_string(ranks) + ".vrt")) == hs) << what;
+            EXPECT_TRUE(cells_of(dir / ("slope-" + std::to_string(ranks) + ".vrt")) == slope)
+                << what;
+        }
     }
 }
 

@@ -82,6 +82,22 @@ void write_dem_derivative(const std::filesystem::path& dem,
                           const std::filesystem::path& target,
                           DemDerivative kind);
 
+/// The derivative of the rows [first_row, first_row + rows) of the DEM @p dem (any GDAL raster,
+/// e.g. a VRT over tiles) as the GeoTIFF @p target, atomically: the cells write_dem_derivative
+/// gives those rows of the whole raster, bit for bit (the window read has one row more on each
+/// side that exists). @throws Error if GDAL fails or the rows are not within the raster.
+void write_dem_derivative_rows(const std::filesystem::path& dem,
+                               const std::filesystem::path& target,
+                               DemDerivative kind,
+                               std::size_t first_row,
+                               std::size_t rows);
+
+/// As write_dem_vrt for tiles of a derivative: the band's type and NoData are the first tile's.
+void write_derivative_vrt(const std::filesystem::path& target,
+                          const GridSpec& spec,
+                          const std::vector<DemTile>& tiles,
+                          const std::string& crs_wkt);
+
 /// Lower-case extensions (without dot) that some installed GDAL raster driver can write.
 [[nodiscard]] std::vector<std::string> grid_extensions();
 

@@ -22,12 +22,16 @@ struct DistributedDemOptions {
     std::optional<Box2> extent;  ///< outer edges (default: the TIN's box snapped to the cell)
     float nodata = -9999.0F;
     std::filesystem::path output;  ///< the .vrt
+    /// gdaldem's derivatives of the DEM, each a .vrt over one GeoTIFF per rank beside it (the
+    /// serial derivative's cells); empty: not written.
+    std::filesystem::path hillshade, slope, aspect;
 };
 
 struct DistributedDemResult : DistributedCounts {
     GridSpec spec;
-    std::uint64_t filled = 0;                  ///< cells with data, all tiles
-    std::vector<std::filesystem::path> tiles;  ///< in row order
+    std::uint64_t filled = 0;                          ///< cells with data, all tiles
+    std::vector<std::filesystem::path> tiles;          ///< in row order
+    std::vector<std::filesystem::path> derived_tiles;  ///< the derivatives' tiles
 };
 
 /// The tile of rank @p rank of @p ranks beside @p vrt: "<stem>-<rank>-of-<ranks>.tif".
@@ -38,8 +42,9 @@ struct DistributedDemResult : DistributedCounts {
 /// Collective: the distributed TIN (as distributed_tin builds it), its linear surface sampled at
 /// the cell centres of the grid `dtm grid` chooses for the same options. Rank r computes and
 /// writes the rows [r R / P, (r + 1) R / P) of the R rows, from the triangles whose y-extent
-/// reaches them (sent by their owners); rank 0 writes the VRT once every tile is in place. Each
-/// file is written atomically. @throws InputError, UsageError or Error on every rank.
+/// reaches them (sent by their owners); rank 0 writes the VRT once every tile is in place. The
+/// derivatives asked for follow in the same row blocks. Each file is written atomically. @throws
+/// InputError, UsageError or Error on every rank.
 DistributedDemResult distributed_dem(dist::Comm& comm,
                                      const DistributedDemOptions& options,
                                      const Progress& progress);

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -41,6 +42,18 @@ DemTiles write_dem_tiles(dist::Comm& comm,
                          const std::filesystem::path& vrt,
                          const io::GridWriteOptions& write,
                          const Progress& progress);
+
+/// Collective, once the DEM @p dem (a VRT over write_dem_tiles' tiles) is in place: its
+/// derivative @p kind in the same row blocks, rank r writing "<target stem>-r-of-P.tif" from its
+/// rows and one more on each side (io::write_dem_derivative_rows: the cells gdaldem gives the
+/// whole DEM), then rank 0 the VRT @p target over them. Returns the tiles, in row order.
+/// @throws Error on every rank when a read or write fails.
+std::vector<std::filesystem::path> write_derivative_tiles(dist::Comm& comm,
+                                                          const GridSpec& spec,
+                                                          const std::filesystem::path& dem,
+                                                          const std::filesystem::path& target,
+                                                          io::DemDerivative kind,
+                                                          const std::string& crs_wkt);
 
 struct ContourPieces {
     std::uint64_t lines = 0;
