@@ -3,7 +3,7 @@
 """`mpirun -np P dtm tin POINTS.csv -o tin.ply` against `dtm tin` on one process (issue 18):
 the same PLY bytes (also with hard breaklines crossing the seams and each other, and a 2-D breakline
 through survey points in every rank's part of the file, soft 2-D lines, a 2-D boundary off the
-points), the tiled TIN
+points; points transformed by `--target-crs`), the tiled TIN
 (`-o tin.json`) put together by `dtm tin` and `dtm grid` as the same TIN, a GeoPackage read by
 feature ranges (also filtered by `--where`), the serial reader's
 message and exit code 2 for a bad line in the last
@@ -110,6 +110,24 @@ with tempfile.TemporaryDirectory() as tmp:
     soft = ["--soft-breaklines", soft2d]
     same_ply(tmp, "soft breaklines", points, two_d + soft)
     same_ply(tmp, "2-D boundary", points, two_d + ["--boundary", ring2d])
+
+    # --target-crs: every rank transforms its points one by one as the serial load does (GDAL/
+    # PROJ): GNSS latitude/longitude into S-JTSK, the S-JTSK survey into UTM with a breakline in
+    # S-JTSK (its file is transformed by every rank).
+    geo = os.path.join(tmp, "geo.csv")
+    rng = random.Random(20261207)
+    with open(geo, "w") as out:
+        out.write("lon,lat,h\n")
+        for i in range(6000):
+            out.write(f"{14.40 + rng.random() * 0.02:.8f},{50.05 + rng.random() * 0.015:.8f},"
+                      f"{200 + rng.random() * 5:.3f}\n")
+    same_ply(tmp, "WGS 84 to S-JTSK", geo, ["--crs", "EPSG:4326", "--target-crs", "EPSG:5514"])
+    same_ply(tmp, "S-JTSK to UTM", points, ["--crs", "EPSG:5514", "--target-crs", "EPSG:32633",
+                                             "--breaklines", lines])
+    if ranks > 1:
+        degrees = run(["tin", geo, "--crs", "EPSG:4326", "-o", os.path.join(tmp, "g.ply")], True)
+        check(degrees.returncode == 2 and degrees.stderr.count("--target-crs") == 1,
+              f"geographic points without --target-crs: exit {degrees.returncode}: {degrees.stderr!r}")
 
     boundary, hole = os.path.join(tmp, "boundary.csv"), os.path.join(tmp, "hole.csv")
     write_ring(boundary, -751000, -1051000, 880, 262)

@@ -50,7 +50,6 @@ void check_distributed_input(const char* command,
                " input (text point lists such as .csv, .txt, .xyz, and OGR point sources such "
                "as .shp, .gpkg, .fgb, .geojson)");
     }
-    if (!in.crs.target_crs.empty()) refuse("`target_crs`");
     if (in.dem.clip_radius > 0.0 || in.dem.max_error > 0.0) refuse("DEM thinning");
     if (triangulate.snap_distance > 0.0 || triangulate.optimize != Criterion::delaunay) {
         refuse("`snap` or `optimize`");
@@ -63,6 +62,7 @@ products::DistributedSource distributed_source(const InputArgs& in,
     source.input = {in.inputs[0], io::InputRole::points};
     source.read = in.read;
     source.default_crs = in.crs.default_crs;
+    source.target_crs = in.crs.target_crs;
     source.duplicates = triangulate.duplicates;
     for (const std::string& f : in.breaklines)
         source.lines.push_back({f, io::InputRole::breaklines});

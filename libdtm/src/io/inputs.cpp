@@ -116,13 +116,7 @@ struct Target {
 Target choose_target(const LoadOptions& options, const std::vector<Loaded>& loaded) {
     Target target;
     if (!options.crs.target_crs.empty()) {
-        target.wkt = option_crs(options.crs.target_crs, "target_crs");
-        if (crs_is_geographic(target.wkt)) {
-            throw OptionError("target_crs",
-                              "`target_crs`: expected a projected CRS (metres), found the "
-                              "geographic " +
-                                  crs_label(target.wkt) + "; triangulating degrees is wrong");
-        }
+        target.wkt = target_crs_wkt(options.crs.target_crs);
         return target;
     }
     for (const Loaded& l : loaded) {

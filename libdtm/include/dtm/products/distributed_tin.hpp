@@ -22,6 +22,9 @@ struct DistributedSource {
     io::InputFile input;      ///< a text point list (csv, txt, xyz)
     io::ReadOptions read;     ///< columns, skip_bad_lines
     std::string default_crs;  ///< the CRS of the points (the file carries none)
+    /// The output CRS (projected): each rank transforms its points one by one as the serial
+    /// load does (io::PositionTransform); empty: the points' own CRS.
+    std::string target_crs;
     DuplicateRule duplicates = DuplicateRule::first;
     /// Breakline, soft breakline, boundary and hole files (roles breaklines, soft_breaklines,
     /// boundary, holes), read whole by every rank.

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <memory>
 #include <string>
+#include <utility>
 
 #include "dtm/core/error.hpp"
 
@@ -160,28 +161,59 @@ void project_to_utm(TerrainInput& terrain, UtmZone zone, const std::string& sour
     });
 }
 
+std::string target_crs_wkt(const std::string& definition) {
+    std::string wkt;
+    try {
+        wkt = crs_to_wkt(definition);
+    } catch (const UsageError& e) {
+        throw OptionError("target_crs", std::string("`target_crs`: ") + e.what());
+    }
+    if (crs_is_geographic(wkt)) {
+        throw OptionError("target_crs",
+                          "`target_crs`: expected a projected CRS (metres), found the "
+                          "geographic " +
+                              crs_label(wkt) + "; triangulating degrees is wrong");
+    }
+    return wkt;
+}
+
+void PositionTransform::Free::operator()(OGRCoordinateTransformation* ct) const noexcept {
+    OGRCoordinateTransformation::DestroyCT(ct);
+}
+
+PositionTransform::PositionTransform(const std::string& source_wkt,
+                                     const std::string& target_wkt,
+                                     std::string source_name)
+    : source_name_(std::move(source_name)), target_label_(crs_label(target_wkt)) {
+    OGRSpatialReference from = from_wkt(source_wkt);
+    OGRSpatialReference to = from_wkt(target_wkt);
+    ct_.reset(OGRCreateCoordinateTransformation(&from, &to));
+    if (!ct_) {
+        throw InputError(source_name_, 0, 0,
+                         "cannot transform from " + crs_label(source_wkt) + " to " + target_label_);
+    }
+}
+
+PositionTransform::PositionTransform(PositionTransform&&) noexcept = default;
+PositionTransform::~PositionTransform() = default;
+
+void PositionTransform::operator()(double& x, double& y) const {
+    double tx = x, ty = y;
+    if (!ct_->Transform(1, &tx, &ty) || !std::isfinite(tx) || !std::isfinite(ty)) {
+        throw InputError(source_name_, 0, 0,
+                         "cannot transform the point (" + std::to_string(x) + ", " +
+                             std::to_string(y) + ") to " + target_label_);
+    }
+    x = tx;
+    y = ty;
+}
+
 void transform_terrain(TerrainInput& terrain,
                        const std::string& source_wkt,
                        const std::string& target_wkt,
                        const std::string& source_name) {
-    OGRSpatialReference from = from_wkt(source_wkt);
-    OGRSpatialReference to = from_wkt(target_wkt);
-    std::unique_ptr<OGRCoordinateTransformation> ct(OGRCreateCoordinateTransformation(&from, &to));
-    if (!ct) {
-        throw InputError(
-            source_name, 0, 0,
-            "cannot transform from " + crs_label(source_wkt) + " to " + crs_label(target_wkt));
-    }
-    for_each_vertex(terrain, [&](double& x, double& y) {
-        double tx = x, ty = y;
-        if (!ct->Transform(1, &tx, &ty) || !std::isfinite(tx) || !std::isfinite(ty)) {
-            throw InputError(source_name, 0, 0,
-                             "cannot transform the point (" + std::to_string(x) + ", " +
-                                 std::to_string(y) + ") to " + crs_label(target_wkt));
-        }
-        x = tx;
-        y = ty;
-    });
+    const PositionTransform transform(source_wkt, target_wkt, source_name);
+    for_each_vertex(terrain, [&](double& x, double& y) { transform(x, y); });
 }
 
 }  // namespace dtm::io

@@ -58,8 +58,8 @@ std::uint64_t bytes_sent(dist::Comm& comm) {
 
 namespace {
 
-/// This rank's run of the input's points, in the CRS the serial load_inputs gives them; the
-/// file's CRS (or the default) in @p crs_wkt.
+/// This rank's run of the input's points, in the CRS the serial load_inputs gives them; that
+/// CRS (`target_crs`, else the file's or the default) in @p crs_wkt.
 io::DistributedPoints read_points(dist::Comm& comm,
                                   const DistributedSource& source,
                                   std::string& crs_wkt) {
@@ -77,15 +77,22 @@ io::DistributedPoints read_points(dist::Comm& comm,
             throw OptionError("default_crs", "`default_crs`: " + std::string(e.what()));
         }
     }
-    if (!crs_wkt.empty()) {
-        if (io::crs_is_geographic(crs_wkt)) {
-            throw UsageError(
-                "a distributed run takes projected coordinates only (no UTM projection of "
-                "geographic points yet)");
+    if (!crs_wkt.empty() && io::crs_is_sjtsk(crs_wkt)) {
+        for (dist::InputPoint& p : read.points) io::sjtsk_to_east_north(p.p.x, p.p.y);
+    }
+    if (!source.target_crs.empty()) {  // the serial load's step 3, position by position
+        const std::string target = io::target_crs_wkt(source.target_crs);
+        if (!crs_wkt.empty() && !io::crs_equivalent(crs_wkt, target)) {
+            on_ranks(comm, true, [&] {
+                const io::PositionTransform transform(crs_wkt, target, source.input.path.string());
+                for (dist::InputPoint& p : read.points) transform(p.p.x, p.p.y);
+            });
         }
-        if (io::crs_is_sjtsk(crs_wkt)) {
-            for (dist::InputPoint& p : read.points) io::sjtsk_to_east_north(p.p.x, p.p.y);
-        }
+        crs_wkt = target;
+    } else if (!crs_wkt.empty() && io::crs_is_geographic(crs_wkt)) {
+        throw UsageError(
+            "a distributed run takes geographic points only with `target_crs` (no UTM zone "
+            "chosen from the data yet)");
     }
     return read;
 }

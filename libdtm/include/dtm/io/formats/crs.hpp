@@ -5,12 +5,14 @@
 /// CRSs (GDAL/PROJ). Axis order is always x = easting/longitude, y = northing/latitude.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <string_view>
 
 #include "dtm/core/terrain.hpp"
 
 class OGRSpatialReference;
+class OGRCoordinateTransformation;
 
 namespace dtm::io {
 
@@ -65,6 +67,32 @@ struct UtmZone {
 /// Projects longitude/latitude (WGS84 degrees, x = lon) to @p zone with GeographicLib.
 /// @throws InputError if a latitude is outside [-90, 90] or a longitude outside [-180, 360].
 void project_to_utm(TerrainInput& terrain, UtmZone zone, const std::string& source_name);
+
+/// The WKT of `target_crs`, the output CRS asked for. @throws OptionError("target_crs") when
+/// GDAL does not know it or it is geographic (triangulating degrees is wrong).
+[[nodiscard]] std::string target_crs_wkt(const std::string& definition);
+
+/// A GDAL/PROJ transformation applied one position at a time, so a position gets the same
+/// numbers wherever it is transformed (the serial load and a rank's share of a distributed one).
+class PositionTransform {
+public:
+    /// @throws InputError naming @p source_name when GDAL has no transformation between them.
+    PositionTransform(const std::string& from_wkt,
+                      const std::string& to_wkt,
+                      std::string source_name);
+    PositionTransform(PositionTransform&&) noexcept;
+    ~PositionTransform();
+    /// @throws InputError naming the source if the position cannot be transformed.
+    void operator()(double& x, double& y) const;
+
+private:
+    struct Free {
+        void operator()(OGRCoordinateTransformation* ct) const noexcept;
+    };
+    std::unique_ptr<OGRCoordinateTransformation, Free> ct_;
+    std::string source_name_;
+    std::string target_label_;
+};
 
 /// Transforms every vertex and seed from @p from_wkt to @p to_wkt with GDAL/PROJ.
 /// @throws InputError naming @p source_name if a point cannot be transformed.
