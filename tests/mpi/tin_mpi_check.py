@@ -3,7 +3,8 @@
 """`mpirun -np P dtm tin POINTS.csv -o tin.ply` against `dtm tin` on one process (issue 18):
 the same PLY bytes (also with hard breaklines crossing the seams and each other, and a 2-D breakline
 through survey points in every rank's part of the file, soft 2-D lines, a 2-D boundary off the
-points; points transformed by `--target-crs`), the tiled TIN
+points; points transformed by `--target-crs` or, in degrees, projected to their UTM zone), the
+tiled TIN
 (`-o tin.json`) put together by `dtm tin` and `dtm grid` as the same TIN, a GeoPackage read by
 feature ranges (also filtered by `--where`), the serial reader's
 message and exit code 2 for a bad line in the last
@@ -124,10 +125,19 @@ with tempfile.TemporaryDirectory() as tmp:
     same_ply(tmp, "WGS 84 to S-JTSK", geo, ["--crs", "EPSG:4326", "--target-crs", "EPSG:5514"])
     same_ply(tmp, "S-JTSK to UTM", points, ["--crs", "EPSG:5514", "--target-crs", "EPSG:32633",
                                              "--breaklines", lines])
-    if ranks > 1:
-        degrees = run(["tin", geo, "--crs", "EPSG:4326", "-o", os.path.join(tmp, "g.ply")], True)
-        check(degrees.returncode == 2 and degrees.stderr.count("--target-crs") == 1,
-              f"geographic points without --target-crs: exit {degrees.returncode}: {degrees.stderr!r}")
+    # Without --target-crs, geographic points go to the UTM zone of their box's centre (exact
+    # over the ranks), projected by GeographicLib, a breakline in degrees too; from S-JTSK's own
+    # geographic CRS through WGS 84 first.
+    geo_lines = os.path.join(tmp, "geo-lines.csv")
+    with open(geo_lines, "w") as out:
+        out.write("shapeid,x,y,z\n1,14.4012,50.0511,201\n1,14.4187,50.0633,203\n"
+                  "2,14.4013,50.0639,202\n2,14.4191,50.0507,204\n")
+    same_ply(tmp, "WGS 84 to its UTM zone", geo, ["--crs", "EPSG:4326", "--breaklines", geo_lines])
+    geo_xy = os.path.join(tmp, "geo-xy.csv")  # x, y columns: the CRS is --crs's alone
+    with open(geo, "r") as f, open(geo_xy, "w") as out:
+        out.write("x,y,z\n" + "".join(f.readlines()[1:]))
+    same_ply(tmp, "S-JTSK degrees to UTM", geo_xy, ["--crs", "EPSG:4156"])
+    same_ply(tmp, "lat/lon columns are WGS 84 whatever --crs", geo, ["--crs", "EPSG:4156"])
 
     boundary, hole = os.path.join(tmp, "boundary.csv"), os.path.join(tmp, "hole.csv")
     write_ring(boundary, -751000, -1051000, 880, 262)

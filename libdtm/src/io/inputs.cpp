@@ -119,6 +119,11 @@ Target choose_target(const LoadOptions& options, const std::vector<Loaded>& load
         target.wkt = target_crs_wkt(options.crs.target_crs);
         return target;
     }
+    if (options.utm_zone) {  // chosen from the data by the caller (a distributed run's points)
+        target.utm = options.utm_zone;
+        target.wkt = crs_to_wkt("EPSG:" + std::to_string(options.utm_zone->epsg()));
+        return target;
+    }
     for (const Loaded& l : loaded) {
         if (l.crs_wkt.empty()) continue;
         if (!crs_is_geographic(l.crs_wkt)) {
@@ -134,12 +139,6 @@ Target choose_target(const LoadOptions& options, const std::vector<Loaded>& load
     return target;
 }
 
-bool wgs84_like(const std::string& wkt) {
-    const std::string label = crs_label(wkt);
-    return label == "EPSG:4326" || label == "EPSG:4258" || label == "EPSG:4979" ||
-           label == "EPSG:4937" || label == "OGC:CRS84";
-}
-
 void to_target(Loaded& l, const Target& target) {
     const std::string name = l.result.summary.path.string();
     if (l.crs_wkt.empty() || target.wkt.empty()) {
@@ -151,7 +150,7 @@ void to_target(Loaded& l, const Target& target) {
     }
     if (crs_equivalent(l.crs_wkt, target.wkt)) return;
     if (target.utm && crs_is_geographic(l.crs_wkt)) {
-        if (!wgs84_like(l.crs_wkt)) {
+        if (!crs_is_wgs84_like(l.crs_wkt)) {
             transform_terrain(l.result.terrain, l.crs_wkt, crs_to_wkt("EPSG:4326"), name);
         }
         project_to_utm(l.result.terrain, *target.utm, name);

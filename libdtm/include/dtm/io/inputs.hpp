@@ -12,6 +12,7 @@
 #include "dtm/core/progress.hpp"
 #include "dtm/core/terrain.hpp"
 #include "dtm/core/tin.hpp"
+#include "dtm/io/formats/crs.hpp"
 #include "dtm/io/reader.hpp"
 
 namespace dtm::io {
@@ -29,6 +30,9 @@ struct LoadOptions {
     std::vector<InputFile> files;
     ReadOptions read;
     CrsOptions crs;
+    /// Without `target_crs`: the output is this UTM zone, chosen from data read elsewhere (a
+    /// distributed run's points), geographic inputs projected to it as when chosen here.
+    std::optional<UtmZone> utm_zone;
 };
 
 /// terrain.points[first, last) are the cells of the raster input summaries[summary].

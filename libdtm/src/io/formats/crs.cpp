@@ -135,30 +135,39 @@ UtmZone utm_zone_for(double lon, double lat) {
     return {zone, lat >= 0.0};
 }
 
+void project_position_to_utm(double& x, double& y, UtmZone zone, const std::string& source_name) {
+    const double lon = x;
+    const double lat = y;
+    if (!(lat >= -90.0 && lat <= 90.0 && lon >= -180.0 && lon <= 360.0)) {
+        throw InputError(source_name, 0, 0,
+                         "expected longitude/latitude in degrees, found (" + std::to_string(lon) +
+                             ", " + std::to_string(lat) + ")");
+    }
+    int out_zone = 0;
+    bool north = true;
+    double e = 0, n = 0, gamma = 0, k = 0;
+    try {
+        GeographicLib::UTMUPS::Forward(lat, lon, out_zone, north, e, n, gamma, k, zone.zone);
+    } catch (const GeographicLib::GeographicErr& err) {
+        throw InputError(source_name, 0, 0,
+                         std::string("cannot project to UTM zone ") + std::to_string(zone.zone) +
+                             ": " + err.what());
+    }
+    if (north && !zone.north) n += 10'000'000.0;
+    if (!north && zone.north) n -= 10'000'000.0;
+    x = e;
+    y = n;
+}
+
 void project_to_utm(TerrainInput& terrain, UtmZone zone, const std::string& source_name) {
-    for_each_vertex(terrain, [&](double& x, double& y) {
-        const double lon = x;
-        const double lat = y;
-        if (!(lat >= -90.0 && lat <= 90.0 && lon >= -180.0 && lon <= 360.0)) {
-            throw InputError(source_name, 0, 0,
-                             "expected longitude/latitude in degrees, found (" +
-                                 std::to_string(lon) + ", " + std::to_string(lat) + ")");
-        }
-        int out_zone = 0;
-        bool north = true;
-        double e = 0, n = 0, gamma = 0, k = 0;
-        try {
-            GeographicLib::UTMUPS::Forward(lat, lon, out_zone, north, e, n, gamma, k, zone.zone);
-        } catch (const GeographicLib::GeographicErr& err) {
-            throw InputError(source_name, 0, 0,
-                             std::string("cannot project to UTM zone ") +
-                                 std::to_string(zone.zone) + ": " + err.what());
-        }
-        if (north && !zone.north) n += 10'000'000.0;
-        if (!north && zone.north) n -= 10'000'000.0;
-        x = e;
-        y = n;
-    });
+    for_each_vertex(
+        terrain, [&](double& x, double& y) { project_position_to_utm(x, y, zone, source_name); });
+}
+
+bool crs_is_wgs84_like(const std::string& wkt) {
+    const std::string label = crs_label(wkt);
+    return label == "EPSG:4326" || label == "EPSG:4258" || label == "EPSG:4979" ||
+           label == "EPSG:4937" || label == "OGC:CRS84";
 }
 
 std::string target_crs_wkt(const std::string& definition) {

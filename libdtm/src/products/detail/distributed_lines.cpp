@@ -48,12 +48,15 @@ struct KeyHash {
 
 }  // namespace
 
-TerrainInput read_distributed_lines(const DistributedSource& source, const std::string& crs_wkt) {
+TerrainInput read_distributed_lines(const DistributedSource& source,
+                                    const std::string& crs_wkt,
+                                    std::optional<io::UtmZone> utm) {
     if (source.lines.empty()) return {};
     io::LoadOptions load;
     load.files = source.lines;
     load.read = source.read;
-    load.crs = {source.default_crs, crs_wkt};
+    load.crs = {source.default_crs, utm ? std::string() : crs_wkt};
+    load.utm_zone = utm;
     TerrainInput t = io::load_inputs(load).terrain;
     if (!t.points.empty()) {
         throw UsageError(

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -13,6 +14,7 @@
 #include "algo/detail/input_merge.hpp"
 #include "dist/constraints.hpp"
 #include "dtm/dist/duplicates.hpp"
+#include "dtm/io/formats/crs.hpp"
 #include "dtm/products/distributed_tin.hpp"
 
 namespace dtm::products::detail {
@@ -24,10 +26,12 @@ struct DistributedLines {
 };
 
 /// Every rank: the breakline, soft breakline, boundary and hole files read by the serial readers
-/// into @p crs_wkt (the points' CRS; empty: as they come). @throws InputError (the readers'
-/// messages); UsageError for points in those files (not taken by a distributed run yet)
+/// into @p crs_wkt (the points' CRS; empty: as they come), or into the UTM zone @p utm the
+/// points' geographic positions chose. @throws InputError (the readers' messages); UsageError
+/// for points in those files (not taken by a distributed run yet)
 [[nodiscard]] TerrainInput read_distributed_lines(const DistributedSource& source,
-                                                  const std::string& crs_wkt);
+                                                  const std::string& crs_wkt,
+                                                  std::optional<io::UtmZone> utm);
 
 /// Collective: the heights of 2-D line vertices from the survey points at the same position,
 /// the first in input order over all ranks (@p mine: this rank's run of the input, in order),

@@ -8,6 +8,8 @@
 #include "products/detail/distributed_surface.hpp"
 
 #include <cstdint>
+#include <optional>
+#include <span>
 
 #include "dist/constraints.hpp"
 #include "dist/domain.hpp"
@@ -58,11 +60,28 @@ std::uint64_t bytes_sent(dist::Comm& comm) {
 
 namespace {
 
+/// Collective: the exact box of every rank's points.
+Box2 points_box(dist::Comm& comm, const std::vector<dist::InputPoint>& mine) {
+    Box2 box;
+    for (const dist::InputPoint& p : mine) box.add(p.p);
+    std::vector<double> values;
+    if (!box.empty()) values = {box.xmin, box.ymin, box.xmax, box.ymax};
+    const auto all = dist::concatenated<double>(
+        comm.allgatherv(dist::to_bytes(std::span<const double>(values))));
+    Box2 whole;
+    for (std::size_t i = 0; i + 3 < all.size(); i += 4) {
+        whole.add(all[i], all[i + 1]);
+        whole.add(all[i + 2], all[i + 3]);
+    }
+    return whole;
+}
+
 /// This rank's run of the input's points, in the CRS the serial load_inputs gives them; that
 /// CRS (`target_crs`, else the file's or the default) in @p crs_wkt.
 io::DistributedPoints read_points(dist::Comm& comm,
                                   const DistributedSource& source,
-                                  std::string& crs_wkt) {
+                                  std::string& crs_wkt,
+                                  std::optional<io::UtmZone>& utm) {
     // Text point lists by byte ranges, OGR sources by feature ranges; the file's CRS first.
     crs_wkt.clear();
     const std::string_view reader = io::find_reader(source.input.path).name;
@@ -70,6 +89,7 @@ io::DistributedPoints read_points(dist::Comm& comm,
         reader == "ogr" || reader == "csv-wkt"
             ? io::read_ogr_points_distributed(comm, source.input, source.read, crs_wkt)
             : io::read_text_points_distributed(comm, source.input, source.read);
+    if (crs_wkt.empty()) crs_wkt = read.crs_wkt;
     if (crs_wkt.empty() && !source.default_crs.empty()) {
         try {
             crs_wkt = io::crs_to_wkt(source.default_crs);
@@ -90,9 +110,22 @@ io::DistributedPoints read_points(dist::Comm& comm,
         }
         crs_wkt = target;
     } else if (!crs_wkt.empty() && io::crs_is_geographic(crs_wkt)) {
-        throw UsageError(
-            "a distributed run takes geographic points only with `target_crs` (no UTM zone "
-            "chosen from the data yet)");
+        // The serial load's UTM zone: that of the centre of the points' box (exact over ranks),
+        // each position projected by GeographicLib (from WGS 84, transformed to it first).
+        const Box2 box = points_box(comm, read.points);
+        utm = io::utm_zone_for((box.xmin + box.xmax) / 2.0, (box.ymin + box.ymax) / 2.0);
+        on_ranks(comm, true, [&] {
+            const std::string name = source.input.path.string();
+            std::optional<io::PositionTransform> to_wgs84;
+            if (!io::crs_is_wgs84_like(crs_wkt)) {
+                to_wgs84.emplace(crs_wkt, io::crs_to_wkt("EPSG:4326"), name);
+            }
+            for (dist::InputPoint& p : read.points) {
+                if (to_wgs84) (*to_wgs84)(p.p.x, p.p.y);
+                io::project_position_to_utm(p.p.x, p.p.y, *utm, name);
+            }
+        });
+        crs_wkt = io::crs_to_wkt("EPSG:" + std::to_string(utm->epsg()));
     }
     return read;
 }
@@ -103,19 +136,20 @@ DistributedSurface distributed_surface(dist::Comm& comm,
                                        const DistributedSource& source,
                                        const Progress& progress) {
     DistributedSurface out;
+    std::optional<io::UtmZone> utm;  // geographic points without target_crs: their UTM zone
     report_progress(progress, 0.0, "reading");
-    io::DistributedPoints read = read_points(comm, source, out.crs_wkt);
+    io::DistributedPoints read = read_points(comm, source, out.crs_wkt, utm);
     out.points = read.total;
     out.skipped_lines = read.skipped_lines;
     // Breakline vertices follow the points in the merge (the last rank holds the last inputs).
     TerrainInput line_files;
-    on_ranks(comm, true, [&] { line_files = read_distributed_lines(source, out.crs_wkt); });
+    on_ranks(comm, true, [&] { line_files = read_distributed_lines(source, out.crs_wkt, utm); });
     distributed_line_heights(comm, read.points, line_files);
     Progress rest = progress;
     if (rings_lack_heights(line_files)) {  // serial step 2: a first surface without the rings
         std::vector<dist::InputPoint>().swap(read.points);  // read again after it
         ring_heights_from_surface(comm, source, out.points, line_files, progress.sub(0.0, 0.5));
-        read = read_points(comm, source, out.crs_wkt);
+        read = read_points(comm, source, out.crs_wkt, utm);
         rest = progress.sub(0.5, 1.0);
     }
     DistributedLines loaded;

@@ -64,6 +64,14 @@ struct UtmZone {
 /// Standard UTM zone (GeographicLib rules, incl. Norway/Svalbard) of a longitude/latitude.
 [[nodiscard]] UtmZone utm_zone_for(double lon, double lat);
 
+/// Projects one longitude/latitude position (WGS84 degrees, x = lon) to @p zone with
+/// GeographicLib, in place. @throws InputError naming @p source_name outside the ranges below.
+void project_position_to_utm(double& x, double& y, UtmZone zone, const std::string& source_name);
+
+/// True for the geographic CRSs projected to UTM as they are (WGS 84, ETRS89, CRS84); others
+/// are transformed to WGS 84 first.
+[[nodiscard]] bool crs_is_wgs84_like(const std::string& wkt);
+
 /// Projects longitude/latitude (WGS84 degrees, x = lon) to @p zone with GeographicLib.
 /// @throws InputError if a latitude is outside [-90, 90] or a longitude outside [-180, 360].
 void project_to_utm(TerrainInput& terrain, UtmZone zone, const std::string& source_name);

@@ -15,6 +15,7 @@
 
 #include "dtm/core/error.hpp"
 #include "io/detail/file_bytes.hpp"
+#include "io/detail/file_crs.hpp"
 #include "io/formats/csv/csv_detail.hpp"
 
 namespace dtm::io {
@@ -86,6 +87,12 @@ DistributedPoints read_text_points_distributed(dist::Comm& comm,
     // one block of the file and its points, not its whole range twice.
     const std::size_t block_bytes = std::max<std::size_t>(1, distributed_block_bytes);
     DistributedPoints out;
+    if (csv::column_of(layout, csv::Field::x) < 0 || csv::column_of(layout, csv::Field::y) < 0) {
+        ReadResult crs;  // lat/lon columns: read_csv's EPSG:4326, identified as load_inputs does
+        crs.crs_wkt = "EPSG:4326";
+        detail::identify_file_crs(file, crs);
+        out.crs_wkt = std::move(crs.crs_wkt);
+    }
     std::uint64_t skipped = 0;
     std::optional<InputError> failure;
     try {

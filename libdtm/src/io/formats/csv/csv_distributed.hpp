@@ -19,6 +19,9 @@ struct DistributedPoints {
     std::uint64_t first_input = 0;         ///< global index of the first of them
     std::uint64_t total = 0;               ///< points over all ranks
     std::uint64_t skipped_lines = 0;       ///< over all ranks (with skip_bad_lines)
+    /// The CRS the file gives as read_csv and load_inputs take it: EPSG:4326 for lat/lon columns
+    /// (or the .prj beside the file); empty for planar columns.
+    std::string crs_wkt;
 };
 
 /// Collective, for the distributed readers: the InputError that comes first in the file over all
