@@ -18,6 +18,7 @@
 #include "dtm/dist/in_process.hpp"
 #include "dtm/io/extension.hpp"
 #include "dtm/io/inputs.hpp"
+#include "dtm/io/output_check.hpp"
 #include "dtm/products/dem.hpp"
 #include "dtm/products/distributed_dem.hpp"
 #include "dtm/products/surface.hpp"
