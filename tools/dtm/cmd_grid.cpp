@@ -18,7 +18,6 @@
 #include "dtm/dist/in_process.hpp"
 #include "dtm/io/extension.hpp"
 #include "dtm/io/inputs.hpp"
-#include "dtm/io/output_check.hpp"
 #include "dtm/products/dem.hpp"
 #include "dtm/products/distributed_dem.hpp"
 #include "dtm/products/surface.hpp"
@@ -110,33 +109,18 @@ int run_grid_tiled(const GridArgs& args, dist::Comm& comm) {
     }
     if (args.interpolation != Interpolation::linear) refuse("`interpolation` other than linear");
     if (args.cog) refuse("`cog`");
-    const std::pair<const std::string*, const char*> derived[] = {
-        {&args.hillshade, "--hillshade"}, {&args.slope, "--slope"}, {&args.aspect, "--aspect"}};
-    for (const auto& [file, option] : derived) {
-        if (!file->empty() && io::lower_extension(*file) != "vrt") {
-            throw UsageError(std::string("grid: with a tiled DEM, ") + option +
-                             " is one GeoTIFF per rank and a VRT over them too: give " + option +
-                             " NAME.vrt, not " + *file);
-        }
-    }
-    const products::DemOptions options = dem_options(args);
-    products::check_dem_outputs(args.output, options);
-    for (const auto& [file, option] : derived) {
-        if (file->empty()) continue;
-        io::check_output(products::dem_tile_path(*file, 0, comm.size()), io::OutputKind::raster,
-                         option + 2);
-    }
-    const products::DistributedDemResult r =
-        products::distributed_dem(comm,
-                                  {.source = distributed_source(args.input, args.tin),
-                                   .cell = args.cell,
-                                   .extent = options.extent,
-                                   .nodata = args.nodata,
-                                   .output = args.output,
-                                   .hillshade = args.hillshade,
-                                   .slope = args.slope,
-                                   .aspect = args.aspect},
-                                  prints() ? terminal_progress("grid", args.quiet) : Progress{});
+    const products::DistributedDemOptions options{
+        .source = distributed_source(args.input, args.tin),
+        .cell = args.cell,
+        .extent = dem_options(args).extent,
+        .nodata = args.nodata,
+        .output = args.output,
+        .hillshade = args.hillshade,
+        .slope = args.slope,
+        .aspect = args.aspect};
+    products::check_distributed_dem_outputs(options, comm.size());
+    const products::DistributedDemResult r = products::distributed_dem(
+        comm, options, prints() ? terminal_progress("grid", args.quiet) : Progress{});
     if (prints()) {
         print_summary(r.spec, r.filled,
                       args.output + " (" + std::to_string(r.tiles.size()) + " GeoTIFF tile" +

@@ -270,12 +270,6 @@ struct CloseDataset {
 };
 using DatasetPtr = std::unique_ptr<void, CloseDataset>;
 
-const char* derivative_mode(DemDerivative kind) {
-    return kind == DemDerivative::hillshade ? "hillshade"
-           : kind == DemDerivative::slope   ? "slope"
-                                            : "aspect";
-}
-
 /// GDALDEMProcessing of @p src into @p path with @p driver (MEM: in memory, no path), edges
 /// computed; GeoTIFFs tiled and DEFLATE-compressed. @throws Error naming @p dem
 DatasetPtr dem_processing(const std::string& path,
@@ -291,11 +285,11 @@ DatasetPtr dem_processing(const std::string& path,
     GDALDEMProcessingOptions* options = GDALDEMProcessingOptionsNew(args.get(), nullptr);
     int usage_error = FALSE;
     CPLErrorReset();
-    DatasetPtr result(GDALDEMProcessing(path.c_str(), src, derivative_mode(kind), nullptr, options,
-                                        &usage_error));
+    DatasetPtr result(GDALDEMProcessing(path.c_str(), src, dem_derivative_name(kind), nullptr,
+                                        options, &usage_error));
     GDALDEMProcessingOptionsFree(options);
     if (!result) {
-        throw_gdal(std::string("cannot compute the ") + derivative_mode(kind) + " of " +
+        throw_gdal(std::string("cannot compute the ") + dem_derivative_name(kind) + " of " +
                    dem.string());
     }
     return result;
@@ -322,6 +316,12 @@ DatasetPtr row_window(const std::string& path,
 
 }  // namespace
 
+const char* dem_derivative_name(DemDerivative kind) noexcept {
+    return kind == DemDerivative::hillshade ? "hillshade"
+           : kind == DemDerivative::slope   ? "slope"
+                                            : "aspect";
+}
+
 void write_dem_derivative(const fs::path& dem, const fs::path& target, DemDerivative kind) {
     const std::string driver = raster_driver_for(target);
     DatasetPtr src(GDALOpen(dem.c_str(), GA_ReadOnly));
@@ -335,7 +335,7 @@ void write_dem_derivative(const fs::path& dem, const fs::path& target, DemDeriva
     // the dataset: the error, not the pointer, says whether the file is whole.
     result.reset();
     if (CPLGetLastErrorType() >= CE_Failure) {
-        throw_gdal(std::string("cannot write the ") + derivative_mode(kind) + " " +
+        throw_gdal(std::string("cannot write the ") + dem_derivative_name(kind) + " " +
                    target.string());
     }
     if (driver == "GTiff") check_geotiff_blocks(out.temp_path(), target);
@@ -371,7 +371,7 @@ void write_dem_derivative_rows(const fs::path& dem,
     const bool failed = !tile || CPLGetLastErrorType() >= CE_Failure;
     tile.reset();  // a failed write shows as an error once the file is closed, too
     if (failed || CPLGetLastErrorType() >= CE_Failure) {
-        throw_gdal(std::string("cannot write the ") + derivative_mode(kind) + " " +
+        throw_gdal(std::string("cannot write the ") + dem_derivative_name(kind) + " " +
                    target.string());
     }
     check_geotiff_blocks(out.temp_path(), target);

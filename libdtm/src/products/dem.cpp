@@ -52,16 +52,27 @@ GridSpec dem_grid_spec(const Box2& tin_box, double cell, const std::optional<Box
     return spec;
 }
 
+std::vector<DemDerivativeFile> dem_derivatives(const std::filesystem::path& hillshade,
+                                               const std::filesystem::path& slope,
+                                               const std::filesystem::path& aspect) {
+    std::vector<DemDerivativeFile> out;
+    for (const DemDerivativeFile& d : {DemDerivativeFile{hillshade, io::DemDerivative::hillshade},
+                                       DemDerivativeFile{slope, io::DemDerivative::slope},
+                                       DemDerivativeFile{aspect, io::DemDerivative::aspect}}) {
+        if (!d.file.empty()) out.push_back(d);
+    }
+    return out;
+}
+
 void check_dem_outputs(const std::filesystem::path& output, const DemOptions& options) {
     io::check_output(output, io::OutputKind::raster, "output");
     const std::string extension = io::lower_extension(output);
     if (options.cog && extension != "tif" && extension != "tiff") {
         throw OptionError("cog", "`cog` needs a .tif target, not " + output.string());
     }
-    const std::pair<const std::filesystem::path*, const char*> derived[] = {
-        {&options.hillshade, "hillshade"}, {&options.slope, "slope"}, {&options.aspect, "aspect"}};
-    for (const auto& [file, field] : derived) {
-        if (!file->empty()) io::check_output(*file, io::OutputKind::raster, field);
+    for (const auto& [file, kind] :
+         dem_derivatives(options.hillshade, options.slope, options.aspect)) {
+        io::check_output(file, io::OutputKind::raster, io::dem_derivative_name(kind));
     }
 }
 
@@ -88,12 +99,9 @@ DemResult write_dem(const Tin& tin,
               counter, progress.sub(0.0, 0.9));
     writer.commit();
     result.filled = counter.filled;
-    const std::pair<const std::filesystem::path*, io::DemDerivative> derived[] = {
-        {&options.hillshade, io::DemDerivative::hillshade},
-        {&options.slope, io::DemDerivative::slope},
-        {&options.aspect, io::DemDerivative::aspect}};
-    for (const auto& [file, kind] : derived) {
-        if (!file->empty()) io::write_dem_derivative(output, *file, kind);
+    for (const auto& [file, kind] :
+         dem_derivatives(options.hillshade, options.slope, options.aspect)) {
+        io::write_dem_derivative(output, file, kind);
     }
     progress.report(1.0, "done");
     return result;

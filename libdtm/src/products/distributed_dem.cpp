@@ -24,7 +24,9 @@
 #include "dist/mesh_vertices.hpp"
 #include "dtm/algo/rasterize.hpp"
 #include "dtm/core/error.hpp"
+#include "dtm/io/extension.hpp"
 #include "dtm/io/grid_writer.hpp"
+#include "dtm/io/output_check.hpp"
 #include "dtm/products/dem.hpp"
 #include "products/detail/distributed_pieces.hpp"
 #include "products/detail/distributed_surface.hpp"
@@ -37,6 +39,24 @@ namespace {
 /// most 2^36 and ranks far below 2^27: the product fits).
 std::size_t block_start(const GridSpec& spec, int r, int ranks) {
     return spec.rows * static_cast<std::size_t>(r) / static_cast<std::size_t>(ranks);
+}
+
+/// The tiles beside @p vrt of the ranks whose row block is not empty, in row order.
+std::vector<io::DemTile> row_block_tiles(const GridSpec& spec,
+                                         const std::filesystem::path& vrt,
+                                         int ranks) {
+    std::vector<io::DemTile> tiles;
+    for (int r = 0; r < ranks; ++r) {
+        const std::size_t lo = block_start(spec, r, ranks), hi = block_start(spec, r + 1, ranks);
+        if (hi > lo) tiles.push_back({dem_tile_path(vrt, r, ranks), lo, hi - lo});
+    }
+    return tiles;
+}
+
+std::vector<std::filesystem::path> files_of(const std::vector<io::DemTile>& tiles) {
+    std::vector<std::filesystem::path> files;
+    for (const io::DemTile& tile : tiles) files.push_back(tile.file);
+    return files;
 }
 
 /// The grid `dtm grid` chooses: the extent, or the TIN's box (exact min and max over ranks).
@@ -102,16 +122,7 @@ namespace detail {
 Box2 mesh_box(dist::Comm& comm, const dist::SurfaceMesh& mine) {
     Box2 box;
     for (const dist::SurfaceVertex& v : mine.vertices) box.add(v.p);
-    std::vector<double> values;
-    if (!mine.vertices.empty()) values = {box.xmin, box.ymin, box.xmax, box.ymax};
-    const auto all = dist::concatenated<double>(
-        comm.allgatherv(dist::to_bytes(std::span<const double>(values))));
-    Box2 whole;
-    for (std::size_t i = 0; i + 3 < all.size(); i += 4) {
-        whole.add(Point3{all[i], all[i + 1], 0.0});
-        whole.add(Point3{all[i + 2], all[i + 3], 0.0});
-    }
-    return whole;
+    return box_over_ranks(comm, box);
 }
 
 DemTiles write_dem_tiles(dist::Comm& comm,
@@ -142,13 +153,8 @@ DemTiles write_dem_tiles(dist::Comm& comm,
     DemTiles result;
     result.filled = static_cast<std::uint64_t>(
         comm.allreduce(static_cast<std::int64_t>(filled), dist::Reduce::sum));
-    std::vector<io::DemTile> tiles;
-    for (int r = 0; r < ranks; ++r) {
-        const std::size_t lo = block_start(spec, r, ranks), hi = block_start(spec, r + 1, ranks);
-        if (hi == lo) continue;
-        tiles.push_back({dem_tile_path(vrt, r, ranks), lo, hi - lo});
-        result.tiles.push_back(tiles.back().file);
-    }
+    const std::vector<io::DemTile> tiles = row_block_tiles(spec, vrt, ranks);
+    result.tiles = files_of(tiles);
     on_ranks(comm, rank == 0, [&] { io::write_dem_vrt(vrt, spec, tiles, write); });
     return result;
 }
@@ -165,19 +171,34 @@ std::vector<std::filesystem::path> write_derivative_tiles(dist::Comm& comm,
     on_ranks(comm, rows > 0, [&] {
         io::write_dem_derivative_rows(dem, dem_tile_path(target, rank, ranks), kind, first, rows);
     });
-    std::vector<io::DemTile> tiles;
-    std::vector<std::filesystem::path> files;
-    for (int r = 0; r < ranks; ++r) {
-        const std::size_t lo = block_start(spec, r, ranks), hi = block_start(spec, r + 1, ranks);
-        if (hi == lo) continue;
-        tiles.push_back({dem_tile_path(target, r, ranks), lo, hi - lo});
-        files.push_back(tiles.back().file);
-    }
+    const std::vector<io::DemTile> tiles = row_block_tiles(spec, target, ranks);
     on_ranks(comm, rank == 0, [&] { io::write_derivative_vrt(target, spec, tiles, crs_wkt); });
-    return files;
+    return files_of(tiles);
 }
 
 }  // namespace detail
+
+void check_distributed_dem_outputs(const DistributedDemOptions& options, int ranks) {
+    const std::vector<DemDerivativeFile> derived =
+        dem_derivatives(options.hillshade, options.slope, options.aspect);
+    for (const auto& [file, kind] : derived) {
+        if (io::lower_extension(file) != "vrt") {
+            const std::string field = io::dem_derivative_name(kind);
+            throw OptionError(field, "with a tiled DEM, `" + field +
+                                         "` is one GeoTIFF per rank and a VRT over them too: "
+                                         "give `" +
+                                         field + "` NAME.vrt, not " + file.string());
+        }
+    }
+    io::check_output(options.output, io::OutputKind::raster, "output");
+    for (const auto& [file, kind] : derived) {
+        io::check_output(file, io::OutputKind::raster, io::dem_derivative_name(kind));
+    }
+    for (const auto& [file, kind] : derived) {
+        io::check_output(dem_tile_path(file, 0, ranks), io::OutputKind::raster,
+                         io::dem_derivative_name(kind));
+    }
+}
 
 DistributedDemResult distributed_dem(dist::Comm& comm,
                                      const DistributedDemOptions& options,
@@ -199,15 +220,11 @@ DistributedDemResult distributed_dem(dist::Comm& comm,
                                 comm.rank() == 0 ? progress.sub(0.7, 0.95) : Progress{});
     result.filled = tiles.filled;
     result.tiles = std::move(tiles.tiles);
-    const std::pair<const std::filesystem::path*, io::DemDerivative> derived[] = {
-        {&options.hillshade, io::DemDerivative::hillshade},
-        {&options.slope, io::DemDerivative::slope},
-        {&options.aspect, io::DemDerivative::aspect}};
-    for (const auto& [file, kind] : derived) {
-        if (file->empty()) continue;
+    for (const auto& [file, kind] :
+         dem_derivatives(options.hillshade, options.slope, options.aspect)) {
         comm.set_phase("dem derivatives");
         for (std::filesystem::path& tile : detail::write_derivative_tiles(
-                 comm, result.spec, options.output, *file, kind, write.crs_wkt)) {
+                 comm, result.spec, options.output, file, kind, write.crs_wkt)) {
             result.derived_tiles.push_back(std::move(tile));
         }
     }

@@ -75,6 +75,9 @@ void write_dem_vrt(const std::filesystem::path& target,
 /// The surface derivatives GDAL computes from a DEM (gdaldem).
 enum class DemDerivative { hillshade, slope, aspect };
 
+/// gdaldem's name of @p kind ("hillshade", "slope", "aspect"), also the option naming its file.
+[[nodiscard]] const char* dem_derivative_name(DemDerivative kind) noexcept;
+
 /// Runs GDALDEMProcessing on the DEM file @p dem and writes @p target atomically (format by
 /// extension as for GridWriter). Slope is in degrees, aspect in degrees from north; edges are
 /// computed. @throws UsageError for an unknown extension; Error if GDAL fails.

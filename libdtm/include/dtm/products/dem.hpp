@@ -8,11 +8,13 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "dtm/algo/interpolation.hpp"
 #include "dtm/core/grid.hpp"
 #include "dtm/core/progress.hpp"
 #include "dtm/core/tin.hpp"
+#include "dtm/io/grid_writer.hpp"
 
 namespace dtm::products {
 
@@ -37,6 +39,17 @@ struct DemResult {
 /// Any DEM dtm writes, on one machine or many, has at most 2^36 cells (256 GiB of Float32).
 /// @throws OptionError (`cell`) beyond that.
 void check_dem_size(const GridSpec& spec);
+
+/// A derived raster asked for: its file and its kind (io::dem_derivative_name names the option).
+struct DemDerivativeFile {
+    std::filesystem::path file;
+    io::DemDerivative kind;
+};
+
+/// The derived rasters asked for: the non-empty of @p hillshade, @p slope, @p aspect, in order.
+[[nodiscard]] std::vector<DemDerivativeFile> dem_derivatives(const std::filesystem::path& hillshade,
+                                                             const std::filesystem::path& slope,
+                                                             const std::filesystem::path& aspect);
 
 /// The grid of a DEM: the cells of @p extent, or @p tin_box snapped outwards to the cell size.
 /// @throws OptionError (`cell`) beyond 2^36 cells.

@@ -39,6 +39,11 @@ struct DistributedDemResult : DistributedCounts {
                                                   int rank,
                                                   int ranks);
 
+/// The outputs before any input is read (fail fast): the DEM and its derivatives given as
+/// .vrt, each writable, and so rank 0's tile beside each derivative of @p ranks.
+/// @throws OptionError naming the derivative's option; UsageError for an unwritable output.
+void check_distributed_dem_outputs(const DistributedDemOptions& options, int ranks);
+
 /// Collective: the distributed TIN (as distributed_tin builds it), its linear surface sampled at
 /// the cell centres of the grid `dtm grid` chooses for the same options. Rank r computes and
 /// writes the rows [r R / P, (r + 1) R / P) of the R rows, from the triangles whose y-extent

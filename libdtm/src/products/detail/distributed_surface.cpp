@@ -58,14 +58,9 @@ std::uint64_t bytes_sent(dist::Comm& comm) {
     return static_cast<std::uint64_t>(comm.allreduce(bytes, dist::Reduce::sum));
 }
 
-namespace {
-
-/// Collective: the exact box of every rank's points.
-Box2 points_box(dist::Comm& comm, const std::vector<dist::InputPoint>& mine) {
-    Box2 box;
-    for (const dist::InputPoint& p : mine) box.add(p.p);
+Box2 box_over_ranks(dist::Comm& comm, const Box2& mine) {
     std::vector<double> values;
-    if (!box.empty()) values = {box.xmin, box.ymin, box.xmax, box.ymax};
+    if (!mine.empty()) values = {mine.xmin, mine.ymin, mine.xmax, mine.ymax};
     const auto all = dist::concatenated<double>(
         comm.allgatherv(dist::to_bytes(std::span<const double>(values))));
     Box2 whole;
@@ -75,6 +70,8 @@ Box2 points_box(dist::Comm& comm, const std::vector<dist::InputPoint>& mine) {
     }
     return whole;
 }
+
+namespace {
 
 /// This rank's run of the input's points, in the CRS the serial load_inputs gives them; that
 /// CRS (`target_crs`, else the file's or the default) in @p crs_wkt.
@@ -112,7 +109,9 @@ io::DistributedPoints read_points(dist::Comm& comm,
     } else if (!crs_wkt.empty() && io::crs_is_geographic(crs_wkt)) {
         // The serial load's UTM zone: that of the centre of the points' box (exact over ranks),
         // each position projected by GeographicLib (from WGS 84, transformed to it first).
-        const Box2 box = points_box(comm, read.points);
+        Box2 mine;
+        for (const dist::InputPoint& p : read.points) mine.add(p.p);
+        const Box2 box = box_over_ranks(comm, mine);
         utm = io::utm_zone_for((box.xmin + box.xmax) / 2.0, (box.ymin + box.ymax) / 2.0);
         on_ranks(comm, true, [&] {
             const std::string name = source.input.path.string();

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "dist/kernel.hpp"
+#include "dtm/core/point.hpp"
 #include "dtm/core/progress.hpp"
 #include "dtm/dist/duplicates.hpp"
 #include "dtm/products/distributed_tin.hpp"
@@ -55,6 +56,9 @@ TinFileWritten write_tin_file(dist::Comm& comm,
 /// The counts of @p surface (bytes_sent is left to the end of the product).
 [[nodiscard]] DistributedCounts counts_of(const dist::Comm& comm,
                                           const DistributedSurface& surface);
+
+/// Collective: the exact union of every rank's box @p mine (empty when every one is).
+[[nodiscard]] Box2 box_over_ranks(dist::Comm& comm, const Box2& mine);
 
 /// Collective: runs @p step where @p here is true; an Error on any rank is then thrown on every
 /// rank with the message and the kind (InputError, UsageError, Cancelled or Error: the exit
